@@ -1,0 +1,128 @@
+# shellcheck shell=bash
+# Shared helper for scripts/run_default.sh and scripts/run_tests.sh.
+# Source it; it defines functions and variables and changes nothing else.
+#
+# Environment:
+#   SF_WS       catkin workspace to build in (default: $HOME/.cache/sf_pkg_ws).
+#               Created if missing; $SF_WS/src/sf_pkg is a symlink to this repo.
+#   SF_JOBS     parallel build jobs (default: 2)
+#   SF_VERBOSE  1 = stream the full build output (default: log file only)
+
+# Debian's ROS lives in /usr; `python3` earlier on PATH (e.g. a pyenv shim)
+# lacks the ROS Python modules.
+export PATH="/usr/bin:/bin:${PATH}"
+
+SF_REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd -P)"
+SF_WS="${SF_WS:-${HOME}/.cache/sf_pkg_ws}"
+SF_JOBS="${SF_JOBS:-2}"
+SF_VERBOSE="${SF_VERBOSE:-0}"
+SF_PACKAGE=sf_pkg
+
+# Debian packages needed to build, test and run the package.
+# rosbash provides rosrun (ros-core only recommends it).
+SF_DEB_PACKAGES=(
+  ros-core-dev catkin libroscpp-dev librosbag-dev python3-rostest rosbash
+  libtf2-ros-dev libtf2-geometry-msgs-dev
+  ros-std-msgs ros-geometry-msgs ros-nav-msgs ros-sensor-msgs ros-diagnostic-msgs
+  libdiagnostic-updater-dev ros-message-generation ros-message-runtime
+  libeigen3-dev libboost-dev libgtest-dev libgmock-dev libbenchmark-dev
+  python3-rosbag python3-matplotlib cmake g++
+)
+
+sf_log() { printf '[sf_pkg] %s\n' "$*" >&2; }
+sf_die() { printf '[sf_pkg] ERROR: %s\n' "$*" >&2; exit 1; }
+
+# (a) Install missing Debian packages (root), or say how to (non-root).
+sf_ensure_packages() {
+  local missing=() pkg
+  for pkg in "${SF_DEB_PACKAGES[@]}"; do
+    if [[ "$(dpkg-query -W -f='${db:Status-Status}' "$pkg" 2>/dev/null)" != installed ]]; then
+      missing+=("$pkg")
+    fi
+  done
+  if ((${#missing[@]} == 0)); then return 0; fi
+
+  if [[ "$(id -u)" -eq 0 ]]; then
+    sf_log "installing missing Debian packages: ${missing[*]}"
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" \
+      || sf_die "apt-get install failed"
+  else
+    sf_log "missing Debian packages: ${missing[*]}"
+    sf_log "install them with (run 'sudo apt-get update' first on a fresh machine):"
+    printf 'sudo apt-get install -y --no-install-recommends %s\n' "${missing[*]}"
+    exit 1
+  fi
+}
+
+# (b) Workspace with src/sf_pkg -> repository root.
+sf_setup_workspace() {
+  SF_WS="$(realpath -m "${SF_WS}")"
+  case "$SF_WS/" in
+    "$SF_REPO_ROOT"/*) sf_die "SF_WS (${SF_WS}) must be outside the source tree ${SF_REPO_ROOT}" ;;
+  esac
+  mkdir -p "${SF_WS}/src"
+  SF_WS="$(cd "${SF_WS}" && pwd -P)"
+  local link="${SF_WS}/src/${SF_PACKAGE}"
+  if [[ -L "$link" ]]; then
+    if [[ "$(readlink -f "$link")" != "$SF_REPO_ROOT" ]]; then
+      sf_log "re-pointing ${link} -> ${SF_REPO_ROOT}"
+      ln -sfn "$SF_REPO_ROOT" "$link"
+    fi
+  elif [[ -e "$link" ]]; then
+    sf_die "${link} exists and is not a symlink; set SF_WS to another workspace"
+  else
+    ln -s "$SF_REPO_ROOT" "$link"
+  fi
+}
+
+# Run catkin_make in the workspace. The output goes to $SF_WS/<logname>;
+# compiler warnings/errors are echoed, and the log tail is shown on failure.
+#   sf_catkin_make <logname> [catkin_make args / make targets...]
+sf_catkin_make() {
+  local log="${SF_WS}/$1"
+  shift
+  local cmd=(catkin_make -C "$SF_WS" -j"${SF_JOBS}"
+    -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 "$@")
+  local rc=0
+  if [[ "$SF_VERBOSE" == 1 ]]; then
+    "${cmd[@]}" 2>&1 | tee "$log" || rc=$?
+  else
+    "${cmd[@]}" >"$log" 2>&1 || rc=$?
+    grep -E '(warning|error):' "$log" >&2 || true
+  fi
+  if ((rc != 0)); then
+    [[ "$SF_VERBOSE" == 1 ]] || tail -n 60 "$log" >&2
+    sf_die "catkin_make $* failed (exit ${rc}); full log: ${log}"
+  fi
+}
+
+# (c) Debian's ROS has no /opt/ros/<distro>/setup.bash: the workspace's own
+# devel/setup.bash (which also runs /etc/catkin/profile.d hooks) is the one to
+# source. It is not `set -u` clean, hence the guard.
+sf_source_devel() {
+  local setup="${SF_WS}/devel/setup.bash"
+  [[ -f "$setup" ]] || sf_die "${setup} not found (build first)"
+  local had_u=0
+  [[ $- == *u* ]] && had_u=1
+  set +u
+  # shellcheck disable=SC1090
+  source "$setup"
+  if ((had_u)); then set -u; fi
+  # setup.bash sets this via /etc/catkin/profile.d/10.roslaunch.sh; keep a
+  # default in case it ever doesn't. rostest starts its own master anyway.
+  export ROS_MASTER_URI="${ROS_MASTER_URI:-http://localhost:11311}"
+  export PATH="/usr/bin:/bin:${PATH}"
+}
+
+# (d) Everything a script needs before doing its job: packages, workspace,
+# a (Release) build of all targets, the devel environment.
+sf_prepare() {
+  sf_ensure_packages
+  sf_setup_workspace
+  sf_log "building ${SF_PACKAGE} in ${SF_WS} (log: ${SF_WS}/build.log)"
+  local t0=$SECONDS
+  sf_catkin_make build.log
+  sf_log "build done in $((SECONDS - t0)) s"
+  sf_source_devel
+}

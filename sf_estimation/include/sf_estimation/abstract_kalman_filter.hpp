@@ -1,0 +1,87 @@
+// State, covariance, noise and control shared by the Kalman filter family (thesis class
+// AbstractKalmanFilter). Derived filters implement estimate() and commit its result.
+#pragma once
+
+#include <string>
+
+#include "sf_estimation/measurement.hpp"
+#include "sf_estimation/parameter_checks.hpp"
+#include "sf_estimation/types.hpp"
+
+namespace estimation {
+
+template <int N, int M, int L>
+class AbstractKalmanFilter {
+ public:
+  static constexpr int StateSize = N;
+  static constexpr int MeasurementSize = M;
+  static constexpr int ControlSize = L;
+
+  Index stateSize() const { return x_.size(); }
+  Index measurementSize() const { return R_.rows(); }
+  Index controlSize() const { return u_.size(); }
+
+  const Vector<N>& state() const { return x_; }
+  const Matrix<N, N>& covariance() const { return P_; }
+  const Vector<L>& control() const { return u_; }
+  const Matrix<N, N>& processNoise() const { return Q_; }
+  const Matrix<M, M>& measurementNoise() const { return R_; }
+
+  void setControl(const Vector<L>& u) {
+    validateControl(u, controlSize());
+    u_ = u;
+  }
+
+  /// Restores the initial state and covariance; the control is kept.
+  void reset() {
+    x_ = x0_;
+    P_ = P0_;
+  }
+
+  /// Replaces the current belief (e.g. after an external re-initialisation).
+  void setBelief(const Vector<N>& x, const Matrix<N, N>& P) {
+    requireSize(method_, "x", x, stateSize(), 1);
+    requireCovariance(method_, "P", P, stateSize(), false);
+    x_ = x;
+    P_ = P;
+  }
+
+  std::string description() const {
+    return method_ + "(n=" + std::to_string(stateSize()) + ", m=" +
+           std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) + ")";
+  }
+
+ protected:
+  AbstractKalmanFilter(std::string method, const Matrix<N, N>& Q, const Matrix<M, M>& R,
+                       const Vector<N>& x0, const Matrix<N, N>& P0, Index controlSize)
+      : method_(std::move(method)), x_(x0), x0_(x0), P_(P0), P0_(P0), Q_(Q), R_(R) {
+    const Index n = Q.rows();
+    requireCovariance(method_, "Q", Q, n, false);
+    requireCovariance(method_, "R", R, R.rows(), true);
+    requireSize(method_, "x0", x0, n, 1);
+    requireCovariance(method_, "P0", P0, n, false);
+    if (controlSize < 0 || (L != Dynamic && controlSize != L)) {
+      throw ParameterError(method_ + ": control size must be " + std::to_string(L));
+    }
+    u_ = Vector<L>::Zero(controlSize);
+  }
+
+  /// Makes (x, P) the new belief after checking it is finite; otherwise the filter keeps
+  /// its previous belief and a NumericalError says why.
+  void commit(const Vector<N>& x, Matrix<N, N>& P) {
+    symmetrize(P);
+    if (!x.allFinite() || !P.allFinite()) {
+      throw NumericalError(method_ + ": the estimate became non-finite; step rejected");
+    }
+    x_ = x;
+    P_ = P;
+  }
+
+  std::string method_;
+  Vector<N> x_, x0_;
+  Matrix<N, N> P_, P0_, Q_;
+  Matrix<M, M> R_;
+  Vector<L> u_;
+};
+
+}  // namespace estimation

@@ -1,0 +1,62 @@
+// Extended Kalman filter (thesis Algorithm 3.2) for x' = f(x, u), z = h(x). Jacobians come
+// from the model when it has them, otherwise from automatic differentiation (jacobian.hpp).
+#pragma once
+
+#include <utility>
+
+#include "sf_estimation/abstract_kalman_filter.hpp"
+#include "sf_estimation/jacobian.hpp"
+#include "sf_estimation/kalman_correction.hpp"
+
+namespace estimation {
+
+template <class Model>
+class ExtendedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize,
+                                                         Model::ControlSize> {
+  static constexpr int N = Model::StateSize;
+  static constexpr int M = Model::MeasurementSize;
+  static constexpr int L = Model::ControlSize;
+  using Base = AbstractKalmanFilter<N, M, L>;
+
+ public:
+  ExtendedKalmanFilter(Model model, const Matrix<N, N>& Q, const Matrix<M, M>& R,
+                       const Vector<N>& x0, const Matrix<N, N>& P0)
+      : Base("ExtendedKalmanFilter", Q, R, x0, P0, model.controlSize()), model_(std::move(model)) {
+    checkModelSizes(this->method_, model_, this->stateSize(), this->measurementSize());
+  }
+
+  ExtendedKalmanFilter(Model model, const Matrix<N, N>& Q, const Matrix<M, M>& R)
+      : ExtendedKalmanFilter(std::move(model), Q, R, Vector<N>::Zero(Q.rows()),
+                             Matrix<N, N>::Identity(Q.rows(), Q.rows())) {}
+
+  void estimate(const Measurement<M>& z) {
+    z.validate(this->measurementSize());
+    const Index n = this->stateSize();
+    Matrix<N, N> A(n, n);
+    transitionJacobian(model_, this->x_, this->u_, A);
+    Vector<N> x(n);
+    model_.transition(this->x_, this->u_, x);
+    Matrix<N, N> P = A * this->P_ * A.transpose() + this->Q_;
+    if (z.anyAvailable()) {
+      const Index m = this->measurementSize();
+      Matrix<M, N> H(m, n);
+      observationJacobian(model_, x, H);
+      Vector<M> expected(m);
+      model_.observation(x, expected);
+      Vector<M> y = z.value - expected;
+      neutraliseMissing(z, y, H);
+      Matrix<M, M> R(m, m);
+      effectiveMeasurementNoise(this->R_, z, R);
+      linearCorrection<N, M>(x, P, H, y, R);
+    }
+    this->commit(x, P);
+  }
+
+  const Model& model() const { return model_; }
+  Model& model() { return model_; }
+
+ private:
+  Model model_;
+};
+
+}  // namespace estimation

@@ -1,0 +1,61 @@
+// The measurement update shared by KF, EKF and UKF, including missing measurements.
+//
+// Missing entries: the update must equal the one of the same filter run with only the present
+// rows of h, H and R. Instead of building reduced matrices (which would allocate), the rows of
+// a missing entry are neutralised: its innovation and its rows of H (or of the cross
+// covariance) are zero and its row and column of the noise matrix are those of the identity.
+// The innovation covariance is then block-diagonal with an identity block, its inverse is the
+// reduced inverse padded with that identity, and the gain's column for the missing entry is
+// zero: exactly the reduced update, covariance included.
+#pragma once
+
+#include <Eigen/Cholesky>
+
+#include "sf_estimation/errors.hpp"
+#include "sf_estimation/measurement.hpp"
+#include "sf_estimation/measurement_noise.hpp"
+#include "sf_estimation/parameter_checks.hpp"
+
+namespace estimation {
+
+/// Zeroes the innovation and the given rows of `rows` for every missing entry.
+template <int M, class RowsType>
+void neutraliseMissing(const Measurement<M>& z, Vector<M>& innovation, RowsType& rows) {
+  for (Index i = 0; i < z.size(); ++i) {
+    if (!z.available(i)) {
+      innovation(i) = 0.0;
+      rows.row(i).setZero();
+    }
+  }
+}
+
+/// K = crossCovariance * S^-1, with S factorised by Cholesky. Throws NumericalError when S is
+/// not positive definite or the gain is not finite.
+template <int N, int M>
+void kalmanGain(const Matrix<N, M>& crossCovariance, const Matrix<M, M>& S, Matrix<N, M>& K) {
+  const Eigen::LLT<Matrix<M, M>> llt(S);
+  if (llt.info() != Eigen::Success) {
+    throw NumericalError("innovation covariance is not positive definite; step rejected");
+  }
+  K = llt.solve(crossCovariance.transpose()).transpose();
+  if (!K.allFinite()) throw NumericalError("Kalman gain is not finite; step rejected");
+}
+
+/// Linear(ised) correction of (x, P) with Jacobian H (rows of missing entries already zero),
+/// innovation y (zero for missing entries) and effective noise R. Joseph form keeps P
+/// symmetric positive semi-definite even when K is slightly off.
+template <int N, int M>
+void linearCorrection(Vector<N>& x, Matrix<N, N>& P, const Matrix<M, N>& H, const Vector<M>& y,
+                      const Matrix<M, M>& R) {
+  const Matrix<N, M> PHt = P * H.transpose();
+  Matrix<M, M> S = H * PHt + R;
+  symmetrize(S);
+  Matrix<N, M> K(P.rows(), H.rows());
+  kalmanGain<N, M>(PHt, S, K);
+  x += K * y;
+  Matrix<N, N> IKH = -K * H;
+  IKH.diagonal().array() += 1.0;
+  P = IKH * P * IKH.transpose() + K * R * K.transpose();
+}
+
+}  // namespace estimation

@@ -1,0 +1,55 @@
+// Kalman filter (thesis Algorithm 3.1) for the linear model x' = A x + B u, z = H x.
+#pragma once
+
+#include "sf_estimation/abstract_kalman_filter.hpp"
+#include "sf_estimation/kalman_correction.hpp"
+
+namespace estimation {
+
+template <int N, int M, int L = 0>
+class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
+  using Base = AbstractKalmanFilter<N, M, L>;
+
+ public:
+  KalmanFilter(const Matrix<N, N>& A, const Matrix<N, L>& B, const Matrix<M, N>& H,
+               const Matrix<N, N>& Q, const Matrix<M, M>& R, const Vector<N>& x0,
+               const Matrix<N, N>& P0)
+      : Base("KalmanFilter", Q, R, x0, P0, B.cols()), A_(A), B_(B), H_(H) {
+    requireSize(this->method_, "A", A, this->stateSize(), this->stateSize());
+    requireSize(this->method_, "B", B, this->stateSize(), this->controlSize());
+    requireSize(this->method_, "H", H, this->measurementSize(), this->stateSize());
+  }
+
+  /// Without x0 and P0: the state starts at zero with identity covariance.
+  KalmanFilter(const Matrix<N, N>& A, const Matrix<N, L>& B, const Matrix<M, N>& H,
+               const Matrix<N, N>& Q, const Matrix<M, M>& R)
+      : KalmanFilter(A, B, H, Q, R, Vector<N>::Zero(Q.rows()),
+                     Matrix<N, N>::Identity(Q.rows(), Q.rows())) {}
+
+  /// Time update with the last control, then correction with the present entries of z.
+  void estimate(const Measurement<M>& z) {
+    z.validate(this->measurementSize());
+    Vector<N> x = A_ * this->x_ + B_ * this->u_;
+    Matrix<N, N> P = A_ * this->P_ * A_.transpose() + this->Q_;
+    if (z.anyAvailable()) {
+      Vector<M> y = z.value - H_ * x;
+      Matrix<M, N> H = H_;
+      neutraliseMissing(z, y, H);
+      Matrix<M, M> R(z.size(), z.size());
+      effectiveMeasurementNoise(this->R_, z, R);
+      linearCorrection<N, M>(x, P, H, y, R);
+    }
+    this->commit(x, P);
+  }
+
+  const Matrix<N, N>& transitionMatrix() const { return A_; }
+  const Matrix<N, L>& controlMatrix() const { return B_; }
+  const Matrix<M, N>& observationMatrix() const { return H_; }
+
+ private:
+  Matrix<N, N> A_;
+  Matrix<N, L> B_;
+  Matrix<M, N> H_;
+};
+
+}  // namespace estimation

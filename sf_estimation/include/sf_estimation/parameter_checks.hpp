@@ -1,0 +1,58 @@
+// Checks of filter parameters done once at construction; each failure names the method,
+// the parameter and the expected size, so a bad configuration is refused at start.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "sf_estimation/errors.hpp"
+
+namespace estimation {
+
+inline std::string sizeText(Index rows, Index cols) {
+  return std::to_string(rows) + "x" + std::to_string(cols);
+}
+
+template <class Derived>
+void requireSize(const std::string& method, const std::string& name,
+                 const Eigen::MatrixBase<Derived>& value, Index rows, Index cols) {
+  if (value.rows() != rows || value.cols() != cols) {
+    throw ParameterError(method + ": parameter '" + name + "' must be " + sizeText(rows, cols) +
+                         ", got " + sizeText(value.rows(), value.cols()));
+  }
+  if (!value.allFinite()) {
+    throw ParameterError(method + ": parameter '" + name + "' contains a non-finite value");
+  }
+}
+
+/// A covariance must be symmetric and positive semi-definite (positive definite when
+/// `strict`, e.g. the measurement noise R, whose inverse the filters use).
+template <class Derived>
+void requireCovariance(const std::string& method, const std::string& name,
+                       const Eigen::MatrixBase<Derived>& value, Index size, bool strict) {
+  requireSize(method, name, value, size, size);
+  const double scale = std::max(1.0, value.cwiseAbs().maxCoeff());
+  if (!value.isApprox(value.transpose(), 1e-9) &&
+      (value - value.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) {
+    throw ParameterError(method + ": parameter '" + name + "' must be symmetric");
+  }
+  if (size == 0) return;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt(value.eval());
+  const Eigen::VectorXd d = ldlt.vectorD();
+  if (ldlt.info() != Eigen::Success || d.minCoeff() < -1e-12 * scale) {
+    throw ParameterError(method + ": parameter '" + name + "' must be positive semi-definite");
+  }
+  if (strict && d.minCoeff() <= 0.0) {
+    throw ParameterError(method + ": parameter '" + name + "' must be positive definite");
+  }
+}
+
+template <class Derived>
+void symmetrize(Eigen::MatrixBase<Derived>& P) {
+  P = (0.5 * (P + P.transpose())).eval();
+}
+
+}  // namespace estimation

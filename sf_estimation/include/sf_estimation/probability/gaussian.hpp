@@ -1,0 +1,283 @@
+// The multivariate normal distribution and the random-number helpers built on it: density for
+// likelihoods, sampling for particle filters, log-space normalisation of weights.
+//
+// Sampling accepts a positive SEMI-definite covariance, because process noise with zero rows
+// (states driven only by other states, as in the thesis's EKF Q) is common; the density needs
+// a positive definite covariance and refuses only when it is actually asked for.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <boost/random/normal_distribution.hpp>
+
+#include "sf_estimation/errors.hpp"
+#include "sf_estimation/types.hpp"
+
+namespace estimation {
+namespace probability {
+
+/// The seedable engine used by the library's stochastic filters.
+using RandomEngine = std::mt19937_64;
+
+/// Fills `out` with independent standard normal draws. Boost's ziggurat sampler is several
+/// times faster than std::normal_distribution, which a particle filter drawing thousands of
+/// normals per step needs.
+template <class Engine, class Derived>
+void fillStandardNormal(Engine& engine, Eigen::MatrixBase<Derived>& out) {
+  boost::random::normal_distribution<double> standardNormal;
+  for (Index col = 0; col < out.cols(); ++col) {
+    for (Index row = 0; row < out.rows(); ++row) out.coeffRef(row, col) = standardNormal(engine);
+  }
+}
+
+/// Overload for temporaries such as `matrix.col(i)`.
+template <class Engine, class Derived>
+void fillStandardNormal(Engine& engine, Eigen::MatrixBase<Derived>&& out) {
+  fillStandardNormal(engine, out);
+}
+
+/// log(sum(exp(v))) without overflow or underflow: the largest term is factored out. An empty
+/// vector or all entries -inf give -inf (zero total weight); a NaN entry gives NaN.
+template <class Derived>
+double logSumExp(const Eigen::MatrixBase<Derived>& v) {
+  if (v.size() == 0) return -std::numeric_limits<double>::infinity();
+  if (v.hasNaN()) return std::numeric_limits<double>::quiet_NaN();
+  const double largest = v.maxCoeff();
+  if (!std::isfinite(largest)) return largest;  // all -inf, or a +inf term dominates
+  return largest + std::log((v.array() - largest).exp().sum());
+}
+
+/// Square root S of a covariance P with S * S^T = P, from the pivoted LDLT factorisation
+/// P = Pi^T L D L^T Pi, S = Pi^T L sqrt(D). Unlike Cholesky (LLT) it exists for positive
+/// semi-definite P. Storage is preallocated at construction, so compute() and
+/// multiplyInPlace() do not allocate (they can run inside a filter step).
+template <int N>
+class CovarianceSquareRoot {
+ public:
+  using MatrixType = Matrix<N, N>;
+
+  /// Pivots of the LDLT that are negative by less than this fraction of the largest diagonal
+  /// entry of P are rounding errors of a singular P and are clamped to 0; covariance
+  /// propagation in the filters accumulates rounding far below it, while a genuinely
+  /// indefinite matrix from a modelling error lies far above.
+  static constexpr double kRelativeTolerance = 1e-9;
+
+  explicit CovarianceSquareRoot(Index size = (N == Dynamic ? 0 : N))
+      : ldlt_(size),
+        factor_(MatrixType::Zero(size, size)),
+        outputPosition_(Eigen::Matrix<Index, N, 1>::LinSpaced(size, 0, size - 1)),
+        matrix_(MatrixType::Zero(size, size)) {}
+
+  Index size() const { return matrix_.rows(); }
+
+  /// The square root S (S * S^T = P) of the last covariance given to compute().
+  const MatrixType& matrix() const { return matrix_; }
+
+  /// Factors `covariance`. Throws ParameterError on a wrong size and NumericalError when the
+  /// covariance is not finite, not symmetric or not positive semi-definite; on a throw the
+  /// previously computed root is kept.
+  template <class Derived>
+  void compute(const Eigen::MatrixBase<Derived>& covariance) {
+    const Index n = size();
+    if (covariance.rows() != n || covariance.cols() != n) {
+      throw ParameterError("covariance must be " + std::to_string(n) + "x" + std::to_string(n) +
+                           ", got " + std::to_string(covariance.rows()) + "x" +
+                           std::to_string(covariance.cols()));
+    }
+    if (!covariance.allFinite()) {
+      throw NumericalError("covariance contains a non-finite value");
+    }
+    const double scale = n == 0 ? 0.0 : covariance.diagonal().cwiseAbs().maxCoeff();
+    const double tolerance = kRelativeTolerance * scale;
+    for (Index row = 0; row < n; ++row) {
+      for (Index col = 0; col < row; ++col) {
+        if (std::abs(covariance(row, col) - covariance(col, row)) > tolerance) {
+          throw NumericalError("covariance is not symmetric: entry (" + std::to_string(row) +
+                               "," + std::to_string(col) + ") differs from its transpose");
+        }
+      }
+    }
+    if (n == 0) return;
+
+    ldlt_.compute(covariance);  // only scratch changes before the checks below pass
+    if (ldlt_.info() != Eigen::Success) {
+      throw NumericalError("covariance is not positive semi-definite (LDLT factorisation failed)");
+    }
+    const auto& d = ldlt_.vectorD();
+    const auto& packed = ldlt_.matrixLDLT();  // strictly lower part holds L
+    for (Index k = 0; k < n; ++k) {
+      if (!std::isfinite(d(k))) {
+        throw NumericalError("covariance factorisation produced a non-finite pivot");
+      }
+      if (d(k) < -tolerance) {
+        throw NumericalError("covariance is not positive semi-definite: LDLT pivot " +
+                             std::to_string(d(k)) + " is negative");
+      }
+      if (d(k) > 0.0 && !packed.col(k).tail(n - k - 1).allFinite()) {
+        throw NumericalError("covariance factorisation produced a non-finite factor");
+      }
+    }
+
+    // Commit. Columns with a zero (or clamped) pivot contribute nothing to P, so they are
+    // zeroed instead of multiplied: L below a rounding-size pivot may be huge or infinite.
+    for (Index k = 0; k < n; ++k) {
+      factor_.col(k).head(k).setZero();
+      if (d(k) > 0.0) {
+        const double root = std::sqrt(d(k));
+        factor_(k, k) = root;
+        factor_.col(k).tail(n - k - 1) = root * packed.col(k).tail(n - k - 1);
+      } else {
+        factor_.col(k).tail(n - k).setZero();
+      }
+    }
+    matrix_ = factor_;
+    matrix_ = ldlt_.transpositionsP().transpose() * matrix_;  // in place, no temporary
+    outputPosition_.setLinSpaced(n, 0, n - 1);
+    outputPosition_ = ldlt_.transpositionsP() * outputPosition_;
+  }
+
+  /// v <- S * v, without a temporary. Row k of the pivoted factor only reads the entries it
+  /// pairs with columns j <= k, so rows are computed from the last to the first, each
+  /// overwriting the one input entry no later (smaller) row needs.
+  template <class Derived>
+  void multiplyInPlace(Eigen::MatrixBase<Derived>& v) const {
+    const Index n = size();
+    for (Index k = n - 1; k >= 0; --k) {
+      double sum = 0.0;
+      for (Index j = 0; j <= k; ++j) sum += factor_(k, j) * v(outputPosition_(j));
+      v(outputPosition_(k)) = sum;
+    }
+  }
+
+ private:
+  Eigen::LDLT<MatrixType> ldlt_;                // scratch of compute()
+  MatrixType factor_;                           // L sqrt(D), in pivoted order
+  Eigen::Matrix<Index, N, 1> outputPosition_;   // original index of pivoted row k
+  MatrixType matrix_;                           // Pi^T L sqrt(D)
+};
+
+/// Returns S with S * S^T = P for a positive semi-definite P (see CovarianceSquareRoot).
+template <class Derived>
+Matrix<Derived::RowsAtCompileTime, Derived::RowsAtCompileTime> covarianceSquareRoot(
+    const Eigen::MatrixBase<Derived>& covariance) {
+  CovarianceSquareRoot<Derived::RowsAtCompileTime> root(covariance.rows());
+  root.compute(covariance);
+  return root.matrix();
+}
+
+/// Normal distribution N(mean, covariance) of dimension N (Eigen::Dynamic allowed). The
+/// covariance is factored once at construction.
+template <int N>
+class MultivariateGaussian {
+ public:
+  using Vector = estimation::Vector<N>;
+  using Matrix = estimation::Matrix<N, N>;
+
+  /// Throws ParameterError on mismatched sizes or a non-finite mean, NumericalError when the
+  /// covariance is not symmetric positive semi-definite.
+  MultivariateGaussian(const Vector& mean, const Matrix& covariance)
+      : mean_(mean), covariance_(covariance), squareRoot_(mean.size()), llt_(mean.size()) {
+    if (!mean_.allFinite()) {
+      throw ParameterError("MultivariateGaussian: parameter 'mean' contains a non-finite value");
+    }
+    if (covariance_.rows() != mean_.size() || covariance_.cols() != mean_.size()) {
+      throw ParameterError("MultivariateGaussian: parameter 'covariance' is " +
+                           std::to_string(covariance_.rows()) + "x" +
+                           std::to_string(covariance_.cols()) + ", the mean has " +
+                           std::to_string(mean_.size()) + " entries");
+    }
+    squareRoot_.compute(covariance_);
+    llt_.compute(covariance_);
+    positiveDefinite_ = llt_.info() == Eigen::Success;
+    double logDeterminant = 0.0;
+    for (Index i = 0; positiveDefinite_ && i < dimension(); ++i) {
+      const double pivot = llt_.matrixLLT()(i, i);
+      positiveDefinite_ = std::isfinite(pivot) && pivot > 0.0;
+      if (positiveDefinite_) logDeterminant += 2.0 * std::log(pivot);
+    }
+    constexpr double kLogTwoPi = 1.8378770664093454836;  // log(2 pi)
+    logNormaliser_ = -0.5 * (static_cast<double>(dimension()) * kLogTwoPi + logDeterminant);
+  }
+
+  Index dimension() const { return mean_.size(); }
+  const Vector& mean() const { return mean_; }
+  const Matrix& covariance() const { return covariance_; }
+  /// S with S * S^T = covariance, used for sampling.
+  const Matrix& squareRoot() const { return squareRoot_.matrix(); }
+  /// False for a semi-definite covariance: such a Gaussian can be sampled but has no density.
+  bool isPositiveDefinite() const { return positiveDefinite_; }
+
+  /// log N(x; mean, covariance) = -0.5 (m log(2 pi) + log det P + |L^-1 (x - mean)|^2).
+  /// Throws NumericalError unless the covariance is positive definite and InvalidInputError
+  /// on a wrong size. Allocates a temporary for Eigen::Dynamic; see the workspace overload.
+  template <class Derived>
+  double logDensity(const Eigen::MatrixBase<Derived>& x) const {
+    Vector workspace(dimension());
+    return logDensity(x, workspace);
+  }
+
+  /// As logDensity(x), using the caller's preallocated `workspace` (size dimension()) so that
+  /// repeated evaluations, e.g. one per particle, do not allocate.
+  template <class Derived>
+  double logDensity(const Eigen::MatrixBase<Derived>& x, Vector& workspace) const {
+    requirePositiveDefinite();
+    if (x.size() != dimension()) {
+      throw InvalidInputError("MultivariateGaussian: point has " + std::to_string(x.size()) +
+                              " entries, the distribution has " + std::to_string(dimension()));
+    }
+    workspace = x - mean_;
+    llt_.matrixL().solveInPlace(workspace);
+    return logNormaliser_ - 0.5 * workspace.squaredNorm();
+  }
+
+  template <class Derived>
+  double density(const Eigen::MatrixBase<Derived>& x) const {
+    return std::exp(logDensity(x));
+  }
+
+  template <class Engine>
+  Vector sample(Engine& engine) const {
+    Vector out(dimension());
+    sample(engine, out);
+    return out;
+  }
+
+  /// Writes one draw into `out` (size dimension(); e.g. a column of a particle matrix)
+  /// without allocating. Components with zero variance are exactly the mean.
+  template <class Engine, class Out>
+  void sample(Engine& engine, Out&& out) const {
+    if (out.size() != dimension()) {
+      throw InvalidInputError("MultivariateGaussian: sample output has " +
+                              std::to_string(out.size()) + " entries, the distribution has " +
+                              std::to_string(dimension()));
+    }
+    fillStandardNormal(engine, out);
+    squareRoot_.multiplyInPlace(out);
+    out += mean_;
+  }
+
+ private:
+  void requirePositiveDefinite() const {
+    if (!positiveDefinite_) {
+      throw NumericalError(
+          "MultivariateGaussian: covariance is not positive definite, the density is undefined "
+          "(the distribution can only be sampled)");
+    }
+  }
+
+  Vector mean_;
+  Matrix covariance_;
+  CovarianceSquareRoot<N> squareRoot_;
+  Eigen::LLT<Matrix> llt_;
+  bool positiveDefinite_ = false;
+  double logNormaliser_ = 0.0;
+};
+
+}  // namespace probability
+}  // namespace estimation

@@ -1,0 +1,107 @@
+// Unscented Kalman filter (thesis Algorithm 3.3) with additive noise. The correction draws
+// fresh sigma points from the predicted mean and covariance (which includes Q), as line 3 of
+// the algorithm says: reusing the propagated points would never correct a state whose
+// transition ignores the previous state (in nav3ctrl, omega = u1 makes every propagated point
+// carry the same omega, so gyro and wheels would be ignored).
+#pragma once
+
+#include <utility>
+
+#include "sf_estimation/abstract_kalman_filter.hpp"
+#include "sf_estimation/kalman_correction.hpp"
+#include "sf_estimation/model.hpp"
+#include "sf_estimation/unscented_transform.hpp"
+
+namespace estimation {
+
+template <class Model>
+class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize,
+                                                          Model::ControlSize> {
+  static constexpr int N = Model::StateSize;
+  static constexpr int M = Model::MeasurementSize;
+  static constexpr int L = Model::ControlSize;
+  static constexpr int S = sigmaPointCount(N);
+  using Base = AbstractKalmanFilter<N, M, L>;
+
+ public:
+  UnscentedKalmanFilter(Model model, const Matrix<N, N>& Q, const Matrix<M, M>& R,
+                        const Vector<N>& x0, const Matrix<N, N>& P0,
+                        const UnscentedParameters& params = {})
+      : Base("UnscentedKalmanFilter", Q, R, x0, P0, model.controlSize()),
+        model_(std::move(model)),
+        transform_(Q.rows(), params),
+        params_(params) {
+    checkModelSizes(this->method_, model_, this->stateSize(), this->measurementSize());
+  }
+
+  void estimate(const Measurement<M>& z) {
+    z.validate(this->measurementSize());
+    const Index n = this->stateSize();
+    const Index count = transform_.pointCount();
+
+    // Time update: propagate sigma points of the previous belief through f.
+    Matrix<N, S> points(n, count), propagated(n, count);
+    transform_.sigmaPoints(this->x_, this->P_, points);
+    Vector<N> in(n), out(n);
+    for (Index i = 0; i < count; ++i) {
+      in = points.col(i);
+      model_.transition(in, this->u_, out);
+      propagated.col(i) = out;
+    }
+    Vector<N> x(n);
+    transform_.mean(propagated, x);
+    Matrix<N, N> P(n, n);
+    transform_.crossCovariance(propagated, x, propagated, x, P);
+    P += this->Q_;
+
+    if (z.anyAvailable()) {
+      // Measurement update from fresh sigma points of the predicted belief.
+      const Index m = this->measurementSize();
+      transform_.sigmaPoints(x, P, points);
+      Matrix<M, S> expected(m, count);
+      Vector<M> zi(m);
+      for (Index i = 0; i < count; ++i) {
+        in = points.col(i);
+        model_.observation(in, zi);
+        expected.col(i) = zi;
+      }
+      Vector<M> zMean(m);
+      transform_.mean(expected, zMean);
+      Matrix<M, M> Pzz(m, m);
+      transform_.crossCovariance(expected, zMean, expected, zMean, Pzz);
+      Matrix<N, M> Pxz(n, m);
+      transform_.crossCovariance(points, x, expected, zMean, Pxz);
+
+      Vector<M> y = z.value - zMean;
+      Matrix<M, N> PxzT = Pxz.transpose();
+      neutraliseMissing(z, y, PxzT);
+      Pxz = PxzT.transpose();
+      for (Index i = 0; i < m; ++i) {
+        if (!z.available(i)) {
+          Pzz.row(i).setZero();
+          Pzz.col(i).setZero();
+        }
+      }
+      Matrix<M, M> R(m, m);
+      effectiveMeasurementNoise(this->R_, z, R);
+      Matrix<M, M> Szz = Pzz + R;
+      symmetrize(Szz);
+      Matrix<N, M> K(n, m);
+      kalmanGain<N, M>(Pxz, Szz, K);
+      x += K * y;
+      P -= K * Szz * K.transpose();
+    }
+    this->commit(x, P);
+  }
+
+  const Model& model() const { return model_; }
+  Model& model() { return model_; }
+  const UnscentedParameters& parameters() const { return params_; }
+
+ private:
+  Model model_;
+  UnscentedTransform<N> transform_;
+  UnscentedParameters params_;
+};
+
+}  // namespace estimation

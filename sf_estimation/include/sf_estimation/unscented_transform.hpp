@@ -1,0 +1,92 @@
+// The scaled unscented transform (thesis eqs. 3.5-3.10): sigma points of a Gaussian and the
+// weighted mean, covariance and cross-covariance of transformed points.
+#pragma once
+
+#include <string>
+
+#include <Eigen/Cholesky>
+
+#include "sf_estimation/errors.hpp"
+#include "sf_estimation/probability/gaussian.hpp"
+#include "sf_estimation/types.hpp"
+
+namespace estimation {
+
+struct UnscentedParameters {
+  double alpha = 1e-3;  ///< spread of the sigma points around the mean
+  double beta = 2.0;    ///< prior knowledge of the distribution (2 is optimal for Gaussians)
+  double kappa = 0.0;   ///< secondary scaling
+};
+
+template <int N>
+class UnscentedTransform {
+ public:
+  static constexpr int PointCount = sigmaPointCount(N);
+  template <int Rows>
+  using Points = Matrix<Rows, PointCount>;
+
+  UnscentedTransform(Index n, const UnscentedParameters& p) : n_(n), params_(p) {
+    if (!(p.alpha > 0.0) || !std::isfinite(p.alpha) || !std::isfinite(p.beta) ||
+        !std::isfinite(p.kappa)) {
+      throw ParameterError("UnscentedKalmanFilter: parameter 'alpha' must be positive and "
+                           "alpha, beta, kappa finite");
+    }
+    lambda_ = p.alpha * p.alpha * (static_cast<double>(n) + p.kappa) - static_cast<double>(n);
+    if (!(static_cast<double>(n) + lambda_ > 0.0)) {
+      throw ParameterError("UnscentedKalmanFilter: n + lambda = alpha^2 (n + kappa) must be "
+                           "positive; check 'alpha' and 'kappa'");
+    }
+    const Index count = 2 * n + 1;
+    meanWeights_.setConstant(count, 0.5 / (static_cast<double>(n) + lambda_));
+    covarianceWeights_ = meanWeights_;
+    meanWeights_(0) = lambda_ / (static_cast<double>(n) + lambda_);
+    covarianceWeights_(0) = meanWeights_(0) + 1.0 - p.alpha * p.alpha + p.beta;
+  }
+
+  Index pointCount() const { return 2 * n_ + 1; }
+  double lambda() const { return lambda_; }
+  const Vector<PointCount>& meanWeights() const { return meanWeights_; }
+  const Vector<PointCount>& covarianceWeights() const { return covarianceWeights_; }
+
+  /// Columns: mean, mean + i-th column of sqrt((n+lambda) P), mean - that column.
+  void sigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P, Points<N>& points) const {
+    const Matrix<N, N> scaled = (static_cast<double>(n_) + lambda_) * P;
+    const Eigen::LLT<Matrix<N, N>> llt(scaled);
+    Matrix<N, N> root(n_, n_);
+    if (llt.info() == Eigen::Success) {
+      root = llt.matrixL();
+    } else {
+      // Singular but valid covariances (a state known exactly) have no Cholesky factor; the
+      // LDLT-based root handles them and throws NumericalError for indefinite ones.
+      probability::CovarianceSquareRoot<N> semiDefiniteRoot(n_);
+      semiDefiniteRoot.compute(scaled);
+      root = semiDefiniteRoot.matrix();
+    }
+    points.resize(n_, 2 * n_ + 1);
+    points.col(0) = mean;
+    points.block(0, 1, n_, n_) = root.colwise() + mean;
+    points.block(0, 1 + n_, n_, n_) = (-root).colwise() + mean;
+  }
+
+  template <int Rows>
+  void mean(const Points<Rows>& points, Vector<Rows>& result) const {
+    result.noalias() = points * meanWeights_;
+  }
+
+  /// sum_i Wc_i (a_i - aMean)(b_i - bMean)^T; with a = b this is the covariance.
+  template <int RowsA, int RowsB>
+  void crossCovariance(const Points<RowsA>& a, const Vector<RowsA>& aMean, const Points<RowsB>& b,
+                       const Vector<RowsB>& bMean, Matrix<RowsA, RowsB>& result) const {
+    const Points<RowsA> da = a.colwise() - aMean;
+    const Points<RowsB> db = b.colwise() - bMean;
+    result.noalias() = da * covarianceWeights_.asDiagonal() * db.transpose();
+  }
+
+ private:
+  Index n_;
+  UnscentedParameters params_;
+  double lambda_ = 0.0;
+  Vector<PointCount> meanWeights_, covarianceWeights_;
+};
+
+}  // namespace estimation
