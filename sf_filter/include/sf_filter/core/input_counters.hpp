@@ -1,0 +1,35 @@
+// What happened to the values of one input: received, used in an estimate, or dropped and why.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+
+namespace sf_filter {
+
+/// Why a value was refused by the fusion core (None: accepted).
+enum class Rejection { None, NonFinite, BadVariance, OutOfOrder, UnknownInput };
+
+inline const char* toString(Rejection r) {
+  switch (r) {
+    case Rejection::None: return "accepted";
+    case Rejection::NonFinite: return "value is not finite";
+    case Rejection::BadVariance: return "variance is not finite and positive";
+    case Rejection::OutOfOrder: return "timestamp runs backwards";
+    case Rejection::UnknownInput: return "unknown input index";
+  }
+  return "?";
+}
+
+struct InputCounters {
+  std::uint64_t received = 0;     ///< values handed to the core
+  std::uint64_t used = 0;         ///< values that entered an estimate
+  std::uint64_t nonFinite = 0;    ///< dropped: NaN or infinite value
+  std::uint64_t badVariance = 0;  ///< dropped: variance field zero, negative or non-finite
+  std::uint64_t outOfOrder = 0;   ///< dropped: stamp older than the previous one of this input
+  double lastArrival = std::numeric_limits<double>::quiet_NaN();
+  double lastStamp = -std::numeric_limits<double>::infinity();
+
+  std::uint64_t dropped() const { return nonFinite + badVariance + outOfOrder; }
+};
+
+}  // namespace sf_filter

@@ -1,0 +1,56 @@
+// A fixed-rate schedule of estimation periods: period k ends at start + k * period, whenever
+// the previous estimate happened to run, so the rate never drifts (the original node started
+// the next period when the last estimate finished).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+namespace sf_filter {
+
+class PeriodSchedule {
+ public:
+  explicit PeriodSchedule(double period) : period_(period) {}
+
+  double period() const { return period_; }
+  bool started() const { return started_; }
+
+  /// Starts the schedule at `time`; the first period ends at time + period.
+  void start(double time) {
+    start_ = time;
+    index_ = 1;
+    started_ = true;
+  }
+  void stop() { started_ = false; }
+
+  /// End time of the current (not yet estimated) period.
+  double currentEnd() const { return start_ + static_cast<double>(index_) * period_; }
+  double currentStart() const { return currentEnd() - period_; }
+  bool due(double now) const { return started_ && now + kTolerance >= currentEnd(); }
+  void advance() { ++index_; }
+
+  /// Number of whole periods between the current end and `now` (0 when not due).
+  std::uint64_t periodsDue(double now) const {
+    if (!due(now)) return 0;
+    return static_cast<std::uint64_t>(std::floor((now + kTolerance - currentEnd()) / period_)) + 1;
+  }
+
+  /// Moves the schedule forward by whole periods so that `now` lies in the current period,
+  /// keeping the phase (used after a long gap instead of estimating every missed period).
+  void skipTo(double now) {
+    if (!due(now)) return;
+    index_ += periodsDue(now);
+  }
+
+ private:
+  /// Period ends are sums of doubles; a clock reading within a microsecond of an end counts
+  /// as reaching it (ROS times near 1.7e9 s resolve to about 0.2 us).
+  static constexpr double kTolerance = 1e-6;
+
+  double period_;
+  double start_ = 0.0;
+  std::uint64_t index_ = 1;
+  bool started_ = false;
+};
+
+}  // namespace sf_filter

@@ -1,0 +1,211 @@
+// Unit tests of the ROS-free fusion core: temporal alignment by averaging, missing inputs,
+// controls, the fixed-rate schedule, time jumps and dropped values. The reference is the
+// same Kalman filter stepped by hand with the measurement the thesis's alignment defines.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <sf_estimation/kalman_filter.hpp>
+
+#include "sf_filter/core/fusion_core.hpp"
+
+namespace {
+
+using estimation::Matrix;
+using estimation::Measurement;
+using estimation::Vector;
+
+// Moving train (thesis 2.2.1) with one control: v' = v + a T + u, a' = a; sensors v and a.
+using Train = estimation::KalmanFilter<2, 2, 1>;
+constexpr double kPeriod = 0.1;
+
+Train makeTrain() {
+  Matrix<2, 2> A;
+  A << 1, kPeriod, 0, 1;
+  Matrix<2, 1> B(1, 0);
+  const Matrix<2, 2> H = Matrix<2, 2>::Identity();
+  const Matrix<2, 2> Q = Matrix<2, 2>::Identity() * 0.01;
+  Matrix<2, 2> R;
+  R << 0.5, 0, 0, 0.2;
+  return Train(A, B, H, Q, R, Vector<2>(0, 0), Matrix<2, 2>::Identity());
+}
+
+using Core = sf_filter::FusionCore<Train>;
+
+Core makeCore() {
+  Core::Options options;
+  options.period = kPeriod;
+  return Core(makeTrain(), options);
+}
+
+struct Collector {
+  std::vector<Core::Estimate> estimates;
+  void operator()(const Core::Estimate& e) { estimates.push_back(e); }
+};
+
+TEST(FusionCore, AveragesTheValuesOfAPeriodAndMarksSilentInputsMissing) {
+  Core core = makeCore();
+  Collector out;
+  core.advanceTo(0.0, out);
+  for (double t : {0.01, 0.03, 0.05}) core.advanceTo(t, out);
+  core.addMeasurement(0, 0.01, 1.0);
+  core.addMeasurement(0, 0.03, 2.0);
+  core.addMeasurement(0, 0.05, 6.0);
+  core.advanceTo(0.1, out);
+  ASSERT_EQ(out.estimates.size(), 1u);
+  EXPECT_DOUBLE_EQ(out.estimates[0].time, 0.1);
+  EXPECT_EQ(out.estimates[0].presentInputs, 1);
+
+  // Reference: the mean (1 + 2 + 6) / 3 = 3 for the speed, the acceleration missing.
+  Train reference = makeTrain();
+  Measurement<2> z;
+  z.value << 3.0, 0.0;
+  z.available << true, false;
+  reference.estimate(z);
+  EXPECT_TRUE(out.estimates[0].state.isApprox(reference.state(), 1e-14));
+  EXPECT_TRUE(out.estimates[0].covariance.isApprox(reference.covariance(), 1e-14));
+  EXPECT_EQ(core.counters(0).used, 3u);
+  EXPECT_EQ(core.counters(1).used, 0u);
+}
+
+TEST(FusionCore, APeriodWithoutValuesIsATimeUpdateOnly) {
+  Core core = makeCore();
+  Collector out;
+  core.advanceTo(0.0, out);
+  core.advanceTo(0.1, out);
+  Train reference = makeTrain();
+  reference.estimate(Measurement<2>::missing());
+  ASSERT_EQ(out.estimates.size(), 1u);
+  EXPECT_TRUE(out.estimates[0].state.isApprox(reference.state()));
+  // P = A I A^T + Q: [[1 + 0.01 + 0.01, 0.1], [0.1, 1.01]]
+  EXPECT_NEAR(out.estimates[0].covariance(0, 0), 1.02, 1e-14);
+  EXPECT_NEAR(out.estimates[0].covariance(0, 1), 0.1, 1e-14);
+  EXPECT_NEAR(out.estimates[0].covariance(1, 1), 1.01, 1e-14);
+}
+
+TEST(FusionCore, UsesTheLatestControlValue) {
+  Core core = makeCore();
+  Collector out;
+  core.advanceTo(0.0, out);
+  core.addControl(0, 5.0);
+  core.addControl(0, 2.0);
+  core.advanceTo(0.1, out);
+  // x = A 0 + B u = (2, 0): no measurement, so the prediction is the estimate.
+  EXPECT_DOUBLE_EQ(out.estimates.at(0).state(0), 2.0);
+  EXPECT_DOUBLE_EQ(out.estimates.at(0).state(1), 0.0);
+  // The control persists into later periods until a new one arrives.
+  core.advanceTo(0.2, out);
+  EXPECT_DOUBLE_EQ(out.estimates.at(1).state(0), 4.0);
+}
+
+TEST(FusionCore, KeepsAFixedRateScheduleWithoutDrift) {
+  Core core = makeCore();
+  Collector out;
+  core.advanceTo(10.0, out);
+  // Late wake-ups must not shift later period ends.
+  core.advanceTo(10.137, out);
+  core.advanceTo(10.35, out);
+  core.advanceTo(10.4, out);
+  ASSERT_EQ(out.estimates.size(), 4u);
+  for (std::size_t k = 0; k < out.estimates.size(); ++k) {
+    EXPECT_NEAR(out.estimates[k].time, 10.0 + 0.1 * static_cast<double>(k + 1), 1e-12);
+  }
+}
+
+TEST(FusionCore, TimeRunningBackwardsResetsTheFilter) {
+  Core core = makeCore();
+  Collector out;
+  core.advanceTo(0.0, out);
+  core.addMeasurement(0, 0.05, 4.0);
+  core.advanceTo(0.3, out);
+  EXPECT_NE(core.lastEstimate().state(0), 0.0);
+  EXPECT_EQ(core.advanceTo(0.05, out), sf_filter::ClockEvent::JumpedBackwards);
+  EXPECT_EQ(core.clockResets(), 1u);
+  EXPECT_EQ(core.lastEstimate().state, Vector<2>::Zero());
+  EXPECT_EQ(core.lastEstimate().covariance, (Matrix<2, 2>::Identity()));
+  // The schedule restarts at the new time.
+  out.estimates.clear();
+  core.advanceTo(0.15, out);
+  ASSERT_EQ(out.estimates.size(), 1u);
+  EXPECT_NEAR(out.estimates[0].time, 0.15, 1e-12);
+}
+
+TEST(FusionCore, DropsAndCountsNonFiniteValuesAndBadVariances) {
+  Core core = makeCore();
+  Collector out;
+  core.advanceTo(0.0, out);
+  EXPECT_EQ(core.addMeasurement(0, 0.01, std::nan("")), sf_filter::Rejection::NonFinite);
+  EXPECT_EQ(core.addMeasurement(0, 0.01, std::numeric_limits<double>::infinity()),
+            sf_filter::Rejection::NonFinite);
+  EXPECT_EQ(core.addMeasurement(1, 0.01, 1.0, 0.0), sf_filter::Rejection::BadVariance);
+  EXPECT_EQ(core.addMeasurement(1, 0.01, 1.0, -2.0), sf_filter::Rejection::BadVariance);
+  EXPECT_EQ(core.addMeasurement(1, 0.01, 1.0, std::nan("")), sf_filter::Rejection::BadVariance);
+  EXPECT_EQ(core.addControl(0, std::nan("")), sf_filter::Rejection::NonFinite);
+  core.advanceTo(0.1, out);
+  EXPECT_EQ(core.counters(0).nonFinite, 2u);
+  EXPECT_EQ(core.counters(1).badVariance, 3u);
+  EXPECT_EQ(core.counters(0).dropped() + core.counters(1).dropped(), 5u);
+  EXPECT_EQ(core.controlNonFinite(), 1u);
+  // Nothing reached the filter: the estimate is the pure time update.
+  Train reference = makeTrain();
+  reference.estimate(Measurement<2>::missing());
+  EXPECT_TRUE(out.estimates.at(0).state.isApprox(reference.state()));
+  EXPECT_TRUE(out.estimates.at(0).covariance.isApprox(reference.covariance()));
+}
+
+TEST(FusionCore, AMessageVarianceReplacesRForThatPeriod) {
+  Core core = makeCore();
+  Collector out;
+  core.advanceTo(0.0, out);
+  core.addMeasurement(1, 0.02, 1.0, 0.04);
+  core.addMeasurement(1, 0.04, 3.0, 0.08);
+  core.advanceTo(0.1, out);
+  // Mean 2 with variance (0.04 + 0.08) / 2^2 = 0.03 instead of R(1,1) = 0.2.
+  Train reference = makeTrain();
+  Measurement<2> z;
+  z.value << 0.0, 2.0;
+  z.available << false, true;
+  z.varianceGiven << false, true;
+  z.variance << 0.0, 0.03;
+  reference.estimate(z);
+  EXPECT_TRUE(out.estimates.at(0).state.isApprox(reference.state(), 1e-14));
+  EXPECT_TRUE(out.estimates.at(0).covariance.isApprox(reference.covariance(), 1e-14));
+}
+
+TEST(FusionCore, DropsStampsRunningBackwardsPerInput) {
+  Core core = makeCore();
+  Collector out;
+  core.advanceTo(0.0, out);
+  EXPECT_EQ(core.addMeasurement(0, 0.01, 1.0, std::nullopt, 5.0), sf_filter::Rejection::None);
+  EXPECT_EQ(core.addMeasurement(0, 0.02, 9.0, std::nullopt, 4.9), sf_filter::Rejection::OutOfOrder);
+  // Another input has its own history.
+  EXPECT_EQ(core.addMeasurement(1, 0.02, 0.0, std::nullopt, 4.0), sf_filter::Rejection::None);
+  core.advanceTo(0.1, out);
+  EXPECT_EQ(core.counters(0).outOfOrder, 1u);
+  EXPECT_EQ(core.counters(0).used, 1u);
+}
+
+TEST(FusionCore, ALongGapIsSkippedWithOneEstimate) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.maxCatchUpPeriods = 10;
+  Core core(makeTrain(), options);
+  Collector out;
+  core.advanceTo(0.0, out);
+  EXPECT_EQ(core.advanceTo(100.05, out), sf_filter::ClockEvent::SkippedGap);
+  EXPECT_EQ(out.estimates.size(), 1u);
+  // The phase is kept: the next period ends at 100.1.
+  core.advanceTo(100.1, out);
+  ASSERT_EQ(out.estimates.size(), 2u);
+  EXPECT_NEAR(out.estimates[1].time, 100.1, 1e-9);
+}
+
+TEST(FusionCore, RefusesANonPositivePeriod) {
+  Core::Options options;
+  options.period = 0.0;
+  EXPECT_THROW(Core(makeTrain(), options), estimation::ParameterError);
+}
+
+}  // namespace
