@@ -31,8 +31,7 @@ class ConfidenceWeightedAveraging {
   /// defaultVariances(i) (finite, > 0) is the variance of input i when a measurement does not
   /// carry its own.
   ConfidenceWeightedAveraging(Index inputCount, const Eigen::VectorXd& defaultVariances)
-      : defaultVariances_(checkedDefaultVariances(checkedInputCount(inputCount),
-                                                  defaultVariances)),
+      : defaultVariances_(checkedDefaultVariances(checkedInputCount(inputCount), defaultVariances)),
         state_(Eigen::VectorXd::Zero(1)),
         covariance_(Eigen::MatrixXd::Zero(1, 1)) {
     reset();
@@ -67,8 +66,8 @@ class ConfidenceWeightedAveraging {
     const double fusedVariance = 1.0 / inverseVarianceSum;
     if (!std::isfinite(fused) || !std::isfinite(fusedVariance)) {
       throw NumericalError("ConfidenceWeightedAveraging: fused estimate is not finite (" +
-                           std::to_string(fused) + ", variance " +
-                           std::to_string(fusedVariance) + ")");
+                           std::to_string(fused) + ", variance " + std::to_string(fusedVariance) +
+                           ")");
     }
     state_(0) = fused;
     covariance_(0, 0) = fusedVariance;

@@ -42,10 +42,10 @@ class MovingAverage {
   /// weights[0] applies to the newest value, weights[windowSize - 1] to the oldest. They must
   /// be finite, non-negative, with a positive sum; they need not sum to 1.
   MovingAverage(Index inputCount, Index windowSize, const std::vector<double>& weights)
-      : MovingAverage(inputCount, windowSize,
-                      Eigen::Map<const Eigen::VectorXd>(weights.data(),
-                                                        static_cast<Index>(weights.size())),
-                      true) {}
+      : MovingAverage(
+            inputCount, windowSize,
+            Eigen::Map<const Eigen::VectorXd>(weights.data(), static_cast<Index>(weights.size())),
+            true) {}
 
   /// As above; a template so that a braced list {..} unambiguously means std::vector.
   template <class Derived>
@@ -126,8 +126,7 @@ class MovingAverage {
     return windowSize;
   }
 
-  static const Eigen::VectorXd& checkedWeights(const Eigen::VectorXd& weights,
-                                               Index windowSize) {
+  static const Eigen::VectorXd& checkedWeights(const Eigen::VectorXd& weights, Index windowSize) {
     if (weights.size() != windowSize) {
       throw ParameterError("MovingAverage: parameter 'weights' has " +
                            std::to_string(weights.size()) + " entries, windowSize is " +
@@ -136,8 +135,7 @@ class MovingAverage {
     for (Index a = 0; a < weights.size(); ++a) {
       if (!std::isfinite(weights(a)) || weights(a) < 0.0) {
         throw ParameterError("MovingAverage: parameter 'weights' entry " + std::to_string(a) +
-                             " must be finite and non-negative, got " +
-                             std::to_string(weights(a)));
+                             " must be finite and non-negative, got " + std::to_string(weights(a)));
       }
     }
     if (!(weights.sum() > 0.0)) {

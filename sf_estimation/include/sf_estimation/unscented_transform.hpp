@@ -51,10 +51,9 @@ class UnscentedTransform {
   /// Columns: mean, mean + i-th column of sqrt((n+lambda) P), mean - that column.
   void sigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P, Points<N>& points) const {
     const Matrix<N, N> scaled = (static_cast<double>(n_) + lambda_) * P;
-    const Eigen::LLT<Matrix<N, N>> llt(scaled);
-    Matrix<N, N> root(n_, n_);
-    if (llt.info() == Eigen::Success) {
-      root = llt.matrixL();
+    Matrix<N, N> root = scaled;
+    if (probability::choleskyInPlace(root)) {
+      root.template triangularView<Eigen::StrictlyUpper>().setZero();
     } else {
       // Singular but valid covariances (a state known exactly) have no Cholesky factor; the
       // LDLT-based root handles them and throws NumericalError for indefinite ones.
@@ -77,9 +76,15 @@ class UnscentedTransform {
   template <int RowsA, int RowsB>
   void crossCovariance(const Points<RowsA>& a, const Vector<RowsA>& aMean, const Points<RowsB>& b,
                        const Vector<RowsB>& bMean, Matrix<RowsA, RowsB>& result) const {
-    const Points<RowsA> da = a.colwise() - aMean;
+    const Points<RowsA> weighted = (a.colwise() - aMean) * covarianceWeights_.asDiagonal();
     const Points<RowsB> db = b.colwise() - bMean;
-    result.noalias() = da * covarianceWeights_.asDiagonal() * db.transpose();
+    if constexpr (N != Dynamic) {
+      // Coefficient-wise: from 2n+1 >= 8 points on, Eigen would pick its blocked GEMM, whose
+      // packing costs more than the whole product at fixed (small) sizes.
+      result.noalias() = weighted.lazyProduct(db.transpose());
+    } else {
+      result.noalias() = weighted * db.transpose();
+    }
   }
 
  private:

@@ -18,14 +18,22 @@ namespace sf_config {
 /// Name of a method value (the macro name), or "unknown".
 constexpr const char* methodName(int method) {
   switch (method) {
-    case KALMAN_FILTER: return "KALMAN_FILTER";
-    case EXTENDED_KALMAN_FILTER: return "EXTENDED_KALMAN_FILTER";
-    case UNSCENTED_KALMAN_FILTER: return "UNSCENTED_KALMAN_FILTER";
-    case PARTICLE_FILTER_SIR: return "PARTICLE_FILTER_SIR";
-    case MOVING_AVERAGE: return "MOVING_AVERAGE";
-    case MOVING_MEDIAN: return "MOVING_MEDIAN";
-    case CONFIDENCE_WEIGHTED_AVERAGING: return "CONFIDENCE_WEIGHTED_AVERAGING";
-    default: return "unknown";
+    case KALMAN_FILTER:
+      return "KALMAN_FILTER";
+    case EXTENDED_KALMAN_FILTER:
+      return "EXTENDED_KALMAN_FILTER";
+    case UNSCENTED_KALMAN_FILTER:
+      return "UNSCENTED_KALMAN_FILTER";
+    case PARTICLE_FILTER_SIR:
+      return "PARTICLE_FILTER_SIR";
+    case MOVING_AVERAGE:
+      return "MOVING_AVERAGE";
+    case MOVING_MEDIAN:
+      return "MOVING_MEDIAN";
+    case CONFIDENCE_WEIGHTED_AVERAGING:
+      return "CONFIDENCE_WEIGHTED_AVERAGING";
+    default:
+      return "unknown";
   }
 }
 

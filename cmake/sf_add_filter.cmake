@@ -1,0 +1,36 @@
+# sf_add_filter(<node name> <configuration header>)
+#
+# Builds a fusion node executable from one configuration header (see doc/configuration.md).
+# Exported through catkin: a package that find_package()s sf_pkg can call it with its own
+# headers. The header path is relative to the calling CMakeLists.txt or absolute.
+if(NOT DEFINED SF_PKG_FILTER_MAIN)
+  # Inside sf_pkg itself, or from its source tree (devel space): the sources are beside us.
+  get_filename_component(_sf_pkg_root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+  if(NOT EXISTS "${_sf_pkg_root}/sf_filter/src/fusion_node_main.cpp")
+    # Devel/install space: catkin puts this file in <prefix>/share/sf_pkg/cmake.
+    set(_sf_pkg_root "${sf_pkg_SOURCE_PREFIX}")
+  endif()
+  set(SF_PKG_FILTER_MAIN "${_sf_pkg_root}/sf_filter/src/fusion_node_main.cpp")
+endif()
+
+function(sf_add_filter name header)
+  get_filename_component(_header "${header}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+  if(NOT EXISTS "${_header}")
+    message(FATAL_ERROR "sf_add_filter(${name}): configuration header ${_header} not found")
+  endif()
+  add_executable(${name} "${SF_PKG_FILTER_MAIN}")
+  target_compile_definitions(${name} PRIVATE SF_CONFIG_HEADER="${_header}")
+  target_include_directories(${name} PRIVATE ${catkin_INCLUDE_DIRS} ${sf_pkg_INCLUDE_DIRS})
+  target_link_libraries(${name} ${catkin_LIBRARIES} ${sf_pkg_LIBRARIES})
+  if(TARGET sf_estimation)
+    target_link_libraries(${name} sf_estimation)
+    target_include_directories(${name} PRIVATE
+      "${CMAKE_CURRENT_SOURCE_DIR}/sf_filter/include" "${CMAKE_CURRENT_SOURCE_DIR}/sf_estimation/include")
+  endif()
+  if(TARGET sf_pkg_generate_messages_cpp)
+    add_dependencies(${name} sf_pkg_generate_messages_cpp)
+  endif()
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY
+    "${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}")
+  install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+endfunction()

@@ -1,0 +1,263 @@
+// Helpers shared by the filter tests: matrix comparison, simulated runs of linear models,
+// the hand-derived Jacobians of nav3ctrl, and a model wrapper keeping only chosen
+// measurement rows (the "reduced" reference for missing measurements).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "sf_estimation/measurement.hpp"
+#include "sf_estimation/models/navigation.hpp"
+#include "sf_estimation/types.hpp"
+
+namespace sftest {
+
+using estimation::Dynamic;
+using estimation::Index;
+using estimation::Matrix;
+using estimation::Measurement;
+using estimation::Vector;
+
+/// Largest absolute entry of a - b.
+template <class A, class B>
+double maxAbsDiff(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b) {
+  if (a.size() == 0 && b.size() == 0) return 0.0;
+  return (a - b).cwiseAbs().maxCoeff();
+}
+
+/// Largest absolute entry (the scale a relative tolerance refers to).
+template <class A>
+double scaleOf(const Eigen::MatrixBase<A>& a) {
+  return a.size() == 0 ? 0.0 : a.cwiseAbs().maxCoeff();
+}
+
+/// max |a - ref| / max |ref| (absolute difference when ref is zero).
+template <class A, class B>
+double relDiff(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& ref) {
+  const double scale = scaleOf(ref);
+  const double diff = maxAbsDiff(a, ref);
+  return scale > 0.0 ? diff / scale : diff;
+}
+
+/// A square root of a symmetric positive semi-definite matrix (for simulating noise).
+inline Eigen::MatrixXd psdRoot(const Eigen::MatrixXd& P) {
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(P);
+  return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+}
+
+/// One step of input: the control set before the step and the measurement of the step.
+template <int M, int L>
+struct Step {
+  Vector<L> u;
+  Measurement<M> z;
+};
+
+/// Simulates x' = A x + B u + w, z = H x + v with random controls (uniform in
+/// [-controlScale, controlScale]), random missing entries (each with probability
+/// `missingProbability`) and every `allMissingEvery`-th step without any measurement.
+template <int N, int M, int L>
+std::vector<Step<M, L>> simulateLinear(const Matrix<N, N>& A, const Matrix<N, L>& B,
+                                        const Matrix<M, N>& H, const Matrix<N, N>& Q,
+                                        const Matrix<M, M>& R, const Vector<N>& x0, int steps,
+                                        std::uint64_t seed, double missingProbability,
+                                        int allMissingEvery, double controlScale) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::bernoulli_distribution missing(missingProbability);
+  const Eigen::MatrixXd rootQ = psdRoot(Q), rootR = psdRoot(R);
+  const Index n = A.rows(), m = H.rows(), l = B.cols();
+  Eigen::VectorXd x = x0;
+  std::vector<Step<M, L>> run;
+  for (int k = 0; k < steps; ++k) {
+    Step<M, L> step{Vector<L>(l), Measurement<M>(m)};
+    for (Index i = 0; i < l; ++i) step.u(i) = controlScale * uniform(rng);
+    Eigen::VectorXd w(n), v(m);
+    for (Index i = 0; i < n; ++i) w(i) = normal(rng);
+    for (Index i = 0; i < m; ++i) v(i) = normal(rng);
+    x = A * x + B * step.u + rootQ * w;
+    step.z.value = H * x + rootR * v;
+    for (Index i = 0; i < m; ++i) step.z.available(i) = !missing(rng);
+    if (allMissingEvery > 0 && k % allMissingEvery == allMissingEvery - 1) {
+      step.z.available.setConstant(false);
+    }
+    run.push_back(step);
+  }
+  return run;
+}
+
+/// Inputs of a robot driving a smooth random path (the magnitudes of section 5: |v| < 1 m/s,
+/// |omega| < 0.7 rad/s, |a| < 1 m/s^2) for the nav3 models: controls u = (v command, omega
+/// command), measurements (gyro, accelerometer, left wheel, right wheel) with the noise of
+/// nav3MeasurementNoise(), random missing entries and every `allMissingEvery`-th step empty.
+inline std::vector<Step<4, 2>> simulateNav3Drive(int steps, std::uint64_t seed,
+                                                 double missingProbability, int allMissingEvery,
+                                                 double T = 0.1, double radius = 0.3) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::bernoulli_distribution missing(missingProbability);
+  const double f1 = 0.05 + 0.2 * uniform(rng), f2 = 0.05 + 0.2 * uniform(rng);
+  const double p1 = 6.3 * uniform(rng), p2 = 6.3 * uniform(rng);
+  const Vector<4> sigma = estimation::models::nav3MeasurementNoise().diagonal().cwiseSqrt();
+  auto speed = [&](double t) { return 0.4 + 0.5 * std::sin(f1 * t + p1); };
+  auto turn = [&](double t) { return 0.6 * std::sin(f2 * t + p2); };
+  std::vector<Step<4, 2>> run;
+  for (int k = 0; k < steps; ++k) {
+    const double t = k * T;
+    Step<4, 2> step{Vector<2>(speed(t + T), turn(t + T)), Measurement<4>(4)};
+    const double v = speed(t), omega = turn(t);
+    const double a = 0.5 * f1 * std::cos(f1 * t + p1);
+    step.z.value << omega + sigma(0) * normal(rng), a + sigma(1) * normal(rng),
+        1000.0 * (v - radius * omega) + sigma(2) * normal(rng),
+        1000.0 * (v + radius * omega) + sigma(3) * normal(rng);
+    for (Index i = 0; i < 4; ++i) step.z.available(i) = !missing(rng);
+    if (allMissingEvery > 0 && k % allMissingEvery == allMissingEvery - 1) {
+      step.z.available.setConstant(false);
+    }
+    run.push_back(step);
+  }
+  return run;
+}
+
+/// Hand-derived Jacobian of the nav3ctrl transition (eqs. 5.8-5.14) at x:
+///   x'     = x + ds cos(th)  -> d/dth = -ds sin(th), d/dds = cos(th)
+///   y'     = y + ds sin(th)  -> d/dth =  ds cos(th), d/dds = sin(th)
+///   th'    = th + om T       -> d/dom = T
+///   om'    = u1              -> zero row
+///   ds'    = v T             -> d/dv = T
+///   v'     = v + a T         -> d/da = T
+///   a'     = (u0 - v) / T    -> d/dv = -1/T
+inline Matrix<7, 7> nav3CtrlTransitionJacobian(const estimation::models::Nav3Ctrl& model,
+                                               const Vector<7>& x) {
+  const double T = model.T, th = x(2), ds = x(4);
+  Matrix<7, 7> A = Matrix<7, 7>::Zero();
+  A(0, 0) = 1.0;
+  A(0, 2) = -ds * std::sin(th);
+  A(0, 4) = std::cos(th);
+  A(1, 1) = 1.0;
+  A(1, 2) = ds * std::cos(th);
+  A(1, 4) = std::sin(th);
+  A(2, 2) = 1.0;
+  A(2, 3) = T;
+  A(4, 5) = T;
+  A(5, 5) = 1.0;
+  A(5, 6) = T;
+  A(6, 5) = -1.0 / T;
+  return A;
+}
+
+/// Hand-derived Jacobian of the nav3 observation (eqs. 5.15-5.18):
+///   [0 0 0 1 0 0 0], [0 0 0 0 0 0 1], [0 0 0 -1000R 0 1000 0], [0 0 0 1000R 0 1000 0].
+inline Matrix<4, 7> nav3CtrlObservationJacobian(const estimation::models::Nav3Ctrl& model) {
+  const double R = model.radius;
+  Matrix<4, 7> H = Matrix<4, 7>::Zero();
+  H(0, 3) = 1.0;
+  H(1, 6) = 1.0;
+  H(2, 3) = -1000.0 * R;
+  H(2, 5) = 1000.0;
+  H(3, 3) = 1000.0 * R;
+  H(3, 5) = 1000.0;
+  return H;
+}
+
+/// The model `Model` observing only the measurement rows in `rows` (in that order).
+template <class Model>
+struct RowSubsetModel {
+  static constexpr int StateSize = Model::StateSize;
+  static constexpr int MeasurementSize = Dynamic;
+  static constexpr int ControlSize = Model::ControlSize;
+
+  Model model;
+  std::vector<Index> rows;
+
+  Index stateSize() const { return model.stateSize(); }
+  Index measurementSize() const { return static_cast<Index>(rows.size()); }
+  Index controlSize() const { return model.controlSize(); }
+
+  template <class S>
+  void transition(const Eigen::Matrix<S, StateSize, 1>& x, const Vector<ControlSize>& u,
+                  Eigen::Matrix<S, StateSize, 1>& next) const {
+    model.transition(x, u, next);
+  }
+
+  template <class S>
+  void observation(const Eigen::Matrix<S, StateSize, 1>& x,
+                   Eigen::Matrix<S, Dynamic, 1>& z) const {
+    Eigen::Matrix<S, Model::MeasurementSize, 1> full(model.measurementSize());
+    model.observation(x, full);
+    z.resize(measurementSize());
+    for (Index i = 0; i < measurementSize(); ++i) z(i) = full(rows[static_cast<std::size_t>(i)]);
+  }
+};
+
+/// Indices of the present entries of z.
+template <int M>
+std::vector<Index> presentRows(const Measurement<M>& z) {
+  std::vector<Index> rows;
+  for (Index i = 0; i < z.size(); ++i) {
+    if (z.available(i)) rows.push_back(i);
+  }
+  return rows;
+}
+
+/// The rows `rows` of a vector or matrix.
+template <class Derived>
+Eigen::Matrix<typename Derived::Scalar, Dynamic, Derived::ColsAtCompileTime> selectRows(
+    const Eigen::MatrixBase<Derived>& a, const std::vector<Index>& rows) {
+  Eigen::Matrix<typename Derived::Scalar, Dynamic, Derived::ColsAtCompileTime> out(
+      static_cast<Index>(rows.size()), a.cols());
+  for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Index>(i)) = a.row(rows[i]);
+  return out;
+}
+
+/// The sub-matrix R(rows, rows).
+template <class Derived>
+Eigen::MatrixXd selectSquare(const Eigen::MatrixBase<Derived>& a, const std::vector<Index>& rows) {
+  const Index k = static_cast<Index>(rows.size());
+  Eigen::MatrixXd out(k, k);
+  for (Index i = 0; i < k; ++i) {
+    for (Index j = 0; j < k; ++j) {
+      out(i, j) = a(rows[static_cast<std::size_t>(i)], rows[static_cast<std::size_t>(j)]);
+    }
+  }
+  return out;
+}
+
+/// The measurement with only the rows `rows` (all present, per-entry variances kept).
+template <int M>
+Measurement<Dynamic> selectMeasurement(const Measurement<M>& z, const std::vector<Index>& rows) {
+  Measurement<Dynamic> out(static_cast<Index>(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Index k = static_cast<Index>(i);
+    out.value(k) = z.value(rows[i]);
+    out.available(k) = true;
+    out.varianceGiven(k) = z.varianceGiven(rows[i]);
+    out.variance(k) = z.variance(rows[i]);
+  }
+  return out;
+}
+
+/// A symmetric positive definite 4x4 measurement noise with correlated entries, on the
+/// scales of nav3's sensors (gyro rad/s, accelerometer m/s^2, wheels mm/s).
+inline Matrix<4, 4> correlatedNav3MeasurementNoise() {
+  Matrix<4, 4> L = Matrix<4, 4>::Zero();
+  L(0, 0) = 0.013;
+  L(1, 0) = 0.01;
+  L(1, 1) = 0.5;
+  L(2, 0) = 0.2;
+  L(2, 1) = 0.1;
+  L(2, 2) = 1.4;
+  L(3, 0) = -0.2;
+  L(3, 1) = 0.1;
+  L(3, 2) = 0.3;
+  L(3, 3) = 1.3;
+  return L * L.transpose();
+}
+
+}  // namespace sftest

@@ -1,0 +1,399 @@
+// Stage 1 of the configuration: validation that must pass before any code can be generated.
+//
+//  - METHOD is defined and names a method of methods.hpp           (#error / static_assert)
+//  - the macros required by the chosen method are defined           (#error)
+//  - macros that cannot be combined with the method are absent      (#error)
+//  - TOPICS_IN, TOPICS_IN_CTRL, TOPICS_OUT and the macro defining the state size are
+//    well-formed sequences                                          (static_assert)
+//
+// Any failure defines SF_CFG_FATAL: configuration.hpp then generates nothing (SF_CONFIG_OK is 0).
+// Failures reported by #error (preprocessing time) also define SF_CFG_STOP: configuration.hpp
+// then ends the compilation right away. (A static_assert is only reported when the file is
+// parsed, which GCC does after reading the whole file, so those cannot stop it early.)
+//
+// On success this header defines the sizes as preprocessor literals:
+//   SF_CFG_N   state size n          SF_CFG_N_WHY   "n = 2 is the number of ..."
+//   SF_CFG_M   measurement size m    SF_CFG_M_WHY
+//   SF_CFG_L   control size l        SF_CFG_L_WHY
+// and SF_CFG_HAS_<X> (0/1) for every optional part.
+#pragma once
+
+#include <boost/preprocessor/facilities/is_empty.hpp>
+
+#include "sf_filter/config/detail/preprocessor.hpp"
+#include "sf_filter/config/methods.hpp"
+
+// clang-format off
+
+#define SF_CFG_TOPICS_IN_FORMAT \
+  "((topic)(type)(field)) or ((topic)(type)(field)(variance_field))"
+#define SF_CFG_TOPICS_IN_CTRL_FORMAT "((topic)(type)(field)) (controls have no variance field)"
+#define SF_CFG_TOPICS_OUT_FORMAT "((topic)(state_index))"
+
+// ---------------------------------------------------------------------------------------------
+// METHOD
+// ---------------------------------------------------------------------------------------------
+#if !defined(METHOD)
+#error METHOD is not defined: add e.g. #define METHOD EXTENDED_KALMAN_FILTER to the configuration header (one of KALMAN_FILTER, EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR, MOVING_AVERAGE, MOVING_MEDIAN, CONFIDENCE_WEIGHTED_AVERAGING)
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#elif BOOST_PP_IS_EMPTY(METHOD)
+#error METHOD is defined but empty: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR, MOVING_AVERAGE, MOVING_MEDIAN, CONFIDENCE_WEIGHTED_AVERAGING
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#elif !(METHOD == KALMAN_FILTER || METHOD == EXTENDED_KALMAN_FILTER ||               \
+        METHOD == UNSCENTED_KALMAN_FILTER || METHOD == PARTICLE_FILTER_SIR ||        \
+        METHOD == MOVING_AVERAGE || METHOD == MOVING_MEDIAN ||                       \
+        METHOD == CONFIDENCE_WEIGHTED_AVERAGING) /* METHOD must be one identifier */
+static_assert(false, "METHOD: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FILTER, "
+              "UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR, MOVING_AVERAGE, MOVING_MEDIAN, "
+              "CONFIDENCE_WEIGHTED_AVERAGING; found '" SF_PP_STR(METHOD) "'");
+#define SF_CFG_FATAL
+#endif
+
+#if !defined(SF_CFG_FATAL)
+
+#define SF_CFG_IS_MODEL_BASED                                                     \
+  (METHOD == EXTENDED_KALMAN_FILTER || METHOD == UNSCENTED_KALMAN_FILTER ||       \
+   METHOD == PARTICLE_FILTER_SIR)
+#define SF_CFG_IS_AVERAGING \
+  (METHOD == MOVING_AVERAGE || METHOD == MOVING_MEDIAN || METHOD == CONFIDENCE_WEIGHTED_AVERAGING)
+
+#if METHOD == KALMAN_FILTER
+#define SF_CFG_METHOD_NAME "KALMAN_FILTER"
+#elif METHOD == EXTENDED_KALMAN_FILTER
+#define SF_CFG_METHOD_NAME "EXTENDED_KALMAN_FILTER"
+#elif METHOD == UNSCENTED_KALMAN_FILTER
+#define SF_CFG_METHOD_NAME "UNSCENTED_KALMAN_FILTER"
+#elif METHOD == PARTICLE_FILTER_SIR
+#define SF_CFG_METHOD_NAME "PARTICLE_FILTER_SIR"
+#elif METHOD == MOVING_AVERAGE
+#define SF_CFG_METHOD_NAME "MOVING_AVERAGE"
+#elif METHOD == MOVING_MEDIAN
+#define SF_CFG_METHOD_NAME "MOVING_MEDIAN"
+#else
+#define SF_CFG_METHOD_NAME "CONFIDENCE_WEIGHTED_AVERAGING"
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Names used by the expressions must not be macros
+// ---------------------------------------------------------------------------------------------
+#if defined(T)
+#error T is defined as a macro, but T is the estimation period in seconds that the expressions use: remove the #define of T and set ESTIMATION_PERIOD (in ms) instead
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if defined(x) || defined(u)
+#error x or u is defined as a macro, but x[i] and u[i] name the state and the control inputs in the expressions: remove that #define
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Required macros (all methods)
+// ---------------------------------------------------------------------------------------------
+#if !defined(TOPICS_IN)
+#error TOPICS_IN is not defined: every method needs its measurement inputs, one entry per input, e.g. #define TOPICS_IN ((acceleration)(geometry_msgs::Vector3Stamped)(vector.y))((velocity)(std_msgs::Float32)(data))
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if !defined(TOPICS_OUT)
+#error TOPICS_OUT is not defined: every method needs its outputs, one ((topic)(state_index)) entry per published state variable, e.g. #define TOPICS_OUT ((velocity)(0))
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// KALMAN_FILTER
+// ---------------------------------------------------------------------------------------------
+#if METHOD == KALMAN_FILTER
+#if !defined(STATE_TRANSITION_MATRIX)
+#if defined(STATE_TRANSITION_MODEL)
+#error KALMAN_FILTER requires STATE_TRANSITION_MATRIX (n x n) but found STATE_TRANSITION_MODEL: a KALMAN_FILTER is linear, use EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER or PARTICLE_FILTER_SIR for a model given as expressions
+#else
+#error KALMAN_FILTER requires STATE_TRANSITION_MATRIX: the n x n matrix A of x(k) = A x(k-1) + B u(k), as a sequence of rows, e.g. ((1)(T))((0)(1))
+#endif
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if !defined(OBSERVATION_MATRIX)
+#if defined(OBSERVATION_MODEL)
+#error KALMAN_FILTER requires OBSERVATION_MATRIX (m x n) but found OBSERVATION_MODEL: a KALMAN_FILTER is linear, use EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER or PARTICLE_FILTER_SIR for a model given as expressions
+#else
+#error KALMAN_FILTER requires OBSERVATION_MATRIX: the m x n matrix H of z(k) = H x(k) with one row per TOPICS_IN entry, e.g. ((1)(0))((0)(1))
+#endif
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if defined(TOPICS_IN_CTRL) && !defined(CONTROL_INPUT_MATRIX)
+#error KALMAN_FILTER with TOPICS_IN_CTRL requires CONTROL_INPUT_MATRIX: the n x l matrix B of x(k) = A x(k-1) + B u(k) with one column per TOPICS_IN_CTRL entry
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if defined(CONTROL_INPUT_MATRIX) && !defined(TOPICS_IN_CTRL)
+#error CONTROL_INPUT_MATRIX is defined but TOPICS_IN_CTRL is not: define one ((topic)(type)(field)) entry of TOPICS_IN_CTRL per column of CONTROL_INPUT_MATRIX, or remove CONTROL_INPUT_MATRIX
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#endif  // KALMAN_FILTER
+
+// ---------------------------------------------------------------------------------------------
+// EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR
+// ---------------------------------------------------------------------------------------------
+#if SF_CFG_IS_MODEL_BASED
+#if !defined(STATE_TRANSITION_MODEL)
+#if defined(STATE_TRANSITION_MATRIX)
+#error EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER and PARTICLE_FILTER_SIR require STATE_TRANSITION_MODEL but found STATE_TRANSITION_MATRIX: write one expression per state variable, e.g. (x[0] + x[1]*T)(x[1]), or use METHOD KALMAN_FILTER
+#else
+#error EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER and PARTICLE_FILTER_SIR require STATE_TRANSITION_MODEL: a sequence of n expressions in x[i], u[i] and T, one per state variable, e.g. (x[0] + x[1]*T)(x[1])
+#endif
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if !defined(OBSERVATION_MODEL)
+#if defined(OBSERVATION_MATRIX)
+#error EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER and PARTICLE_FILTER_SIR require OBSERVATION_MODEL but found OBSERVATION_MATRIX: write one expression in x[i] per TOPICS_IN entry, e.g. (x[0])(x[1]), or use METHOD KALMAN_FILTER
+#else
+#error EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER and PARTICLE_FILTER_SIR require OBSERVATION_MODEL: a sequence of m expressions in x[i] and T, one per TOPICS_IN entry, e.g. (x[0])(x[1])
+#endif
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if defined(CONTROL_INPUT_MATRIX)
+#error CONTROL_INPUT_MATRIX is only used by KALMAN_FILTER: with a STATE_TRANSITION_MODEL write the controls u[i] into the expressions instead
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#endif  // model based
+
+#if METHOD == KALMAN_FILTER || SF_CFG_IS_MODEL_BASED
+#if !defined(PROCESS_NOISE_COVARIANCE)
+#error KALMAN_FILTER, EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER and PARTICLE_FILTER_SIR require PROCESS_NOISE_COVARIANCE: the n x n matrix Q, as a sequence of rows, e.g. ((0.1)(0))((0)(0.1))
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if !defined(MEASUREMENT_NOISE_COVARIANCE)
+#error KALMAN_FILTER, EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER and PARTICLE_FILTER_SIR require MEASUREMENT_NOISE_COVARIANCE: the m x m matrix R (m = number of TOPICS_IN entries), as a sequence of rows, e.g. ((0.5)(0))((0)(0.2))
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// MOVING_AVERAGE, MOVING_MEDIAN, CONFIDENCE_WEIGHTED_AVERAGING
+// ---------------------------------------------------------------------------------------------
+#if (METHOD == MOVING_AVERAGE || METHOD == MOVING_MEDIAN) && !defined(WINDOW_SIZE)
+#error MOVING_AVERAGE and MOVING_MEDIAN require WINDOW_SIZE: the number of measurements per input that are averaged, a positive integer, e.g. #define WINDOW_SIZE 5
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if SF_CFG_IS_AVERAGING && defined(TOPICS_IN_CTRL)
+#error TOPICS_IN_CTRL is defined but MOVING_AVERAGE, MOVING_MEDIAN and CONFIDENCE_WEIGHTED_AVERAGING take no control inputs: remove TOPICS_IN_CTRL or choose a state estimator as METHOD
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+#if defined(WEIGHTING_COEFFICIENTS) && METHOD != MOVING_AVERAGE
+#error WEIGHTING_COEFFICIENTS is only used by MOVING_AVERAGE: remove it or change METHOD
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Well-formed input/output lists and state-size macro (their sizes define m, l and n)
+// ---------------------------------------------------------------------------------------------
+#if !defined(SF_CFG_FATAL)
+
+#if !SF_PP_IS_LIST(3, 4, TOPICS_IN)
+SF_PP_CHECK_LIST("TOPICS_IN", 3, 4, SF_CFG_TOPICS_IN_FORMAT, TOPICS_IN)
+#define SF_CFG_FATAL
+#endif
+
+#if defined(TOPICS_IN_CTRL)
+#if !SF_PP_IS_LIST(3, 3, TOPICS_IN_CTRL)
+SF_PP_CHECK_LIST("TOPICS_IN_CTRL", 3, 3, SF_CFG_TOPICS_IN_CTRL_FORMAT, TOPICS_IN_CTRL)
+#define SF_CFG_FATAL
+#endif
+#endif
+
+#if !SF_PP_IS_LIST(2, 2, TOPICS_OUT)
+SF_PP_CHECK_LIST("TOPICS_OUT", 2, 2, SF_CFG_TOPICS_OUT_FORMAT, TOPICS_OUT)
+#define SF_CFG_FATAL
+#endif
+
+#if METHOD == KALMAN_FILTER
+#if !SF_PP_IS_MATRIX(STATE_TRANSITION_MATRIX)
+SF_PP_MATRIX_FORM_ERROR("STATE_TRANSITION_MATRIX", n, n, "", STATE_TRANSITION_MATRIX)
+#define SF_CFG_FATAL
+#endif
+#elif SF_CFG_IS_MODEL_BASED
+#if !SF_PP_IS_VECTOR(STATE_TRANSITION_MODEL)
+static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressions in x[i], u[i] "
+              "and T, each in parentheses, e.g. (x[0] + x[1]*T)(x[1]); found '"
+              SF_PP_STR(STATE_TRANSITION_MODEL) "'");
+#define SF_CFG_FATAL
+#endif
+#endif
+
+#endif  // !SF_CFG_FATAL (lists)
+
+// ---------------------------------------------------------------------------------------------
+// Sizes
+// ---------------------------------------------------------------------------------------------
+#if !defined(SF_CFG_FATAL)
+
+#define SF_CFG_M BOOST_PP_SEQ_SIZE(TOPICS_IN)
+#define SF_CFG_M_WHY "m = " SF_PP_STR(SF_CFG_M) " is the number of TOPICS_IN entries"
+
+#if defined(TOPICS_IN_CTRL)
+#define SF_CFG_L BOOST_PP_SEQ_SIZE(TOPICS_IN_CTRL)
+#define SF_CFG_L_WHY "l = " SF_PP_STR(SF_CFG_L) " is the number of TOPICS_IN_CTRL entries"
+#else
+#define SF_CFG_L 0
+#define SF_CFG_L_WHY "l = 0 because TOPICS_IN_CTRL is not defined"
+#endif
+
+#if METHOD == KALMAN_FILTER
+#define SF_CFG_N BOOST_PP_SEQ_SIZE(STATE_TRANSITION_MATRIX)
+#define SF_CFG_N_WHY "n = " SF_PP_STR(SF_CFG_N) " is the number of rows of STATE_TRANSITION_MATRIX"
+#elif SF_CFG_IS_MODEL_BASED
+#define SF_CFG_N BOOST_PP_SEQ_SIZE(STATE_TRANSITION_MODEL)
+#define SF_CFG_N_WHY \
+  "n = " SF_PP_STR(SF_CFG_N) " is the number of expressions in STATE_TRANSITION_MODEL"
+#elif METHOD == CONFIDENCE_WEIGHTED_AVERAGING
+#define SF_CFG_N 1
+#define SF_CFG_N_WHY "n = 1 for CONFIDENCE_WEIGHTED_AVERAGING"
+#else
+#define SF_CFG_N SF_CFG_M
+#define SF_CFG_N_WHY "n = m = " SF_PP_STR(SF_CFG_M) " (the number of TOPICS_IN entries) for " \
+  SF_CFG_METHOD_NAME
+#endif
+
+// Optional parts (1 when given; a malformed value is reported by checks.hpp, not generated).
+#if METHOD == KALMAN_FILTER && defined(CONTROL_INPUT_MATRIX) && SF_PP_IS_MATRIX(CONTROL_INPUT_MATRIX)
+#define SF_CFG_HAS_CONTROL_INPUT_MATRIX 1
+#else
+#define SF_CFG_HAS_CONTROL_INPUT_MATRIX 0
+#endif
+#if METHOD == EXTENDED_KALMAN_FILTER && defined(STATE_TRANSITION_JACOBIAN) && \
+    SF_PP_IS_MATRIX(STATE_TRANSITION_JACOBIAN)
+#define SF_CFG_HAS_STATE_TRANSITION_JACOBIAN 1
+#else
+#define SF_CFG_HAS_STATE_TRANSITION_JACOBIAN 0
+#endif
+#if METHOD == EXTENDED_KALMAN_FILTER && defined(OBSERVATION_JACOBIAN) && \
+    SF_PP_IS_MATRIX(OBSERVATION_JACOBIAN)
+#define SF_CFG_HAS_OBSERVATION_JACOBIAN 1
+#else
+#define SF_CFG_HAS_OBSERVATION_JACOBIAN 0
+#endif
+#if defined(INITIAL_STATE) && SF_PP_IS_VECTOR(INITIAL_STATE)
+#define SF_CFG_HAS_INITIAL_STATE 1
+#else
+#define SF_CFG_HAS_INITIAL_STATE 0
+#endif
+#if defined(INITIAL_ERROR_COVARIANCE) && SF_PP_IS_MATRIX(INITIAL_ERROR_COVARIANCE)
+#define SF_CFG_HAS_INITIAL_ERROR_COVARIANCE 1
+#else
+#define SF_CFG_HAS_INITIAL_ERROR_COVARIANCE 0
+#endif
+#if defined(PROCESS_NOISE_COVARIANCE) && SF_PP_IS_MATRIX(PROCESS_NOISE_COVARIANCE)
+#define SF_CFG_HAS_PROCESS_NOISE_COVARIANCE 1
+#else
+#define SF_CFG_HAS_PROCESS_NOISE_COVARIANCE 0
+#endif
+#if defined(MEASUREMENT_NOISE_COVARIANCE) && SF_PP_IS_MATRIX(MEASUREMENT_NOISE_COVARIANCE)
+#define SF_CFG_HAS_MEASUREMENT_NOISE_COVARIANCE 1
+#else
+#define SF_CFG_HAS_MEASUREMENT_NOISE_COVARIANCE 0
+#endif
+#if defined(WEIGHTING_COEFFICIENTS) && SF_PP_IS_VECTOR(WEIGHTING_COEFFICIENTS)
+#define SF_CFG_HAS_WEIGHTING_COEFFICIENTS 1
+#else
+#define SF_CFG_HAS_WEIGHTING_COEFFICIENTS 0
+#endif
+#if SF_CFG_IS_MODEL_BASED && SF_PP_IS_VECTOR(OBSERVATION_MODEL)
+#define SF_CFG_HAS_OBSERVATION_MODEL 1
+#else
+#define SF_CFG_HAS_OBSERVATION_MODEL 0
+#endif
+#if METHOD == KALMAN_FILTER && SF_PP_IS_MATRIX(OBSERVATION_MATRIX)
+#define SF_CFG_HAS_OBSERVATION_MATRIX 1
+#else
+#define SF_CFG_HAS_OBSERVATION_MATRIX 0
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Macros that the chosen method does not use: warn instead of silently ignoring them.
+// ---------------------------------------------------------------------------------------------
+#if METHOD == KALMAN_FILTER || SF_CFG_IS_AVERAGING
+#if defined(STATE_TRANSITION_MODEL)
+#pragma GCC warning "STATE_TRANSITION_MODEL is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(OBSERVATION_MODEL)
+#pragma GCC warning "OBSERVATION_MODEL is not used by the chosen METHOD and is ignored"
+#endif
+#endif
+#if METHOD != EXTENDED_KALMAN_FILTER
+#if defined(STATE_TRANSITION_JACOBIAN)
+#pragma GCC warning "STATE_TRANSITION_JACOBIAN is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(OBSERVATION_JACOBIAN)
+#pragma GCC warning "OBSERVATION_JACOBIAN is not used by the chosen METHOD and is ignored"
+#endif
+#endif
+#if METHOD != KALMAN_FILTER
+#if defined(STATE_TRANSITION_MATRIX)
+#pragma GCC warning "STATE_TRANSITION_MATRIX is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(OBSERVATION_MATRIX)
+#pragma GCC warning "OBSERVATION_MATRIX is not used by the chosen METHOD and is ignored"
+#endif
+#endif
+#if METHOD != PARTICLE_FILTER_SIR
+#if defined(NUMBER_OF_PARTICLES)
+#pragma GCC warning "NUMBER_OF_PARTICLES is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(RANDOM_SEED)
+#pragma GCC warning "RANDOM_SEED is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(RESAMPLING_THRESHOLD)
+#pragma GCC warning "RESAMPLING_THRESHOLD is not used by the chosen METHOD and is ignored"
+#endif
+#endif
+#if METHOD != UNSCENTED_KALMAN_FILTER
+#if defined(UKF_ALPHA)
+#pragma GCC warning "UKF_ALPHA is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(UKF_BETA)
+#pragma GCC warning "UKF_BETA is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(UKF_KAPPA)
+#pragma GCC warning "UKF_KAPPA is not used by the chosen METHOD and is ignored"
+#endif
+#endif
+#if !SF_CFG_IS_AVERAGING && defined(WINDOW_SIZE)
+#pragma GCC warning "WINDOW_SIZE is not used by the chosen METHOD and is ignored"
+#endif
+#if SF_CFG_IS_AVERAGING
+#if defined(CONTROL_INPUT_MATRIX)
+#pragma GCC warning "CONTROL_INPUT_MATRIX is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(PROCESS_NOISE_COVARIANCE)
+#pragma GCC warning "PROCESS_NOISE_COVARIANCE is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(INITIAL_STATE)
+#pragma GCC warning "INITIAL_STATE is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(INITIAL_ERROR_COVARIANCE)
+#pragma GCC warning "INITIAL_ERROR_COVARIANCE is not used by the chosen METHOD and is ignored"
+#endif
+#if METHOD != CONFIDENCE_WEIGHTED_AVERAGING && defined(MEASUREMENT_NOISE_COVARIANCE)
+#pragma GCC warning "MEASUREMENT_NOISE_COVARIANCE is not used by the chosen METHOD and is ignored"
+#endif
+#endif
+
+#endif  // !SF_CFG_FATAL (sizes)
+
+#endif  // !SF_CFG_FATAL (method)
+
+// clang-format on

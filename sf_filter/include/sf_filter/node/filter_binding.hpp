@@ -1,0 +1,84 @@
+// The only code that depends on the chosen METHOD: which estimator type a configuration
+// header selects and how it is built from the (possibly overridden) parameters. Included by
+// the generated translation unit after the configuration header and configuration.hpp.
+#pragma once
+
+#include <sf_estimation/confidence_weighted_averaging.hpp>
+#include <sf_estimation/extended_kalman_filter.hpp>
+#include <sf_estimation/kalman_filter.hpp>
+#include <sf_estimation/moving_average.hpp>
+#include <sf_estimation/moving_median.hpp>
+#include <sf_estimation/particle_filter.hpp>
+#include <sf_estimation/unscented_kalman_filter.hpp>
+
+namespace sf_filter {
+namespace generated {
+
+constexpr double periodSeconds(const sf_config::Parameters& p) {
+  return p.estimation_period_ms / 1000.0;
+}
+
+#if METHOD == KALMAN_FILTER
+using Filter = estimation::KalmanFilter<sf_config::kStateSize, sf_config::kMeasurementSize,
+                                        sf_config::kControlSize>;
+inline Filter makeFilter(const sf_config::Parameters& p) {
+  sf_config::Model model;
+  model.T = periodSeconds(p);  // matrices may use T
+  return Filter(model.transitionMatrix(), model.controlInputMatrix(), model.observationMatrix(),
+                p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
+                p.initial_error_covariance);
+}
+#elif METHOD == EXTENDED_KALMAN_FILTER
+using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
+inline Filter makeFilter(const sf_config::Parameters& p) {
+  sf_config::Model model;
+  model.T = periodSeconds(p);
+  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance,
+                p.initial_state, p.initial_error_covariance);
+}
+#elif METHOD == UNSCENTED_KALMAN_FILTER
+using Filter = estimation::UnscentedKalmanFilter<sf_config::Model>;
+inline Filter makeFilter(const sf_config::Parameters& p) {
+  sf_config::Model model;
+  model.T = periodSeconds(p);
+  estimation::UnscentedParameters ut;
+  ut.alpha = p.ukf_alpha;
+  ut.beta = p.ukf_beta;
+  ut.kappa = p.ukf_kappa;
+  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance,
+                p.initial_state, p.initial_error_covariance, ut);
+}
+#elif METHOD == PARTICLE_FILTER_SIR
+using Filter = estimation::ParticleFilterSIR<sf_config::Model>;
+inline Filter makeFilter(const sf_config::Parameters& p) {
+  sf_config::Model model;
+  model.T = periodSeconds(p);
+  estimation::ParticleFilterParameters pf;
+  pf.particles = p.number_of_particles;
+  pf.seed = p.random_seed;
+  pf.resamplingThreshold = p.resampling_threshold;
+  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance,
+                p.initial_state, p.initial_error_covariance, pf);
+}
+#elif METHOD == MOVING_AVERAGE
+using Filter = estimation::MovingAverage;
+inline Filter makeFilter(const sf_config::Parameters& p) {
+  if (p.weighting_coefficients.size() > 0) {
+    return Filter(sf_config::kMeasurementSize, p.window_size, p.weighting_coefficients);
+  }
+  return Filter(sf_config::kMeasurementSize, p.window_size);
+}
+#elif METHOD == MOVING_MEDIAN
+using Filter = estimation::MovingMedian;
+inline Filter makeFilter(const sf_config::Parameters& p) {
+  return Filter(sf_config::kMeasurementSize, p.window_size);
+}
+#elif METHOD == CONFIDENCE_WEIGHTED_AVERAGING
+using Filter = estimation::ConfidenceWeightedAveraging;
+inline Filter makeFilter(const sf_config::Parameters& p) {
+  return Filter(sf_config::kMeasurementSize, p.measurement_noise_covariance.diagonal());
+}
+#endif
+
+}  // namespace generated
+}  // namespace sf_filter

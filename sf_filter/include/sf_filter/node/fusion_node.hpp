@@ -1,0 +1,212 @@
+// The ROS side of a fusion node: a thin adapter that feeds the fusion core with the messages
+// it receives and the passing of ros::Time, and publishes each estimate. Time is ros::Time,
+// so the node behaves the same live and under `rosbag play --clock` with use_sim_time.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <sf_pkg/OutputEntityStamped.h>
+#include <sf_pkg/StateEstimateStamped.h>
+
+#include "sf_filter/core/fusion_core.hpp"
+
+namespace sf_filter {
+
+/// What the configuration header says about the node's interface.
+struct NodeDescription {
+  std::string method;
+  std::vector<std::string> inputs;    ///< "topic field" per measurement input
+  std::vector<std::string> controls;  ///< "topic field" per control input
+  std::vector<std::pair<std::string, int>> outputs;  ///< topic and state index (TOPICS_OUT)
+  std::optional<std::array<int, 3>> pose;  ///< state indices of x, y, heading (POSE_OUT)
+};
+
+template <class Filter>
+class FusionNode {
+  using Core = FusionCore<Filter>;
+
+ public:
+  FusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, Filter filter, double period,
+             NodeDescription description)
+      : nh_(nh), pnh_(pnh), description_(std::move(description)),
+        core_(std::move(filter), makeOptions(period)) {
+    pnh_.param<std::string>("frame_id", frameId_, "odom");
+    pnh_.param<std::string>("child_frame_id", childFrameId_, "base_link");
+    pnh_.param("publish_tf", publishTf_, true);
+    for (const auto& out : description_.outputs) {
+      outputs_.push_back(nh_.advertise<sf_pkg::OutputEntityStamped>(out.first, 10));
+    }
+    state_ = pnh_.advertise<sf_pkg::StateEstimateStamped>("state", 10);
+    if (description_.pose) odometry_ = nh_.advertise<nav_msgs::Odometry>("odometry/filtered", 10);
+    logConfiguration(period);
+  }
+
+  /// Subscribes `topic`; `dispatch(msg, node, now)` hands each used field to measurement().
+  template <class Message, class Dispatch>
+  void subscribe(const std::string& topic, Dispatch dispatch) {
+    subscribers_.push_back(nh_.subscribe<Message>(
+        topic, 100, [this, dispatch](const typename Message::ConstPtr& msg) {
+          const double now = ros::Time::now().toSec();
+          advance(now);
+          dispatch(*msg, *this, now);
+        }));
+  }
+
+  /// Starts the fixed-rate schedule once the clock is valid (sim time waits for /clock).
+  void start() {
+    ros::Time::waitForValid();
+    advance(ros::Time::now().toSec());
+    timer_ = nh_.createTimer(ros::Duration(core_.period()),
+                             [this](const ros::TimerEvent&) { advance(ros::Time::now().toSec()); });
+  }
+
+  void measurement(Index input, double now, double value, std::optional<double> variance,
+                   double stamp) {
+    const Rejection r = core_.addMeasurement(input, now, value, variance, stamp);
+    if (r != Rejection::None) {
+      ROS_WARN_THROTTLE(5.0, "dropped a value of input %ld (%s): %s", static_cast<long>(input),
+                        description_.inputs.at(static_cast<std::size_t>(input)).c_str(),
+                        toString(r));
+    }
+  }
+
+  void control(Index index, double value) {
+    if (core_.addControl(index, value) != Rejection::None) {
+      ROS_WARN_THROTTLE(5.0, "dropped a non-finite value of control %ld (%s)",
+                        static_cast<long>(index),
+                        description_.controls.at(static_cast<std::size_t>(index)).c_str());
+    }
+  }
+
+  const Core& core() const { return core_; }
+
+ private:
+  static typename Core::Options makeOptions(double period) {
+    typename Core::Options options;
+    options.period = period;
+    return options;
+  }
+
+  void advance(double now) {
+    const std::uint64_t failures = core_.estimationFailures();
+    const ClockEvent event =
+        core_.advanceTo(now, [this](const typename Core::Estimate& e) { publish(e); });
+    if (event == ClockEvent::JumpedBackwards) {
+      ROS_WARN("time jumped backwards to %.3f s (bag restarted?): filter reset", now);
+    } else if (event == ClockEvent::SkippedGap) {
+      ROS_WARN("time jumped forward to %.3f s: skipped the missed periods", now);
+    }
+    if (core_.estimationFailures() != failures) {
+      ROS_ERROR_THROTTLE(5.0, "estimation failed, filter reset: %s", core_.lastFailure().c_str());
+    }
+  }
+
+  void publish(const typename Core::Estimate& e) {
+    const ros::Time stamp(e.time);
+    for (std::size_t k = 0; k < outputs_.size(); ++k) {
+      const int i = description_.outputs[k].second;
+      sf_pkg::OutputEntityStamped msg;
+      msg.header.stamp = stamp;
+      msg.header.frame_id = frameId_;
+      msg.value = e.state(i);
+      msg.variance = e.covariance(i, i);
+      outputs_[k].publish(msg);
+    }
+    const Index n = e.state.size();
+    sf_pkg::StateEstimateStamped state;
+    state.header.stamp = stamp;
+    state.header.frame_id = frameId_;
+    state.method = description_.method;
+    state.state.assign(e.state.data(), e.state.data() + n);
+    state.covariance.resize(static_cast<std::size_t>(n * n));
+    for (Index r = 0; r < n; ++r) {
+      for (Index c = 0; c < n; ++c) state.covariance[static_cast<std::size_t>(r * n + c)] = e.covariance(r, c);
+    }
+    state.present_inputs = static_cast<std::uint32_t>(e.presentInputs);
+    state_.publish(state);
+    if (description_.pose) publishPose(e, stamp);
+  }
+
+  /// nav_msgs/Odometry and the frame_id -> child_frame_id transform from the planar pose.
+  void publishPose(const typename Core::Estimate& e, const ros::Time& stamp) {
+    const auto [ix, iy, ith] = *description_.pose;
+    tf2::Quaternion q;
+    q.setRPY(0.0, 0.0, e.state(ith));
+    nav_msgs::Odometry odom;
+    odom.header.stamp = stamp;
+    odom.header.frame_id = frameId_;
+    odom.child_frame_id = childFrameId_;
+    odom.pose.pose.position.x = e.state(ix);
+    odom.pose.pose.position.y = e.state(iy);
+    odom.pose.pose.orientation.x = q.x();
+    odom.pose.pose.orientation.y = q.y();
+    odom.pose.pose.orientation.z = q.z();
+    odom.pose.pose.orientation.w = q.w();
+    // Covariance over (x, y, z, roll, pitch, yaw): fill the planar block, mark z/roll/pitch
+    // as unknown with a large variance.
+    const std::array<int, 3> idx = {ix, iy, ith};
+    const std::array<int, 3> slot = {0, 1, 5};
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        odom.pose.covariance[static_cast<std::size_t>(slot[r] * 6 + slot[c])] = e.covariance(idx[r], idx[c]);
+      }
+    }
+    for (int k : {2, 3, 4}) odom.pose.covariance[static_cast<std::size_t>(k * 7)] = 1e6;
+    odometry_.publish(odom);
+    if (publishTf_) {
+      geometry_msgs::TransformStamped t;
+      t.header = odom.header;
+      t.child_frame_id = childFrameId_;
+      t.transform.translation.x = odom.pose.pose.position.x;
+      t.transform.translation.y = odom.pose.pose.position.y;
+      t.transform.rotation = odom.pose.pose.orientation;
+      broadcaster_.sendTransform(t);
+    }
+  }
+
+  void logConfiguration(double period) const {
+    const auto& f = core_.filter();
+    ROS_INFO("%s: n=%ld states, m=%ld measurements, l=%ld controls, period %.1f ms",
+             f.description().c_str(), static_cast<long>(f.stateSize()),
+             static_cast<long>(f.measurementSize()), static_cast<long>(f.controlSize()),
+             period * 1000.0);
+    for (std::size_t i = 0; i < description_.inputs.size(); ++i) {
+      ROS_INFO("  input %zu: %s", i, description_.inputs[i].c_str());
+    }
+    for (std::size_t i = 0; i < description_.controls.size(); ++i) {
+      ROS_INFO("  control %zu: %s", i, description_.controls[i].c_str());
+    }
+    for (const auto& out : description_.outputs) {
+      ROS_INFO("  output %s <- x[%d]", nh_.resolveName(out.first).c_str(), out.second);
+    }
+    ROS_INFO("  state -> %s", state_.getTopic().c_str());
+    if (description_.pose) {
+      ROS_INFO("  odometry -> %s, tf %s -> %s%s", odometry_.getTopic().c_str(), frameId_.c_str(),
+               childFrameId_.c_str(), publishTf_ ? "" : " (tf disabled)");
+    }
+  }
+
+  ros::NodeHandle nh_, pnh_;
+  NodeDescription description_;
+  Core core_;
+  std::vector<ros::Subscriber> subscribers_;
+  std::vector<ros::Publisher> outputs_;
+  ros::Publisher state_, odometry_;
+  ros::Timer timer_;
+  tf2_ros::TransformBroadcaster broadcaster_;
+  std::string frameId_, childFrameId_;
+  bool publishTf_ = true;
+};
+
+}  // namespace sf_filter

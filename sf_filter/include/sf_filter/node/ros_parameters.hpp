@@ -1,0 +1,128 @@
+// Run-time overrides of the configuration header's numeric settings through private ROS
+// parameters. The header's values are the defaults; a parameter of the wrong type or size
+// is refused at start with a message naming it.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Core>
+#include <ros/node_handle.h>
+#include <xmlrpcpp/XmlRpcValue.h>
+
+namespace sf_filter {
+
+/// Thrown for a bad private parameter; the node logs it and exits with status 1.
+class ParameterOverrideError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+namespace detail {
+
+inline double toDouble(const XmlRpc::XmlRpcValue& v, const std::string& name) {
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
+  throw ParameterOverrideError("parameter ~" + name + ": expected numbers, found a non-numeric entry");
+}
+
+}  // namespace detail
+
+/// Reads ~name into `out` (rows x cols) when it is set: a flat row-major list of rows*cols
+/// numbers, or a list of rows lists of cols numbers. Returns whether it was set.
+template <class Derived>
+bool readMatrixParameter(const ros::NodeHandle& pnh, const std::string& name,
+                         Eigen::MatrixBase<Derived>& out) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam(name, value)) return false;
+  const Eigen::Index rows = out.rows(), cols = out.cols();
+  const std::string expected = std::to_string(rows * cols) + " numbers (" + std::to_string(rows) +
+                               "x" + std::to_string(cols) + ", row-major)";
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
+    throw ParameterOverrideError("parameter ~" + name + ": expected a list of " + expected);
+  }
+  Derived result(rows, cols);
+  if (value.size() > 0 && value[0].getType() == XmlRpc::XmlRpcValue::TypeArray) {
+    if (value.size() != rows) {
+      throw ParameterOverrideError("parameter ~" + name + ": expected " + std::to_string(rows) +
+                                   " rows, found " + std::to_string(value.size()));
+    }
+    for (int r = 0; r < value.size(); ++r) {
+      if (value[r].getType() != XmlRpc::XmlRpcValue::TypeArray || value[r].size() != cols) {
+        throw ParameterOverrideError("parameter ~" + name + ": row " + std::to_string(r) +
+                                     " must be a list of " + std::to_string(cols) + " numbers");
+      }
+      for (int c = 0; c < value[r].size(); ++c) result(r, c) = detail::toDouble(value[r][c], name);
+    }
+  } else {
+    if (value.size() != rows * cols) {
+      throw ParameterOverrideError("parameter ~" + name + ": expected " + expected + ", found " +
+                                   std::to_string(value.size()));
+    }
+    for (int k = 0; k < value.size(); ++k) {
+      result(k / cols, k % cols) = detail::toDouble(value[k], name);
+    }
+  }
+  out = result;
+  return true;
+}
+
+/// Reads a scalar ~name into `out` when set; the type must match (an int is accepted for a
+/// double).
+template <class T>
+bool readScalarParameter(const ros::NodeHandle& pnh, const std::string& name, T& out) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam(name, value)) return false;
+  if constexpr (std::is_floating_point_v<T>) {
+    out = static_cast<T>(detail::toDouble(value, name));
+  } else {
+    if (value.getType() != XmlRpc::XmlRpcValue::TypeInt) {
+      throw ParameterOverrideError("parameter ~" + name + ": expected an integer");
+    }
+    const int v = static_cast<int>(value);
+    if (std::is_unsigned_v<T> && v < 0) {
+      throw ParameterOverrideError("parameter ~" + name + ": must not be negative");
+    }
+    out = static_cast<T>(v);
+  }
+  return true;
+}
+
+/// The header's parameters with the private ROS parameters applied. `Parameters` is the
+/// generated sf_config::Parameters; `makeDefaults(period_ms)` evaluates the header's entries
+/// for a period (they may use T).
+template <class Parameters, class MakeDefaults>
+Parameters loadParameters(const ros::NodeHandle& pnh, MakeDefaults makeDefaults,
+                          double headerPeriodMs) {
+  double period = headerPeriodMs;
+  readScalarParameter(pnh, "estimation_period", period);
+  if (!(period > 0.0)) {
+    throw ParameterOverrideError("parameter ~estimation_period: must be a positive number of ms");
+  }
+  Parameters p = makeDefaults(period);
+  readMatrixParameter(pnh, "process_noise_covariance", p.process_noise_covariance);
+  readMatrixParameter(pnh, "measurement_noise_covariance", p.measurement_noise_covariance);
+  readMatrixParameter(pnh, "initial_state", p.initial_state);
+  readMatrixParameter(pnh, "initial_error_covariance", p.initial_error_covariance);
+  readScalarParameter(pnh, "number_of_particles", p.number_of_particles);
+  readScalarParameter(pnh, "random_seed", p.random_seed);
+  readScalarParameter(pnh, "resampling_threshold", p.resampling_threshold);
+  readScalarParameter(pnh, "ukf_alpha", p.ukf_alpha);
+  readScalarParameter(pnh, "ukf_beta", p.ukf_beta);
+  readScalarParameter(pnh, "ukf_kappa", p.ukf_kappa);
+  readScalarParameter(pnh, "window_size", p.window_size);
+  if (pnh.hasParam("weighting_coefficients")) {
+    XmlRpc::XmlRpcValue value;
+    pnh.getParam("weighting_coefficients", value);
+    if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
+      throw ParameterOverrideError("parameter ~weighting_coefficients: expected a list");
+    }
+    p.weighting_coefficients.resize(value.size());
+    for (int k = 0; k < value.size(); ++k) {
+      p.weighting_coefficients(k) = detail::toDouble(value[k], "weighting_coefficients");
+    }
+  }
+  return p;
+}
+
+}  // namespace sf_filter

@@ -1,0 +1,122 @@
+// The fusion node generated from one configuration header. sf_add_filter() compiles this
+// file once per header, with -DSF_CONFIG_HEADER="path/to/header.h".
+#ifndef SF_CONFIG_HEADER
+#error "SF_CONFIG_HEADER is not defined: build fusion nodes with sf_add_filter(<name> <header>)"
+#endif
+#include SF_CONFIG_HEADER
+
+#include <sf_filter/config/configuration.hpp>
+
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include <ros/message_traits.h>
+#include <ros/ros.h>
+
+#include "sf_filter/node/filter_binding.hpp"
+#include "sf_filter/node/fusion_node.hpp"
+#include "sf_filter/node/ros_parameters.hpp"
+
+#ifdef POSE_OUT
+#include <boost/preprocessor/seq/elem.hpp>
+#include <boost/preprocessor/seq/size.hpp>
+static_assert(BOOST_PP_SEQ_SIZE(POSE_OUT) == 3,
+              "POSE_OUT: expected (x index)(y index)(heading index), 3 entries");
+static_assert(BOOST_PP_SEQ_ELEM(0, POSE_OUT) < sf_config::kStateSize &&
+                  BOOST_PP_SEQ_ELEM(1, POSE_OUT) < sf_config::kStateSize &&
+                  BOOST_PP_SEQ_ELEM(2, POSE_OUT) < sf_config::kStateSize,
+              "POSE_OUT: every state index must be < n (the state size)");
+#endif
+
+namespace {
+
+using Node = sf_filter::FusionNode<sf_filter::generated::Filter>;
+
+template <class Message>
+double stampOf(const Message& msg) {
+  if constexpr (ros::message_traits::HasHeader<Message>::value) {
+    return msg.header.stamp.toSec();
+  } else {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+sf_filter::NodeDescription describe() {
+  sf_filter::NodeDescription d;
+  d.method = sf_config::kMethodName;
+  sf_config::forEachInput([&](auto in) {
+    using In = decltype(in);
+    d.inputs.push_back(std::string(In::topic) + " " + std::string(In::field));
+  });
+  sf_config::forEachControl([&](auto in) {
+    using In = decltype(in);
+    d.controls.push_back(std::string(In::topic) + " " + std::string(In::field));
+  });
+  sf_config::forEachOutput([&](auto out) {
+    using Out = decltype(out);
+    d.outputs.emplace_back(std::string(Out::topic), Out::state_index);
+  });
+#ifdef POSE_OUT
+  d.pose = std::array<int, 3>{BOOST_PP_SEQ_ELEM(0, POSE_OUT), BOOST_PP_SEQ_ELEM(1, POSE_OUT),
+                              BOOST_PP_SEQ_ELEM(2, POSE_OUT)};
+#endif
+  return d;
+}
+
+/// One subscription per distinct topic; its callback reads every field used from it.
+void subscribeInputs(Node& node) {
+  sf_config::forEachInput([&](auto owner) {
+    using Owner = decltype(owner);
+    if constexpr (Owner::owns_subscription) {
+      using Message = typename Owner::Message;
+      node.subscribe<Message>(std::string(Owner::topic), [](const Message& msg, Node& n,
+                                                            double now) {
+        sf_config::forEachInput([&](auto in) {
+          using In = decltype(in);
+          if constexpr (In::first_same_topic == Owner::index) {
+            std::optional<double> variance;
+            if constexpr (In::has_variance) variance = In::variance(msg);
+            n.measurement(In::index, now, In::value(msg), variance, stampOf(msg));
+          }
+        });
+      });
+    }
+  });
+  sf_config::forEachControl([&](auto owner) {
+    using Owner = decltype(owner);
+    if constexpr (Owner::owns_subscription) {
+      using Message = typename Owner::Message;
+      node.subscribe<Message>(std::string(Owner::topic), [](const Message& msg, Node& n, double) {
+        sf_config::forEachControl([&](auto in) {
+          using In = decltype(in);
+          if constexpr (In::first_same_topic == Owner::index) n.control(In::index, In::value(msg));
+        });
+      });
+    }
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "sf_filter");
+  ros::NodeHandle nh;
+  ros::NodeHandle pnh("~");
+  std::optional<Node> node;
+  try {
+    const auto parameters = sf_filter::loadParameters<sf_config::Parameters>(
+        pnh, [](double periodMs) { return sf_config::defaultParameters(periodMs); },
+        sf_config::kEstimationPeriodMs);
+    node.emplace(nh, pnh, sf_filter::generated::makeFilter(parameters),
+                 parameters.estimation_period_ms / 1000.0, describe());
+  } catch (const std::exception& e) {
+    ROS_FATAL("%s: refusing to start: %s", ros::this_node::getName().c_str(), e.what());
+    return EXIT_FAILURE;
+  }
+  subscribeInputs(*node);
+  node->start();
+  ros::spin();
+  return EXIT_SUCCESS;
+}

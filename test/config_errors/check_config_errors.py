@@ -1,0 +1,166 @@
+#!/usr/bin/python3
+"""Checks the compile-time validation of the sf_filter configuration headers.
+
+Every *.h file of this directory (except fake_msgs.h) is a configuration header whose first
+lines say what compiling it must give:
+
+  // EXPECT: OK                  must compile without errors and without warnings
+  // EXPECT: WARNING <text>      must compile; the output must contain <text>
+  // EXPECT: <text>              must fail; the FIRST error printed must contain <text>
+                                 (several EXPECT lines: it must contain each of them)
+  // MAX_ERRORS: <k>             (optional) at most k errors in total, default 1
+  // REQUIRES: <path>            (optional, repeatable) skip the case unless <path> exists
+
+Each header is compiled like the node's generated translation unit:
+
+  g++ -std=c++17 -fsyntax-only -Wall -Wextra -I<sf_filter/include> -I<eigen> -I<this dir>
+      -include <header> config_tu.cpp
+
+The error that deliberately ends a compilation after a fatal configuration error
+("SF_CONFIGURATION_ERROR__...: No such file or directory") is not counted.
+
+Usage: check_config_errors.py [--cxx g++] [--eigen /usr/include/eigen3] [-j N] [-v] [header ...]
+Prints one line per case and "N passed, N failed"; exits 1 on any failure.
+"""
+
+import argparse
+import concurrent.futures
+import glob
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+INCLUDE = os.path.join(REPO, "sf_filter", "include")
+TU = os.path.join(HERE, "config_tu.cpp")
+STOP_MARKER = "SF_CONFIGURATION_ERROR__"
+ERROR_RE = re.compile(r"(?:^|: )(?:fatal )?error: ")
+WARNING_RE = re.compile(r"(?:^|: )warning: ")
+
+
+def read_directives(path):
+    expects, max_errors, requires = [], 1, []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            line = line.strip()
+            if not line.startswith("//"):
+                break
+            body = line[2:].strip()
+            if body.startswith("EXPECT:"):
+                expects.append(body[len("EXPECT:"):].strip())
+            elif body.startswith("MAX_ERRORS:"):
+                max_errors = int(body[len("MAX_ERRORS:"):].strip())
+            elif body.startswith("REQUIRES:"):
+                requires.append(body[len("REQUIRES:"):].strip())
+    return expects, max_errors, requires
+
+
+def compile_header(cxx, eigen, header):
+    cmd = [cxx, "-std=c++17", "-fsyntax-only", "-Wall", "-Wextra", "-fdiagnostics-color=never",
+           "-I" + INCLUDE, "-I" + eigen, "-I" + HERE, "-include", header, TU]
+    env = dict(os.environ, LC_ALL="C", LANG="C")  # plain ASCII quotes in the diagnostics
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, env=env)
+    return proc.returncode, proc.stdout, cmd
+
+
+def check(cxx, eigen, header, verbose):
+    name = os.path.basename(header)
+    expects, max_errors, requires = read_directives(header)
+    expect = expects[0] if expects else None
+    if expect is None:
+        return None, "FAIL %s: no '// EXPECT:' line" % name
+    missing = [r for r in requires if not os.path.exists(r)]
+    if missing:
+        return True, "SKIP %s (missing %s)" % (name, ", ".join(missing))
+    rc, out, cmd = compile_header(cxx, eigen, header)
+    lines = out.splitlines()
+    errors = [l for l in lines if ERROR_RE.search(l) and STOP_MARKER not in l]
+    warnings = [l for l in lines if WARNING_RE.search(l)]
+    detail = ""
+    if verbose:
+        detail = "\n    $ " + " ".join(cmd) + "\n" + "\n".join("    " + l for l in lines)
+
+    if expect == "OK":
+        if rc != 0:
+            first = errors[0] if errors else "exit code %d" % rc
+            return False, "FAIL %s: expected to compile, got: %s%s" % (name, first, detail)
+        if warnings:
+            return False, "FAIL %s: expected no warnings, got: %s%s" % (name, warnings[0], detail)
+        return True, "PASS %s (compiles)%s" % (name, detail)
+
+    if expect.startswith("WARNING "):
+        text = expect[len("WARNING "):]
+        if rc != 0:
+            first = errors[0] if errors else "exit code %d" % rc
+            return False, "FAIL %s: expected to compile, got: %s%s" % (name, first, detail)
+        if text not in out:
+            return False, "FAIL %s: warning '%s' not printed%s" % (name, text, detail)
+        return True, "PASS %s (warns: %s)%s" % (name, text, detail)
+
+    expect = "' and '".join(expects)
+    if rc == 0:
+        return False, "FAIL %s: expected an error containing '%s', but it compiled%s" % (
+            name, expect, detail)
+    if not errors:
+        return False, "FAIL %s: compiler failed without an error line%s" % (name, detail)
+    if not all(e in errors[0] for e in expects):
+        later = any(all(e in error for e in expects) for error in errors[1:])
+        where = "a later error" if later else "no error"
+        return False, "FAIL %s: first error is\n    %s\n  expected it to contain '%s' (%s has it)%s" % (
+            name, errors[0], expect, where, detail)
+    if len(errors) > max_errors:
+        return False, "FAIL %s: %d errors, at most %d expected; the second is\n    %s%s" % (
+            name, len(errors), max_errors, errors[1], detail)
+    return True, "PASS %s (%d error%s)%s" % (name, len(errors), "" if len(errors) == 1 else "s",
+                                             detail)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--cxx", default=os.environ.get("CXX", "g++"))
+    parser.add_argument("--eigen", default="/usr/include/eigen3")
+    parser.add_argument("-v", "--verbose", action="store_true", help="print compiler output")
+    parser.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1,
+                        help="parallel compilations (default: number of CPUs)")
+    parser.add_argument("--junit", help="also write the results as a JUnit XML file")
+    parser.add_argument("headers", nargs="*", help="headers to check (default: all *.h here)")
+    args = parser.parse_args()
+
+    headers = args.headers or sorted(
+        h for h in glob.glob(os.path.join(HERE, "*.h")) if os.path.basename(h) != "fake_msgs.h")
+    passed = failed = 0
+    cases = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        results = pool.map(
+            lambda h: check(args.cxx, args.eigen, os.path.abspath(h), args.verbose), headers)
+        for header, (ok, message) in zip(headers, results):
+            print(message, flush=True)
+            cases.append((os.path.basename(header), ok, message))
+            if ok:
+                passed += 1
+            else:
+                failed += 1
+    print("%d passed, %d failed" % (passed, failed))
+    if args.junit:
+        write_junit(args.junit, cases)
+    return 1 if failed else 0
+
+
+def write_junit(path, cases):
+    """One testcase per header, so catkin_test_results counts them like gtest cases."""
+    import xml.etree.ElementTree as ET
+    suite = ET.Element("testsuite", name="config_errors", tests=str(len(cases)),
+                       failures=str(sum(1 for c in cases if not c[1])), errors="0", skipped="0")
+    for name, ok, message in cases:
+        case = ET.SubElement(suite, "testcase", classname="config_errors", name=name)
+        if not ok:
+            ET.SubElement(case, "failure", message=message.splitlines()[0]).text = message
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    ET.ElementTree(suite).write(path, encoding="utf-8", xml_declaration=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

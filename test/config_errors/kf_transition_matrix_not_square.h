@@ -1,0 +1,14 @@
+// EXPECT: STATE_TRANSITION_MATRIX: row 1 has 3 entries, expected 2
+// Mistake: A not square
+#include "fake_msgs.h"
+
+#define METHOD KALMAN_FILTER
+#define STATE_TRANSITION_MATRIX ((1)(T))((0)(1)(0))
+#define OBSERVATION_MATRIX ((1)(0))((0)(1))
+#define PROCESS_NOISE_COVARIANCE ((0.01)(0))((0)(0.1))
+#define MEASUREMENT_NOISE_COVARIANCE ((0.5)(0))((0)(0.2))
+#define INITIAL_STATE (0)(0)
+#define TOPICS_IN \
+  ((velocity_wheel_left)(std_msgs::Float32)(data)) \
+  ((acceleration)(geometry_msgs::Vector3Stamped)(vector.y))
+#define TOPICS_OUT ((velocity)(0))((acceleration_estimate)(1))

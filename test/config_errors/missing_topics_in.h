@@ -1,0 +1,11 @@
+// EXPECT: TOPICS_IN is not defined
+// Mistake: no inputs
+#include "fake_msgs.h"
+
+#define METHOD EXTENDED_KALMAN_FILTER
+#define STATE_TRANSITION_MODEL (x[0] + x[1] * T)(x[1])
+#define OBSERVATION_MODEL (x[0])(x[1])
+#define PROCESS_NOISE_COVARIANCE ((0.01)(0))((0)(0.1))
+#define MEASUREMENT_NOISE_COVARIANCE ((0.5)(0))((0)(0.2))
+#define INITIAL_STATE (0)(0)
+#define TOPICS_OUT ((velocity)(0))((acceleration_estimate)(1))

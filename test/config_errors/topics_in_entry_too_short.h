@@ -1,0 +1,14 @@
+// EXPECT: TOPICS_IN: entry 1 has 2 elements, expected ((topic)(type)(field)) or ((topic)(type)(field)(variance_field))
+// Mistake: input without field
+#include "fake_msgs.h"
+
+#define METHOD EXTENDED_KALMAN_FILTER
+#define STATE_TRANSITION_MODEL (x[0] + x[1] * T)(x[1])
+#define OBSERVATION_MODEL (x[0])(x[1])
+#define PROCESS_NOISE_COVARIANCE ((0.01)(0))((0)(0.1))
+#define MEASUREMENT_NOISE_COVARIANCE ((0.5)(0))((0)(0.2))
+#define INITIAL_STATE (0)(0)
+#define TOPICS_IN \
+  ((velocity_wheel_left)(std_msgs::Float32)(data)) \
+  ((acceleration)(geometry_msgs::Vector3Stamped))
+#define TOPICS_OUT ((velocity)(0))((acceleration_estimate)(1))

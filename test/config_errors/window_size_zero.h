@@ -1,0 +1,10 @@
+// EXPECT: WINDOW_SIZE: expected a positive integer, found '0'
+// Mistake: empty window
+#include "fake_msgs.h"
+
+#define METHOD MOVING_AVERAGE
+#define WINDOW_SIZE 0
+#define TOPICS_IN \
+  ((velocity_wheel_left)(std_msgs::Float32)(data)) \
+  ((velocity_wheel_right)(std_msgs::Float32)(data))
+#define TOPICS_OUT ((velocity_left_avg)(0))((velocity_right_avg)(1))
