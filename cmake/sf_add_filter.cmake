@@ -20,6 +20,9 @@ function(sf_add_filter name header)
   endif()
   add_executable(${name} "${SF_PKG_FILTER_MAIN}")
   target_compile_definitions(${name} PRIVATE SF_CONFIG_HEADER="${_header}")
+  # Configuration mistakes are reported by #error/static_assert naming the macro; the
+  # macro-expansion backtrace under each would only bury that message.
+  target_compile_options(${name} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ftrack-macro-expansion=0>)
   target_include_directories(${name} PRIVATE ${catkin_INCLUDE_DIRS} ${sf_pkg_INCLUDE_DIRS})
   target_link_libraries(${name} ${catkin_LIBRARIES} ${sf_pkg_LIBRARIES})
   if(TARGET sf_estimation)

@@ -302,7 +302,8 @@ TEST(KalmanFilterControl, NoControlsWithZeroColumnB) {
   // Starting from x = 0, P = I the filter equals the textbook reference with B u = 0.
   ReferenceKalman ref{Eigen::MatrixXd(train.transitionMatrix()), Eigen::MatrixXd(2, 0),
                       Eigen::MatrixXd(train.observationMatrix()), Eigen::MatrixXd(Q),
-                      Eigen::MatrixXd(R), Eigen::VectorXd::Zero(2), Eigen::MatrixXd::Identity(2, 2)};
+                      Eigen::MatrixXd(R), Eigen::VectorXd::Zero(2),
+                      Eigen::MatrixXd::Identity(2, 2)};
   for (int k = 0; k < 20; ++k) {
     const Eigen::Vector2d z(0.2 * k, 2.0 + 0.1 * (k % 4));
     ref.step(Eigen::VectorXd(0), z);

@@ -159,8 +159,8 @@ TEST(NumericsOverflow, HugeCovarianceGivesNumericalErrorNotNan) {
 // ---------------------------------------------------------------------------------------------
 
 struct CovarianceHealth {
-  double asymmetry = 0.0;         // max |P - P^T|
-  double negativeEigenvalue = 0;  // min over steps of lambda_min(P) / lambda_max(P)
+  double asymmetry = 0.0;  // max |P - P^T|
+  double minEigenvalueRatio = std::numeric_limits<double>::infinity();  // lambda_min / lambda_max
   bool finite = true;
 };
 
@@ -185,7 +185,7 @@ CovarianceHealth runNav3Ctrl(Filter& filter, int steps, std::uint64_t seed) {
     health.asymmetry = std::max(health.asymmetry, (P - P.transpose()).cwiseAbs().maxCoeff());
     if (k % 100 == 99) {
       const Vector<7> eig = Eigen::SelfAdjointEigenSolver<Matrix<7, 7>>(P).eigenvalues();
-      health.negativeEigenvalue = std::min(health.negativeEigenvalue, eig(0) / eig(6));
+      health.minEigenvalueRatio = std::min(health.minEigenvalueRatio, eig(0) / eig(6));
     }
   }
   return health;
@@ -204,14 +204,14 @@ TEST(NumericsLongRun, Nav3CtrlCovarianceStaysSymmetricOver10000Steps) {
   const CovarianceHealth u = runNav3Ctrl(ukf, 10000, 71);
   const CovarianceHealth u1 = runNav3Ctrl(ukf1, 10000, 71);
   std::cout << "[ measured ] 10000 nav3ctrl steps: EKF asymmetry " << e.asymmetry
-            << ", min eig ratio " << e.negativeEigenvalue << "; UKF default " << u.asymmetry
-            << ", " << u.negativeEigenvalue << "; UKF alpha=1 " << u1.asymmetry << ", "
-            << u1.negativeEigenvalue << "\n";
+            << ", min eig ratio " << e.minEigenvalueRatio << "; UKF default " << u.asymmetry
+            << ", " << u.minEigenvalueRatio << "; UKF alpha=1 " << u1.asymmetry << ", "
+            << u1.minEigenvalueRatio << "\n";
   for (const CovarianceHealth& h : {e, u, u1}) {
     EXPECT_TRUE(h.finite);
     EXPECT_EQ(h.asymmetry, 0.0);  // symmetric to the last bit
     // Positive semi-definite up to rounding relative to the largest eigenvalue.
-    EXPECT_GE(h.negativeEigenvalue, -1e-12);
+    EXPECT_GE(h.minEigenvalueRatio, -1e-12);
   }
 }
 

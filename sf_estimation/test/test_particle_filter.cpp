@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/LU>
 #include <gtest/gtest.h>
 
 #include "filter_test_utils.hpp"
@@ -64,12 +65,49 @@ struct RandomWalk {
 // Agreement with the Kalman filter.
 // ---------------------------------------------------------------------------------------------
 
+/// vech index pairs of a symmetric 2x2 matrix: (0,0), (0,1), (1,1).
+constexpr int kRow[3] = {0, 0, 1};
+constexpr int kCol[3] = {0, 1, 1};
+
+/// Covariance of vech(S - P) for the sample covariance S of n Gaussian draws with covariance
+/// P (Wishart): Cov(S_ij, S_kl) = (P_ik P_jl + P_il P_jk) / n; returned for n = 1.
+Matrix<3, 3> sampleCovarianceSpread(const Matrix<2, 2>& P) {
+  Matrix<3, 3> out;
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) {
+      out(a, b) = P(kRow[a], kRow[b]) * P(kCol[a], kCol[b]) +
+                  P(kRow[a], kCol[b]) * P(kCol[a], kRow[b]);
+    }
+  }
+  return out;
+}
+
+/// The linear map vech(D) -> vech(F D F^T) for symmetric D.
+Matrix<3, 3> congruenceMap(const Matrix<2, 2>& F) {
+  Matrix<3, 3> G;
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) {
+      const int k = kRow[b], l = kCol[b];
+      G(a, b) = F(kRow[a], k) * F(kCol[a], l) + (k != l ? F(kRow[a], l) * F(kCol[a], k) : 0.0);
+    }
+  }
+  return G;
+}
+
 TEST(ParticleFilterLinearGaussian, MeanMatchesKalmanFilterWithinMonteCarloError) {
-  // On a linear Gaussian model the exact posterior is the Kalman filter's N(x, P). The weighted
-  // mean of the particles estimates x with standard error ~ sqrt(P_ii / N_eff), N_eff the
-  // effective sample size of the step. Errors inherited from earlier steps (resampling noise)
-  // are damped by the correction but add to that, so the bound is 5 standard errors; in the
-  // same way the variance estimate's relative standard error is ~ sqrt(2 / N_eff).
+  // On a linear Gaussian model the exact posterior is the Kalman filter's N(x, P).
+  //
+  // Tolerance. In one step the weighted particle mean is a self-normalised importance
+  // sampling estimate of x with variance ~ P / N_eff (N_eff = effective sample size of the
+  // step), and the weighted sample covariance estimates P with the Wishart spread
+  // Cov(P_ij, P_kl) ~ (P_ik P_jl + P_il P_jk) / N_eff. An error e of the particle set's mean
+  // before a step is carried into the next estimate like any prior error in a Kalman filter,
+  // e -> F e with F = (I - K H) A, and resampling adds the spread of N draws (P / N). So the
+  // Monte-Carlo variance of the estimate propagates as
+  //   V_t = F V_{t-1} F^T + P_t / N_eff,t  (+ P_t / N after resampling),   V_0 = P0 / N
+  // and the same with the congruence map for the covariance error. The test requires the PF
+  // to be within 5 standard deviations sqrt(V_ii) (a single-step bound sqrt(P / N_eff) ignores
+  // the inherited error and is exceeded by a factor ~2 after a few steps).
   const MovingTrain train;
   Matrix<2, 2> Q;
   Q << 0.02, 0.0, 0.0, 0.05;
@@ -78,39 +116,53 @@ TEST(ParticleFilterLinearGaussian, MeanMatchesKalmanFilterWithinMonteCarloError)
   const Vector<2> x0(1.0, 0.3);
   const Matrix<2, 2> P0 = Vector<2>(0.5, 0.2).asDiagonal();
   const Index N = 20000;
-  KalmanFilter<2, 2> kf(train.transitionMatrix(), train.controlMatrix(),
-                        train.observationMatrix(), Q, R, x0, P0);
+  const double n = static_cast<double>(N);
+  const Matrix<2, 2> A = train.transitionMatrix();
+  KalmanFilter<2, 2> kf(A, train.controlMatrix(), train.observationMatrix(), Q, R, x0, P0);
   ParticleFilterSIR<MovingTrain> pf(train, Q, R, x0, P0, parameters(N, 2024));
 
-  const auto run = sftest::simulateLinear<2, 2, 0>(train.transitionMatrix(),
-                                                   train.controlMatrix(),
+  const auto run = sftest::simulateLinear<2, 2, 0>(A, train.controlMatrix(),
                                                    train.observationMatrix(), Q, R, x0, 30, 51,
-                                                   0.2, 8, 0.0);
-  double worstMean = 0.0, worstVariance = 0.0, maxError = 0.0, minEss = double(N);
+                                                   0.0, 0, 0.0);
+  Matrix<2, 2> V = P0 / n;
+  Matrix<3, 3> W = sampleCovarianceSpread(P0) / n;
+  double worstMean = 0.0, worstVariance = 0.0, maxError = 0.0, minEss = n, maxSe = 0.0;
   int resampled = 0;
-  for (const auto& step : run) {
-    kf.estimate(step.z);
-    pf.estimate(step.z);
+  for (std::size_t k = 0; k < run.size(); ++k) {
+    // Gain of this step (H = I): K = P- (P- + R)^-1, F = (I - K) A.
+    const Matrix<2, 2> Pprior = A * kf.covariance() * A.transpose() + Q;
+    const Matrix<2, 2> K = Pprior * (Pprior + R).inverse();
+    const Matrix<2, 2> F = (Matrix<2, 2>::Identity() - K) * A;
+    kf.estimate(run[k].z);
+    pf.estimate(run[k].z);
+    const Matrix<2, 2> P = kf.covariance();
     const double ess = pf.effectiveSampleSize();
+    const double resampling = pf.resampledLastStep() ? 1.0 / n : 0.0;
+    V = F * V * F.transpose() + P * (1.0 / ess + resampling);
+    const Matrix<3, 3> G = congruenceMap(F);
+    W = G * W * G.transpose() + sampleCovarianceSpread(P) * (1.0 / ess + resampling);
     minEss = std::min(minEss, ess);
     resampled += pf.resampledLastStep() ? 1 : 0;
     for (Index i = 0; i < 2; ++i) {
-      const double P = kf.covariance()(i, i);
+      const int vech = i == 0 ? 0 : 2;
+      const double meanSd = std::sqrt(V(i, i)), varianceSd = std::sqrt(W(vech, vech));
       const double meanError = std::abs(pf.state()(i) - kf.state()(i));
-      const double meanSe = std::sqrt(P / ess);
-      const double varianceSe = P * std::sqrt(2.0 / ess);
-      worstMean = std::max(worstMean, meanError / meanSe);
-      worstVariance = std::max(worstVariance, std::abs(pf.covariance()(i, i) - P) / varianceSe);
+      const double varianceError = std::abs(pf.covariance()(i, i) - P(i, i));
+      worstMean = std::max(worstMean, meanError / meanSd);
+      worstVariance = std::max(worstVariance, varianceError / varianceSd);
       maxError = std::max(maxError, meanError);
-      ASSERT_LE(meanError, 5.0 * meanSe) << "state " << i;
-      ASSERT_LE(std::abs(pf.covariance()(i, i) - P), 5.0 * varianceSe) << "variance " << i;
+      maxSe = std::max(maxSe, meanSd);
+      ASSERT_LE(meanError, 5.0 * meanSd) << "step " << k << ", state " << i;
+      ASSERT_LE(varianceError, 5.0 * varianceSd) << "step " << k << ", variance " << i;
     }
   }
   std::cout << "[ measured ] PF (N=20000) vs KF, moving train, 30 steps: max |mean error| "
-            << maxError << ", max error / standard error " << worstMean
-            << ", max variance error / standard error " << worstVariance << ", min N_eff "
-            << minEss << ", resampled in " << resampled << " steps\n";
+            << maxError << " (largest standard deviation " << maxSe
+            << "), max error / sd " << worstMean << ", max variance error / sd "
+            << worstVariance << ", min N_eff " << minEss << ", resampled in " << resampled
+            << " steps\n";
   EXPECT_GT(resampled, 0);
+  EXPECT_GT(minEss, 1000.0);  // the Gaussian approximations above need a large N_eff
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -11,11 +11,14 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <ros/message_traits.h>
 #include <ros/ros.h>
 
 #include "sf_filter/node/filter_binding.hpp"
+#include "sf_filter/node/frame_aligner.hpp"
+#include "sf_filter/node/frame_alignment_config.hpp"
 #include "sf_filter/node/fusion_node.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
 
@@ -43,12 +46,31 @@ double stampOf(const Message& msg) {
   }
 }
 
-sf_filter::NodeDescription describe() {
-  sf_filter::NodeDescription d;
-  d.method = sf_config::kMethodName;
+/// "topic field" per input; "topic member" for a FRAME_ALIGNED_INPUTS one.
+std::vector<std::string> inputNames() {
+  std::vector<std::string> names;
   sf_config::forEachInput([&](auto in) {
     using In = decltype(in);
-    d.inputs.push_back(std::string(In::topic) + " " + std::string(In::field));
+    using Align = sf_config::FrameAlignment<In::index>;
+    if constexpr (Align::aligned) {
+      names.push_back(std::string(In::topic) + " " + std::string(Align::member));
+    } else {
+      names.push_back(std::string(In::topic) + " " + std::string(In::field));
+    }
+  });
+  return names;
+}
+
+sf_filter::NodeDescription describe(const sf_filter::FrameAligner* aligner) {
+  sf_filter::NodeDescription d;
+  d.method = sf_config::kMethodName;
+  d.inputs = inputNames();
+  sf_config::forEachInput([&](auto in) {
+    using Align = sf_config::FrameAlignment<decltype(in)::index>;
+    if constexpr (Align::aligned) {
+      d.inputs[Align::input_index] +=
+          " rotated into " + aligner->baseFrame() + ", " + std::string(Align::axis_name);
+    }
   });
   sf_config::forEachControl([&](auto in) {
     using In = decltype(in);
@@ -65,20 +87,43 @@ sf_filter::NodeDescription describe() {
   return d;
 }
 
-/// One subscription per distinct topic; its callback reads every field used from it.
-void subscribeInputs(Node& node) {
+/// Component Align::axis of the aligned input's vector in the base frame; nullopt if it cannot
+/// be rotated (the aligner has counted and reported it).
+template <class Align, class Message>
+std::optional<double> alignedValue(sf_filter::FrameAligner& aligner, const Message& msg) {
+  if constexpr (Align::valid) {
+    return aligner.align(Align::input_index, msg.header.frame_id, msg.header.stamp,
+                         Align::vector(msg), Align::axis);
+  } else {
+    return std::nullopt;  // not built: a static_assert of the configuration reported why
+  }
+}
+
+/// One subscription per distinct topic; its callback reads every field used from it. The
+/// FRAME_ALIGNED_INPUTS read a component of a vector rotated into the base frame instead.
+void subscribeInputs(Node& node, sf_filter::FrameAligner* aligner) {
   sf_config::forEachInput([&](auto owner) {
     using Owner = decltype(owner);
     if constexpr (Owner::owns_subscription) {
       using Message = typename Owner::Message;
-      node.subscribe<Message>(std::string(Owner::topic), [](const Message& msg, Node& n,
-                                                            double now) {
+      node.subscribe<Message>(std::string(Owner::topic), [aligner](const Message& msg, Node& n,
+                                                                   double now) {
         sf_config::forEachInput([&](auto in) {
           using In = decltype(in);
+          using Align = sf_config::FrameAlignment<In::index>;
           if constexpr (In::first_same_topic == Owner::index) {
             std::optional<double> variance;
             if constexpr (In::has_variance) variance = In::variance(msg);
-            n.measurement(In::index, now, In::value(msg), variance, stampOf(msg));
+            double value = 0.0;
+            if constexpr (Align::aligned) {
+              const std::optional<double> rotated = alignedValue<Align>(*aligner, msg);
+              if (!rotated) return;  // dropped and counted by the aligner
+              value = *rotated;
+            } else {
+              static_cast<void>(aligner);
+              value = In::value(msg);
+            }
+            n.measurement(In::index, now, value, variance, stampOf(msg));
           }
         });
       });
@@ -104,18 +149,22 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "sf_filter");
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
+  std::optional<sf_filter::FrameAligner> aligner;  // outlives the node's subscriptions
   std::optional<Node> node;
   try {
+    if constexpr (sf_config::kHasFrameAlignment) {
+      aligner.emplace(pnh, std::string(sf_config::kBaseFrame), inputNames());
+    }
     const auto parameters = sf_filter::loadParameters<sf_config::Parameters>(
         pnh, [](double periodMs) { return sf_config::defaultParameters(periodMs); },
         sf_config::kEstimationPeriodMs);
     node.emplace(nh, pnh, sf_filter::generated::makeFilter(parameters),
-                 parameters.estimation_period_ms / 1000.0, describe());
+                 parameters.estimation_period_ms / 1000.0, describe(aligner ? &*aligner : nullptr));
   } catch (const std::exception& e) {
     ROS_FATAL("%s: refusing to start: %s", ros::this_node::getName().c_str(), e.what());
     return EXIT_FAILURE;
   }
-  subscribeInputs(*node);
+  subscribeInputs(*node, aligner ? &*aligner : nullptr);
   node->start();
   ros::spin();
   return EXIT_SUCCESS;

@@ -103,6 +103,7 @@ class ParticleFilterSIR {
     particles_.noalias() = root * noise_;
     particles_.colwise() += x0_;
     logWeights_.setConstant(-std::log(static_cast<double>(particleCount())));
+    updateWeights();
     updateMoments();
     effectiveSampleSize_ = static_cast<double>(particleCount());
     resampled_ = false;
@@ -131,18 +132,20 @@ class ParticleFilterSIR {
  private:
   void step(const Measurement<M>& z) {
     const Index n = stateSize(), p = particleCount();
-    // Sample: x_i' = f(x_i, u) + w_i, w_i ~ N(0, Q).
-    probability::fillStandardNormal(engine_, noise_);
-    scratch_.noalias() = noiseRoot_ * noise_;
-    Vector<N> in(n), out(n);
+    // Sample: x_i' = f(x_i, u) + w_i, w_i ~ N(0, Q). One particle at a time, so that its
+    // values stay in registers; the normals are drawn in the same order as when filling a
+    // whole n x p matrix column by column.
+    Vector<N> in(n), out(n), noise(n);
     for (Index i = 0; i < p; ++i) {
       in = particles_.col(i);
       model_.transition(in, u_, out);
+      probability::fillStandardNormal(engine_, noise);
+      scratch_.col(i).noalias() = noiseRoot_ * noise;
       scratch_.col(i) += out;
-    }
-    if (!scratch_.allFinite()) {
-      throw NumericalError("ParticleFilterSIR: the state transition produced a non-finite "
-                           "particle; step rejected");
+      if (!scratch_.col(i).allFinite()) {
+        throw NumericalError("ParticleFilterSIR: the state transition produced a non-finite "
+                             "particle; step rejected");
+      }
     }
     // Weight: log w_i += log N(z; h(x_i), R) over the present entries.
     newLogWeights_ = logWeights_;
@@ -155,7 +158,7 @@ class ParticleFilterSIR {
 
     particles_.swap(scratch_);
     logWeights_.swap(newLogWeights_);
-    weights_ = logWeights_.array().exp();
+    updateWeights();
     effectiveSampleSize_ = 1.0 / weights_.squaredNorm();
     resampled_ = effectiveSampleSize_ < params_.resamplingThreshold * static_cast<double>(p);
     if (resampled_) resample();
@@ -173,13 +176,14 @@ class ParticleFilterSIR {
       }
       noise = &maskedNoise_;
     }
+    const bool complete = z.availableCount() == m;
     Vector<N> in(stateSize());
     Vector<M> expected(m), residual(m);
     for (Index i = 0; i < p; ++i) {
       in = scratch_.col(i);  // the freshly sampled particles, not yet committed
       model_.observation(in, expected);
       residual = z.value - expected;
-      for (Index j = 0; j < m; ++j) {
+      for (Index j = 0; !complete && j < m; ++j) {
         if (!z.available(j)) residual(j) = 0.0;
       }
       noise->matrixL().solveInPlace(residual);
@@ -202,16 +206,34 @@ class ParticleFilterSIR {
     }
     particles_.swap(scratch_);
     logWeights_.setConstant(-std::log(static_cast<double>(p)));
-    weights_.setConstant(step);
+    updateWeights();
   }
 
+  /// weights_ = exp(logWeights_), except that weights below e^-700 are exactly zero. Such a
+  /// weight cannot change any sum the filter forms (the largest weight is at least 1/p), and
+  /// computing it would yield a denormal number (Eigen's exp returns about 5.6e-309 for any
+  /// argument below -709), on which x86 arithmetic is many times slower: with an accurate
+  /// sensor most particles are in that range.
+  void updateWeights() {
+    constexpr double kLogFloor = -700.0;
+    weights_ = logWeights_.array().max(kLogFloor).exp();
+    for (Index i = 0; i < weights_.size(); ++i) {
+      if (logWeights_(i) < kLogFloor) weights_(i) = 0.0;
+    }
+  }
+
+  /// Weighted mean and covariance of the particles; weights_ must be up to date.
   void updateMoments() {
-    weights_ = logWeights_.array().exp();
     state_.noalias() = particles_ * weights_;
-    // Columns scaled by sqrt(w_i) make the weighted covariance one product without temporaries.
-    scratch_ = particles_.colwise() - state_;
-    for (Index i = 0; i < scratch_.cols(); ++i) scratch_.col(i) *= std::sqrt(weights_(i));
-    covariance_.noalias() = scratch_ * scratch_.transpose();
+    // sum_i w_i d_i d_i^T, one small outer product per particle: cheaper than one n x p x n
+    // matrix product, which needs the deviations scaled and stored first.
+    Vector<N> deviation(stateSize()), weighted(stateSize());
+    covariance_.setZero();
+    for (Index i = 0; i < particles_.cols(); ++i) {
+      deviation = particles_.col(i) - state_;
+      weighted = weights_(i) * deviation;
+      covariance_.noalias() += weighted * deviation.transpose();
+    }
     symmetrize(covariance_);
   }
 

@@ -53,7 +53,7 @@ class UnscentedTransform {
     const Matrix<N, N> scaled = (static_cast<double>(n_) + lambda_) * P;
     Matrix<N, N> root = scaled;
     if (probability::choleskyInPlace(root)) {
-      root.template triangularView<Eigen::StrictlyUpper>().setZero();
+      for (Index col = 1; col < n_; ++col) root.col(col).head(col).setZero();
     } else {
       // Singular but valid covariances (a state known exactly) have no Cholesky factor; the
       // LDLT-based root handles them and throws NumericalError for indefinite ones.
@@ -63,8 +63,9 @@ class UnscentedTransform {
     }
     points.resize(n_, 2 * n_ + 1);
     points.col(0) = mean;
-    points.block(0, 1, n_, n_) = root.colwise() + mean;
-    points.block(0, 1 + n_, n_, n_) = (-root).colwise() + mean;
+    // Fixed-size column blocks when N is known: a run-time-sized block is several times slower.
+    points.template middleCols<N>(1, n_) = root.colwise() + mean;
+    points.template middleCols<N>(1 + n_, n_) = (-root).colwise() + mean;
   }
 
   template <int Rows>
@@ -76,13 +77,27 @@ class UnscentedTransform {
   template <int RowsA, int RowsB>
   void crossCovariance(const Points<RowsA>& a, const Vector<RowsA>& aMean, const Points<RowsB>& b,
                        const Vector<RowsB>& bMean, Matrix<RowsA, RowsB>& result) const {
-    const Points<RowsA> weighted = (a.colwise() - aMean) * covarianceWeights_.asDiagonal();
-    const Points<RowsB> db = b.colwise() - bMean;
-    if constexpr (N != Dynamic) {
-      // Coefficient-wise: from 2n+1 >= 8 points on, Eigen would pick its blocked GEMM, whose
-      // packing costs more than the whole product at fixed (small) sizes.
-      result.noalias() = weighted.lazyProduct(db.transpose());
+    if constexpr (N != Dynamic && RowsA != Dynamic && RowsB != Dynamic) {
+      // At fixed sizes each entry is one dot product over the points, of deviations stored
+      // transposed so that the dot runs over contiguous memory. As one matrix product Eigen
+      // would pick its blocked GEMM from 2n+1 >= 8 points on, whose packing costs more than
+      // the arithmetic. With the same points on both sides the result is a covariance:
+      // symmetric, so only its lower triangle is computed.
+      using Deviations = Eigen::Matrix<double, PointCount, RowsA>;
+      const Deviations da = (a.colwise() - aMean).transpose();
+      const Eigen::Matrix<double, PointCount, RowsB> weightedDb =
+          covarianceWeights_.asDiagonal() * (b.colwise() - bMean).transpose();
+      bool symmetric = false;
+      if constexpr (RowsA == RowsB) symmetric = &a == &b && &aMean == &bMean;
+      for (Index j = 0; j < result.cols(); ++j) {
+        for (Index i = symmetric ? j : 0; i < result.rows(); ++i) {
+          result(i, j) = da.col(i).dot(weightedDb.col(j));
+          if (symmetric) result(j, i) = result(i, j);
+        }
+      }
     } else {
+      const Points<RowsA> weighted = (a.colwise() - aMean) * covarianceWeights_.asDiagonal();
+      const Points<RowsB> db = b.colwise() - bMean;
       result.noalias() = weighted * db.transpose();
     }
   }

@@ -55,7 +55,10 @@ double logSumExp(const Eigen::MatrixBase<Derived>& v) {
   if (v.hasNaN()) return std::numeric_limits<double>::quiet_NaN();
   const double largest = v.maxCoeff();
   if (!std::isfinite(largest)) return largest;  // all -inf, or a +inf term dominates
-  return largest + std::log((v.array() - largest).exp().sum());
+  // Terms below e^-700 cannot change a sum that contains e^0 = 1; clamping them keeps exp
+  // from producing denormal numbers, on which x86 arithmetic is many times slower.
+  constexpr double kLogFloor = -700.0;
+  return largest + std::log((v.array() - largest).max(kLogFloor).exp().sum());
 }
 
 /// Cholesky factorisation A = L L^T of a symmetric positive definite matrix, in place: L

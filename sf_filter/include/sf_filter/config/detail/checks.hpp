@@ -15,18 +15,23 @@
 
 #define SF_CFG_NXN_WHY "must be n x n; " SF_CFG_N_WHY
 #define SF_CFG_MXM_WHY "must be m x m; " SF_CFG_M_WHY
-#define SF_CFG_MXN_WHY "must be m x n, one row per TOPICS_IN entry; " SF_CFG_M_WHY "; " SF_CFG_N_WHY
-#define SF_CFG_NXL_WHY "must be n x l, one column per TOPICS_IN_CTRL entry; " SF_CFG_N_WHY "; " SF_CFG_L_WHY
+#define SF_CFG_MXN_WHY \
+  "must be m x n, one row per TOPICS_IN entry; " SF_CFG_M_WHY "; " SF_CFG_N_WHY
+#define SF_CFG_NXL_WHY \
+  "must be n x l, one column per TOPICS_IN_CTRL entry; " SF_CFG_N_WHY "; " SF_CFG_L_WHY
 
 namespace sf_config {
 namespace checks {
 
 // --- models and matrices ----------------------------------------------------------------------
 #if METHOD == KALMAN_FILTER
-SF_PP_CHECK_MATRIX("STATE_TRANSITION_MATRIX", SF_CFG_N, SF_CFG_N, SF_CFG_NXN_WHY, STATE_TRANSITION_MATRIX)
-SF_PP_CHECK_MATRIX("OBSERVATION_MATRIX", SF_CFG_M, SF_CFG_N, SF_CFG_MXN_WHY, OBSERVATION_MATRIX)
+SF_PP_CHECK_MATRIX("STATE_TRANSITION_MATRIX", SF_CFG_N, SF_CFG_N, SF_CFG_NXN_WHY,
+                   STATE_TRANSITION_MATRIX)
+SF_PP_CHECK_MATRIX("OBSERVATION_MATRIX", SF_CFG_M, SF_CFG_N, SF_CFG_MXN_WHY,
+                   OBSERVATION_MATRIX)
 #if defined(CONTROL_INPUT_MATRIX)
-SF_PP_CHECK_MATRIX("CONTROL_INPUT_MATRIX", SF_CFG_N, SF_CFG_L, SF_CFG_NXL_WHY, CONTROL_INPUT_MATRIX)
+SF_PP_CHECK_MATRIX("CONTROL_INPUT_MATRIX", SF_CFG_N, SF_CFG_L, SF_CFG_NXL_WHY,
+                   CONTROL_INPUT_MATRIX)
 #endif
 #endif
 
@@ -51,18 +56,21 @@ SF_PP_CHECK_MATRIX("OBSERVATION_JACOBIAN", SF_CFG_M, SF_CFG_N,
 
 // --- covariances and initial values -----------------------------------------------------------
 #if METHOD == KALMAN_FILTER || SF_CFG_IS_MODEL_BASED
-SF_PP_CHECK_MATRIX("PROCESS_NOISE_COVARIANCE", SF_CFG_N, SF_CFG_N, SF_CFG_NXN_WHY, PROCESS_NOISE_COVARIANCE)
+SF_PP_CHECK_MATRIX("PROCESS_NOISE_COVARIANCE", SF_CFG_N, SF_CFG_N, SF_CFG_NXN_WHY,
+                   PROCESS_NOISE_COVARIANCE)
 #endif
-#if defined(MEASUREMENT_NOISE_COVARIANCE) && \
+#if defined(MEASUREMENT_NOISE_COVARIANCE) &&                                                       \
     (METHOD == KALMAN_FILTER || SF_CFG_IS_MODEL_BASED || METHOD == CONFIDENCE_WEIGHTED_AVERAGING)
-SF_PP_CHECK_MATRIX("MEASUREMENT_NOISE_COVARIANCE", SF_CFG_M, SF_CFG_M, SF_CFG_MXM_WHY, MEASUREMENT_NOISE_COVARIANCE)
+SF_PP_CHECK_MATRIX("MEASUREMENT_NOISE_COVARIANCE", SF_CFG_M, SF_CFG_M, SF_CFG_MXM_WHY,
+                   MEASUREMENT_NOISE_COVARIANCE)
 #endif
 #if defined(INITIAL_STATE) && !SF_CFG_IS_AVERAGING
 SF_PP_CHECK_VECTOR("INITIAL_STATE", SF_CFG_N, "one value per state variable; " SF_CFG_N_WHY,
                    "(0)(0)", INITIAL_STATE)
 #endif
 #if defined(INITIAL_ERROR_COVARIANCE) && !SF_CFG_IS_AVERAGING
-SF_PP_CHECK_MATRIX("INITIAL_ERROR_COVARIANCE", SF_CFG_N, SF_CFG_N, SF_CFG_NXN_WHY, INITIAL_ERROR_COVARIANCE)
+SF_PP_CHECK_MATRIX("INITIAL_ERROR_COVARIANCE", SF_CFG_N, SF_CFG_N, SF_CFG_NXN_WHY,
+                   INITIAL_ERROR_COVARIANCE)
 #endif
 
 // --- scalars ----------------------------------------------------------------------------------

@@ -14,47 +14,47 @@
 
 // --- index checks on the stringized expressions -------------------------------------------------
 // KIND is TRANSITION (u allowed) or OBSERVATION (no u).
-#define SF_CFG_EXPR_CHECKS(NAME, KIND, WHERE, e)                                              \
-  static_assert(::sf_config::detail::maxIndexUsed(SF_PP_STR(e), 'x') < kStateSize,           \
-                NAME ": " WHERE " '" SF_PP_STR(e) "' uses x[i] with i >= " SF_PP_STR(SF_CFG_N) \
-                ", but the state has only the variables x[0] .. x["                          \
-                SF_PP_STR(BOOST_PP_DEC(SF_CFG_N)) "] (" SF_CFG_N_WHY ")");                     \
+#define SF_CFG_EXPR_CHECKS(NAME, KIND, WHERE, e)                                                   \
+  static_assert(::sf_config::detail::maxIndexUsed(SF_PP_STR(e), 'x') < kStateSize,                 \
+                NAME ": " WHERE " '" SF_PP_STR(e) "' uses x[i] with i >= " SF_PP_STR(SF_CFG_N)     \
+                ", but the state has only the variables x[0] .. x["                                \
+                SF_PP_STR(BOOST_PP_DEC(SF_CFG_N)) "] (" SF_CFG_N_WHY ")");                         \
   BOOST_PP_CAT(SF_CFG_U_CHECK_, KIND)(NAME, WHERE, e)
 
 #if defined(TOPICS_IN_CTRL)
-#define SF_CFG_U_CHECK_TRANSITION(NAME, WHERE, e)                                             \
-  static_assert(::sf_config::detail::maxIndexUsed(SF_PP_STR(e), 'u') < kControlSize,         \
-                NAME ": " WHERE " '" SF_PP_STR(e) "' uses u[i] with i >= " SF_PP_STR(SF_CFG_L) \
-                ", but TOPICS_IN_CTRL declares only the control inputs u[0] .. u["           \
+#define SF_CFG_U_CHECK_TRANSITION(NAME, WHERE, e)                                                  \
+  static_assert(::sf_config::detail::maxIndexUsed(SF_PP_STR(e), 'u') < kControlSize,               \
+                NAME ": " WHERE " '" SF_PP_STR(e) "' uses u[i] with i >= " SF_PP_STR(SF_CFG_L)     \
+                ", but TOPICS_IN_CTRL declares only the control inputs u[0] .. u["                 \
                 SF_PP_STR(BOOST_PP_DEC(SF_CFG_L)) "] (" SF_CFG_L_WHY ")");
 #else
-#define SF_CFG_U_CHECK_TRANSITION(NAME, WHERE, e)                                             \
-  static_assert(!::sf_config::detail::usesIdentifier(SF_PP_STR(e), 'u'),                     \
-                NAME ": " WHERE " '" SF_PP_STR(e) "' uses the control input u, but "          \
-                "TOPICS_IN_CTRL is not defined; declare one ((topic)(type)(field)) entry of " \
+#define SF_CFG_U_CHECK_TRANSITION(NAME, WHERE, e)                                                  \
+  static_assert(!::sf_config::detail::usesIdentifier(SF_PP_STR(e), 'u'),                           \
+                NAME ": " WHERE " '" SF_PP_STR(e) "' uses the control input u, but "               \
+                "TOPICS_IN_CTRL is not defined; declare one ((topic)(type)(field)) entry of "      \
                 "TOPICS_IN_CTRL per control input u[i]");
 #endif
-#define SF_CFG_U_CHECK_OBSERVATION(NAME, WHERE, e)                                            \
-  static_assert(!::sf_config::detail::usesIdentifier(SF_PP_STR(e), 'u'),                     \
-                NAME ": " WHERE " '" SF_PP_STR(e) "' uses the control input u, but control " \
+#define SF_CFG_U_CHECK_OBSERVATION(NAME, WHERE, e)                                                 \
+  static_assert(!::sf_config::detail::usesIdentifier(SF_PP_STR(e), 'u'),                           \
+                NAME ": " WHERE " '" SF_PP_STR(e) "' uses the control input u, but control "       \
                 "inputs are not available in the observation model");
 
 /// Checks of every expression of a model sequence.
-#define SF_CFG_CHECK_EXPRESSIONS(NAME, KIND, seq) \
+#define SF_CFG_CHECK_EXPRESSIONS(NAME, KIND, seq)                                                  \
   BOOST_PP_SEQ_FOR_EACH_I(SF_CFG_CHECK_EXPRESSION, (NAME, KIND), seq)
-#define SF_CFG_CHECK_EXPRESSION(r, data, i, e)                                                \
-  SF_CFG_EXPR_CHECKS(BOOST_PP_TUPLE_ELEM(2, 0, data), BOOST_PP_TUPLE_ELEM(2, 1, data),        \
+#define SF_CFG_CHECK_EXPRESSION(r, data, i, e)                                                     \
+  SF_CFG_EXPR_CHECKS(BOOST_PP_TUPLE_ELEM(2, 0, data), BOOST_PP_TUPLE_ELEM(2, 1, data),             \
                      "expression " SF_PP_STR(i), e)
 
 /// Checks of every entry of a Jacobian matrix.
-#define SF_CFG_CHECK_MATRIX_EXPRESSIONS(NAME, KIND, m) \
+#define SF_CFG_CHECK_MATRIX_EXPRESSIONS(NAME, KIND, m)                                             \
   BOOST_PP_REPEAT(BOOST_PP_SEQ_SIZE(m), SF_CFG_CHECK_MATRIX_ROW, (NAME, KIND, m))
-#define SF_CFG_CHECK_MATRIX_ROW(z, i, data)                                                   \
-  BOOST_PP_SEQ_FOR_EACH_I(SF_CFG_CHECK_MATRIX_ENTRY,                                         \
-                          (BOOST_PP_TUPLE_ELEM(3, 0, data), BOOST_PP_TUPLE_ELEM(3, 1, data), i), \
+#define SF_CFG_CHECK_MATRIX_ROW(z, i, data)                                                        \
+  BOOST_PP_SEQ_FOR_EACH_I(SF_CFG_CHECK_MATRIX_ENTRY,                                               \
+                          (BOOST_PP_TUPLE_ELEM(3, 0, data), BOOST_PP_TUPLE_ELEM(3, 1, data), i),   \
                           BOOST_PP_SEQ_ELEM(i, BOOST_PP_TUPLE_ELEM(3, 2, data)))
-#define SF_CFG_CHECK_MATRIX_ENTRY(r, data, j, e)                                              \
-  SF_CFG_EXPR_CHECKS(BOOST_PP_TUPLE_ELEM(3, 0, data), BOOST_PP_TUPLE_ELEM(3, 1, data),        \
+#define SF_CFG_CHECK_MATRIX_ENTRY(r, data, j, e)                                                   \
+  SF_CFG_EXPR_CHECKS(BOOST_PP_TUPLE_ELEM(3, 0, data), BOOST_PP_TUPLE_ELEM(3, 1, data),             \
                      "entry (" SF_PP_STR(BOOST_PP_TUPLE_ELEM(3, 2, data)) ", " SF_PP_STR(j) ")", e)
 
 // clang-format on

@@ -116,6 +116,12 @@ struct DescriptorBase {
   using Message = UnknownMessage;
 };
 
+/// Base of the generated output descriptors: if the configured state index cannot be compiled
+/// (e.g. a name instead of a number), the compiler reports it once and this 0 is used instead.
+struct OutputDescriptorBase {
+  static constexpr int configured_state_index = 0;
+};
+
 template <class Message>
 constexpr bool isUnknownMessage() {
   return std::is_same_v<Message, UnknownMessage>;

@@ -19,98 +19,101 @@
 
 // clang-format off
 
-// --- field detectors: DETECTOR<MessageT>::status (FieldStatus), DETECTOR<MessageT>::get(message) --
-#define SF_CFG_FIELD_DETECTOR(DETECTOR, FIELD)                                                \
-  template <class MessageT, class = void>                                                           \
-  struct DETECTOR {                                                                            \
-    static constexpr int status = ::sf_config::detail::kFieldMissing;                          \
-    static double get(const MessageT&) { return 0.0; }                                              \
-  };                                                                                           \
-  template <class MessageT>                                                                    \
-  struct DETECTOR<MessageT, std::void_t<decltype(std::declval<const MessageT&>().FIELD)>> {    \
-    static constexpr int status =                                                              \
-        ::sf_config::detail::fieldStatusOf<decltype(std::declval<const MessageT&>().FIELD)>();      \
-    static double get(const MessageT& message) {                                               \
-      return ::sf_config::detail::toDouble(message.FIELD);                                     \
-    }     \
+// --- field detectors: DETECTOR<MessageT>::status (a FieldStatus) and ::get(message) -----------
+#define SF_CFG_FIELD_DETECTOR(DETECTOR, FIELD)                                                     \
+  template <class MessageT, class = void>                                                          \
+  struct DETECTOR {                                                                                \
+    static constexpr int status = ::sf_config::detail::kFieldMissing;                              \
+    static double get(const MessageT&) { return 0.0; }                                             \
+  };                                                                                               \
+  template <class MessageT>                                                                        \
+  struct DETECTOR<MessageT, std::void_t<decltype(std::declval<const MessageT&>().FIELD)>> {        \
+    static constexpr int status =                                                                  \
+        ::sf_config::detail::fieldStatusOf<decltype(std::declval<const MessageT&>().FIELD)>();     \
+    static double get(const MessageT& message) {                                                   \
+      return ::sf_config::detail::toDouble(message.FIELD);                                         \
+    }                                                                                              \
   };
 
-#define SF_CFG_TOPIC_NAME(entry) ::sf_config::detail::unquote(SF_PP_STR(BOOST_PP_SEQ_ELEM(0, entry)))
+#define SF_CFG_TOPIC_NAME(entry) \
+  ::sf_config::detail::unquote(SF_PP_STR(BOOST_PP_SEQ_ELEM(0, entry)))
 #define SF_CFG_TOPIC_NAME_OP(r, data, i, entry) BOOST_PP_COMMA_IF(i) SF_CFG_TOPIC_NAME(entry)
 
 // Message prefix naming an entry, e.g. "TOPICS_IN entry 0 (topic 'acceleration')".
-#define SF_CFG_ENTRY_PREFIX(LIST, i, entry) \
+#define SF_CFG_ENTRY_PREFIX(LIST, i, entry)                                                        \
   LIST " entry " SF_PP_STR(i) " (topic '" SF_PP_STR(BOOST_PP_SEQ_ELEM(0, entry)) "')"
 
-#define SF_CFG_FIELD_CHECKS(LIST, i, entry, DETECTOR, WHAT, FIELD)                           \
-  static_assert(::sf_config::detail::isUnknownMessage<Message>() ||                          \
-                    DETECTOR<Message>::status != ::sf_config::detail::kFieldMissing,          \
-                SF_CFG_ENTRY_PREFIX(LIST, i, entry) ": message type '"                       \
-                SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry)) "' has no " WHAT " '" SF_PP_STR(FIELD) \
-                "' (check the spelling against the message definition, e.g. with rosmsg show)"); \
-  static_assert(::sf_config::detail::isUnknownMessage<Message>() ||                          \
-                    DETECTOR<Message>::status != ::sf_config::detail::kFieldNotNumeric,       \
-                SF_CFG_ENTRY_PREFIX(LIST, i, entry) ": " WHAT " '" SF_PP_STR(FIELD)            \
-                "' of message type '" SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry))                 \
-                "' is not a number (not convertible to double); select a numeric member, "   \
+#define SF_CFG_FIELD_CHECKS(LIST, i, entry, DETECTOR, WHAT, FIELD)                                 \
+  static_assert(::sf_config::detail::isUnknownMessage<Message>() ||                                \
+                    DETECTOR<Message>::status != ::sf_config::detail::kFieldMissing,               \
+                SF_CFG_ENTRY_PREFIX(LIST, i, entry) ": message type '"                             \
+                SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry)) "' has no " WHAT " '" SF_PP_STR(FIELD)      \
+                "' (check the spelling against the message definition, e.g. with rosmsg show)");   \
+  static_assert(::sf_config::detail::isUnknownMessage<Message>() ||                                \
+                    DETECTOR<Message>::status != ::sf_config::detail::kFieldNotNumeric,            \
+                SF_CFG_ENTRY_PREFIX(LIST, i, entry) ": " WHAT " '" SF_PP_STR(FIELD)                \
+                "' of message type '" SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry))                       \
+                "' is not a number (not convertible to double); select a numeric member, "         \
                 "e.g. vector.x instead of vector");
 
-#define SF_CFG_TOPIC_NAME_CHECK(LIST, i, entry, NAME)                                        \
-  static_assert(::sf_config::detail::isValidTopicName(NAME),                                 \
-                SF_CFG_ENTRY_PREFIX(LIST, i, entry) ": not a valid ROS topic name (letters, " \
-                "digits, '_' and '/', starting with a letter, '/' or '~'); write names that "  \
+#define SF_CFG_TOPIC_NAME_CHECK(LIST, i, entry, NAME)                                              \
+  static_assert(::sf_config::detail::isValidTopicName(NAME),                                       \
+                SF_CFG_ENTRY_PREFIX(LIST, i, entry) ": not a valid ROS topic name (letters, "      \
+                "digits, '_' and '/', starting with a letter, '/' or '~'); write names that "      \
                 "are not C++ tokens as a string literal, e.g. (\"my_topic\")");
 
 // --- TOPICS_IN ----------------------------------------------------------------------------------
-#define SF_CFG_INPUT(r, data, i, entry)                                                       \
-  namespace detail {                                                                          \
-  SF_CFG_FIELD_DETECTOR(BOOST_PP_CAT(InputValueField, i), BOOST_PP_SEQ_ELEM(2, entry))         \
-  BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_CFG_FIELD_DETECTOR,             \
-               SF_PP_NOTHING)(BOOST_PP_CAT(InputVarianceField, i),                              \
-                              BOOST_PP_SEQ_ELEM(BOOST_PP_DEC(BOOST_PP_SEQ_SIZE(entry)), entry)) \
-  }                                                                                           \
-  struct BOOST_PP_CAT(Input, i) : ::sf_config::detail::DescriptorBase {                      \
-    using Message = BOOST_PP_SEQ_ELEM(1, entry);                                              \
-    static constexpr int index = i;                                                           \
-    static constexpr std::string_view topic = SF_CFG_TOPIC_NAME(entry);                       \
-    static constexpr std::string_view message_type = SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry));  \
-    static constexpr std::string_view field = SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry));         \
-    static constexpr bool has_variance = BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4);         \
-    static constexpr std::string_view variance_field =                                        \
-        BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_PP_STR, "" SF_PP_NOTHING)( \
-            BOOST_PP_SEQ_ELEM(BOOST_PP_DEC(BOOST_PP_SEQ_SIZE(entry)), entry));                \
-    static constexpr int first_same_topic = ::sf_config::detail::firstIndexOf(kInputTopics, i); \
-    static constexpr bool owns_subscription = first_same_topic == index;                      \
-    static double value(const Message& message) {                                                 \
-      return detail::BOOST_PP_CAT(InputValueField, i)<Message>::get(message);                     \
-    }                                                                                         \
-    static double variance(const Message& message) {                                              \
-      BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_CFG_INPUT_VARIANCE_GET,     \
-                   SF_CFG_INPUT_VARIANCE_NONE)(i)                                              \
-    }                                                                                         \
-    SF_CFG_TOPIC_NAME_CHECK("TOPICS_IN", i, entry, topic)                                     \
-    SF_CFG_FIELD_CHECKS("TOPICS_IN", i, entry, detail::BOOST_PP_CAT(InputValueField, i),      \
-                        "field", BOOST_PP_SEQ_ELEM(2, entry))                                 \
-    BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_CFG_FIELD_CHECKS,             \
-                 SF_PP_NOTHING)("TOPICS_IN", i, entry, detail::BOOST_PP_CAT(InputVarianceField, i), \
-                                "variance field",                                              \
-                                BOOST_PP_SEQ_ELEM(BOOST_PP_DEC(BOOST_PP_SEQ_SIZE(entry)), entry)) \
+#define SF_CFG_INPUT(r, data, i, entry)                                                            \
+  namespace detail {                                                                               \
+  SF_CFG_FIELD_DETECTOR(BOOST_PP_CAT(InputValueField, i), BOOST_PP_SEQ_ELEM(2, entry))             \
+  BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_CFG_FIELD_DETECTOR,                 \
+               SF_PP_NOTHING)(BOOST_PP_CAT(InputVarianceField, i),                                 \
+                              BOOST_PP_SEQ_ELEM(BOOST_PP_DEC(BOOST_PP_SEQ_SIZE(entry)), entry))    \
+  }                                                                                                \
+  struct BOOST_PP_CAT(Input, i) : ::sf_config::detail::DescriptorBase {                            \
+    using Message = BOOST_PP_SEQ_ELEM(1, entry);                                                   \
+    static constexpr int index = i;                                                                \
+    static constexpr std::string_view topic = SF_CFG_TOPIC_NAME(entry);                            \
+    static constexpr std::string_view message_type = SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry));       \
+    static constexpr std::string_view field = SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry));              \
+    static constexpr bool has_variance = BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4);              \
+    static constexpr std::string_view variance_field =                                             \
+        BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_PP_STR, "" SF_PP_NOTHING)(    \
+            BOOST_PP_SEQ_ELEM(BOOST_PP_DEC(BOOST_PP_SEQ_SIZE(entry)), entry));                     \
+    static constexpr int first_same_topic = ::sf_config::detail::firstIndexOf(kInputTopics, i);    \
+    static constexpr bool owns_subscription = first_same_topic == index;                           \
+    static double value(const Message& message) {                                                  \
+      return detail::BOOST_PP_CAT(InputValueField, i)<Message>::get(message);                      \
+    }                                                                                              \
+    static double variance(const Message& message) {                                               \
+      BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_CFG_INPUT_VARIANCE_GET,         \
+                   SF_CFG_INPUT_VARIANCE_NONE)(i)                                                  \
+    }                                                                                              \
+    SF_CFG_TOPIC_NAME_CHECK("TOPICS_IN", i, entry, topic)                                          \
+    SF_CFG_FIELD_CHECKS("TOPICS_IN", i, entry, detail::BOOST_PP_CAT(InputValueField, i),           \
+                        "field", BOOST_PP_SEQ_ELEM(2, entry))                                      \
+    BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_CFG_FIELD_CHECKS,                 \
+                 SF_PP_NOTHING)("TOPICS_IN", i, entry,                                            \
+                                detail::BOOST_PP_CAT(InputVarianceField, i),                      \
+                                "variance field",                                                  \
+                                BOOST_PP_SEQ_ELEM(BOOST_PP_DEC(BOOST_PP_SEQ_SIZE(entry)), entry))  \
   };
-#define SF_CFG_INPUT_VARIANCE_GET(i) \
+#define SF_CFG_INPUT_VARIANCE_GET(i)                                                               \
   return detail::BOOST_PP_CAT(InputVarianceField, i)<Message>::get(message);
-#define SF_CFG_INPUT_VARIANCE_NONE(i) \
-  static_cast<void>(message);             \
+#define SF_CFG_INPUT_VARIANCE_NONE(i)                                                              \
+  static_cast<void>(message);                                                                      \
   return std::numeric_limits<double>::quiet_NaN();
 
-#define SF_CFG_SAME_TOPIC_SAME_TYPE(r, LIST, i, entry)                                        \
-  static_assert(::sf_config::detail::isUnknownMessage<BOOST_PP_CAT(LIST, i)::Message>() ||   \
-                    ::sf_config::detail::isUnknownMessage<std::tuple_element_t<              \
-                        BOOST_PP_CAT(LIST, i)::first_same_topic, BOOST_PP_CAT(LIST, s)>::Message>() || \
-                    std::is_same<BOOST_PP_CAT(LIST, i)::Message,                              \
-                             std::tuple_element_t<BOOST_PP_CAT(LIST, i)::first_same_topic,    \
-                                                  BOOST_PP_CAT(LIST, s)>::Message>::value,    \
-                SF_CFG_ENTRY_PREFIX(BOOST_PP_CAT(SF_CFG_LIST_NAME_, LIST), i, entry)                      \
-                ": the topic is listed in an earlier entry with a different message type; "  \
+#define SF_CFG_SAME_TOPIC_SAME_TYPE(r, LIST, i, entry)                                             \
+  static_assert(::sf_config::detail::isUnknownMessage<BOOST_PP_CAT(LIST, i)::Message>() ||         \
+                    ::sf_config::detail::isUnknownMessage<std::tuple_element_t<                    \
+                        BOOST_PP_CAT(LIST, i)::first_same_topic,                                 \
+                        BOOST_PP_CAT(LIST, s)>::Message>() ||                                    \
+                    std::is_same<BOOST_PP_CAT(LIST, i)::Message,                                   \
+                             std::tuple_element_t<BOOST_PP_CAT(LIST, i)::first_same_topic,         \
+                                                  BOOST_PP_CAT(LIST, s)>::Message>::value,         \
+                SF_CFG_ENTRY_PREFIX(BOOST_PP_CAT(SF_CFG_LIST_NAME_, LIST), i, entry)               \
+                ": the topic is listed in an earlier entry with a different message type; "        \
                 "one topic has one message type");
 #define SF_CFG_LIST_NAME_Input "TOPICS_IN"
 #define SF_CFG_LIST_NAME_Control "TOPICS_IN_CTRL"
@@ -118,43 +121,43 @@
 #define SF_CFG_CALL_VISITOR(z, i, NAME) visitor(BOOST_PP_CAT(NAME, i){});
 
 // --- TOPICS_IN_CTRL -----------------------------------------------------------------------------
-#define SF_CFG_CONTROL(r, data, i, entry)                                                     \
-  namespace detail {                                                                          \
-  SF_CFG_FIELD_DETECTOR(BOOST_PP_CAT(ControlValueField, i), BOOST_PP_SEQ_ELEM(2, entry))       \
-  }                                                                                           \
-  struct BOOST_PP_CAT(Control, i) : ::sf_config::detail::DescriptorBase {                    \
-    using Message = BOOST_PP_SEQ_ELEM(1, entry);                                              \
-    static constexpr int index = i;                                                           \
-    static constexpr std::string_view topic = SF_CFG_TOPIC_NAME(entry);                       \
-    static constexpr std::string_view message_type = SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry));  \
-    static constexpr std::string_view field = SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry));         \
-    static constexpr int first_same_topic =                                                   \
-        ::sf_config::detail::firstIndexOf(kControlTopics, i);                                  \
-    static constexpr bool owns_subscription = first_same_topic == index;                      \
-    static double value(const Message& message) {                                                 \
-      return detail::BOOST_PP_CAT(ControlValueField, i)<Message>::get(message);                   \
-    }                                                                                         \
-    SF_CFG_TOPIC_NAME_CHECK("TOPICS_IN_CTRL", i, entry, topic)                                \
-    SF_CFG_FIELD_CHECKS("TOPICS_IN_CTRL", i, entry, detail::BOOST_PP_CAT(ControlValueField, i), \
-                        "field", BOOST_PP_SEQ_ELEM(2, entry))                                 \
+#define SF_CFG_CONTROL(r, data, i, entry)                                                          \
+  namespace detail {                                                                               \
+  SF_CFG_FIELD_DETECTOR(BOOST_PP_CAT(ControlValueField, i), BOOST_PP_SEQ_ELEM(2, entry))           \
+  }                                                                                                \
+  struct BOOST_PP_CAT(Control, i) : ::sf_config::detail::DescriptorBase {                          \
+    using Message = BOOST_PP_SEQ_ELEM(1, entry);                                                   \
+    static constexpr int index = i;                                                                \
+    static constexpr std::string_view topic = SF_CFG_TOPIC_NAME(entry);                            \
+    static constexpr std::string_view message_type = SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry));       \
+    static constexpr std::string_view field = SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry));              \
+    static constexpr int first_same_topic =                                                        \
+        ::sf_config::detail::firstIndexOf(kControlTopics, i);                                      \
+    static constexpr bool owns_subscription = first_same_topic == index;                           \
+    static double value(const Message& message) {                                                  \
+      return detail::BOOST_PP_CAT(ControlValueField, i)<Message>::get(message);                    \
+    }                                                                                              \
+    SF_CFG_TOPIC_NAME_CHECK("TOPICS_IN_CTRL", i, entry, topic)                                     \
+    SF_CFG_FIELD_CHECKS("TOPICS_IN_CTRL", i, entry, detail::BOOST_PP_CAT(ControlValueField, i),    \
+                        "field", BOOST_PP_SEQ_ELEM(2, entry))                                      \
   };
 
 // --- TOPICS_OUT ---------------------------------------------------------------------------------
-#define SF_CFG_OUTPUT(r, data, i, entry)                                                      \
-  struct BOOST_PP_CAT(Output, i) {                                                            \
-    static constexpr int index = i;                                                           \
-    static constexpr std::string_view topic = SF_CFG_TOPIC_NAME(entry);                       \
-    static constexpr int state_index = BOOST_PP_SEQ_ELEM(1, entry);                           \
-    SF_CFG_TOPIC_NAME_CHECK("TOPICS_OUT", i, entry, topic)                                    \
-    static_assert(::sf_config::detail::firstIndexOf(kOutputTopics, i) == i,                   \
-                  SF_CFG_ENTRY_PREFIX("TOPICS_OUT", i, entry)                                 \
-                  ": the topic is already used by an earlier TOPICS_OUT entry");              \
-    static_assert(std::is_integral<decltype(BOOST_PP_SEQ_ELEM(1, entry))>::value &&           \
-                      (BOOST_PP_SEQ_ELEM(1, entry)) >= 0 &&                                   \
-                      (BOOST_PP_SEQ_ELEM(1, entry)) < kStateSize,                             \
-                  SF_CFG_ENTRY_PREFIX("TOPICS_OUT", i, entry) ": state index '"               \
-                  SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry)) "' is out of range, expected an "    \
-                  "integer from 0 to " SF_PP_STR(BOOST_PP_DEC(SF_CFG_N)) " (" SF_CFG_N_WHY ")"); \
+#define SF_CFG_OUTPUT(r, data, i, entry)                                                           \
+  struct BOOST_PP_CAT(Output, i) : ::sf_config::detail::OutputDescriptorBase {                     \
+    static constexpr auto configured_state_index = BOOST_PP_SEQ_ELEM(1, entry);                    \
+    static constexpr int index = i;                                                                \
+    static constexpr std::string_view topic = SF_CFG_TOPIC_NAME(entry);                            \
+    static constexpr int state_index = static_cast<int>(configured_state_index);                   \
+    SF_CFG_TOPIC_NAME_CHECK("TOPICS_OUT", i, entry, topic)                                         \
+    static_assert(::sf_config::detail::firstIndexOf(kOutputTopics, i) == i,                        \
+                  SF_CFG_ENTRY_PREFIX("TOPICS_OUT", i, entry)                                      \
+                  ": the topic is already used by an earlier TOPICS_OUT entry");                   \
+    static_assert(std::is_integral<decltype(configured_state_index)>::value &&                     \
+                      configured_state_index >= 0 && configured_state_index < kStateSize,          \
+                  SF_CFG_ENTRY_PREFIX("TOPICS_OUT", i, entry) ": state index '"                    \
+                  SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry)) "' is out of range, expected an "         \
+                  "integer from 0 to " SF_PP_STR(BOOST_PP_DEC(SF_CFG_N)) " (" SF_CFG_N_WHY ")");   \
   };
 
 // clang-format on

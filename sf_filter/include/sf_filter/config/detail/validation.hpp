@@ -25,7 +25,7 @@
 
 // clang-format off
 
-#define SF_CFG_TOPICS_IN_FORMAT \
+#define SF_CFG_TOPICS_IN_FORMAT                                                                    \
   "((topic)(type)(field)) or ((topic)(type)(field)(variance_field))"
 #define SF_CFG_TOPICS_IN_CTRL_FORMAT "((topic)(type)(field)) (controls have no variance field)"
 #define SF_CFG_TOPICS_OUT_FORMAT "((topic)(state_index))"
@@ -41,9 +41,9 @@
 #error METHOD is defined but empty: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR, MOVING_AVERAGE, MOVING_MEDIAN, CONFIDENCE_WEIGHTED_AVERAGING
 #define SF_CFG_FATAL
 #define SF_CFG_STOP
-#elif !(METHOD == KALMAN_FILTER || METHOD == EXTENDED_KALMAN_FILTER ||               \
-        METHOD == UNSCENTED_KALMAN_FILTER || METHOD == PARTICLE_FILTER_SIR ||        \
-        METHOD == MOVING_AVERAGE || METHOD == MOVING_MEDIAN ||                       \
+#elif !(METHOD == KALMAN_FILTER || METHOD == EXTENDED_KALMAN_FILTER ||                             \
+        METHOD == UNSCENTED_KALMAN_FILTER || METHOD == PARTICLE_FILTER_SIR ||                      \
+        METHOD == MOVING_AVERAGE || METHOD == MOVING_MEDIAN ||                                     \
         METHOD == CONFIDENCE_WEIGHTED_AVERAGING) /* METHOD must be one identifier */
 static_assert(false, "METHOD: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FILTER, "
               "UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR, MOVING_AVERAGE, MOVING_MEDIAN, "
@@ -53,10 +53,10 @@ static_assert(false, "METHOD: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FIL
 
 #if !defined(SF_CFG_FATAL)
 
-#define SF_CFG_IS_MODEL_BASED                                                     \
-  (METHOD == EXTENDED_KALMAN_FILTER || METHOD == UNSCENTED_KALMAN_FILTER ||       \
+#define SF_CFG_IS_MODEL_BASED                                                                      \
+  (METHOD == EXTENDED_KALMAN_FILTER || METHOD == UNSCENTED_KALMAN_FILTER ||                        \
    METHOD == PARTICLE_FILTER_SIR)
-#define SF_CFG_IS_AVERAGING \
+#define SF_CFG_IS_AVERAGING                                                                        \
   (METHOD == MOVING_AVERAGE || METHOD == MOVING_MEDIAN || METHOD == CONFIDENCE_WEIGHTED_AVERAGING)
 
 #if METHOD == KALMAN_FILTER
@@ -257,14 +257,14 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 #define SF_CFG_N_WHY "n = " SF_PP_STR(SF_CFG_N) " is the number of rows of STATE_TRANSITION_MATRIX"
 #elif SF_CFG_IS_MODEL_BASED
 #define SF_CFG_N BOOST_PP_SEQ_SIZE(STATE_TRANSITION_MODEL)
-#define SF_CFG_N_WHY \
+#define SF_CFG_N_WHY                                                                               \
   "n = " SF_PP_STR(SF_CFG_N) " is the number of expressions in STATE_TRANSITION_MODEL"
 #elif METHOD == CONFIDENCE_WEIGHTED_AVERAGING
 #define SF_CFG_N 1
 #define SF_CFG_N_WHY "n = 1 for CONFIDENCE_WEIGHTED_AVERAGING"
 #else
 #define SF_CFG_N SF_CFG_M
-#define SF_CFG_N_WHY "n = m = " SF_PP_STR(SF_CFG_M) " (the number of TOPICS_IN entries) for " \
+#define SF_CFG_N_WHY "n = m = " SF_PP_STR(SF_CFG_M) " (the number of TOPICS_IN entries) for "      \
   SF_CFG_METHOD_NAME
 #endif
 
@@ -274,13 +274,13 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 #else
 #define SF_CFG_HAS_CONTROL_INPUT_MATRIX 0
 #endif
-#if METHOD == EXTENDED_KALMAN_FILTER && defined(STATE_TRANSITION_JACOBIAN) && \
+#if METHOD == EXTENDED_KALMAN_FILTER && defined(STATE_TRANSITION_JACOBIAN) &&                      \
     SF_PP_IS_MATRIX(STATE_TRANSITION_JACOBIAN)
 #define SF_CFG_HAS_STATE_TRANSITION_JACOBIAN 1
 #else
 #define SF_CFG_HAS_STATE_TRANSITION_JACOBIAN 0
 #endif
-#if METHOD == EXTENDED_KALMAN_FILTER && defined(OBSERVATION_JACOBIAN) && \
+#if METHOD == EXTENDED_KALMAN_FILTER && defined(OBSERVATION_JACOBIAN) &&                           \
     SF_PP_IS_MATRIX(OBSERVATION_JACOBIAN)
 #define SF_CFG_HAS_OBSERVATION_JACOBIAN 1
 #else
