@@ -123,8 +123,7 @@ void* operator new(std::size_t size, std::align_val_t alignment, const std::noth
     return nullptr;
   }
 }
-void* operator new[](std::size_t size, std::align_val_t alignment,
-                     const std::nothrow_t&) noexcept {
+void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
   return operator new(size, alignment, std::nothrow);
 }
 void operator delete(void* p) noexcept { std::free(p); }
@@ -138,9 +137,7 @@ void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-  std::free(p);
-}
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
 
 namespace {
 
@@ -148,10 +145,10 @@ using namespace estimation;
 using models::Nav3Ctrl;
 using Ukf = UnscentedKalmanFilter<Nav3Ctrl>;
 
-constexpr double kPeriod = 0.1;           // ESTIMATION_PERIOD 100 ms
-constexpr double kRadius = 0.3;           // effective skid-steer radius [m]
+constexpr double kPeriod = 0.1;             // ESTIMATION_PERIOD 100 ms
+constexpr double kRadius = 0.3;             // effective skid-steer radius [m]
 constexpr std::size_t kDrivePeriods = 400;  // 40 s of driving, replayed in a loop
-constexpr double kEpoch = 1.7e9;          // ROS wall-clock seconds: same double resolution
+constexpr double kEpoch = 1.7e9;            // ROS wall-clock seconds: same double resolution
 
 // -----------------------------------------------------------------------------
 // The inputs of one period, as the node receives them.
@@ -168,9 +165,9 @@ struct Event {
 };
 
 struct Period {
-  std::vector<Event> events;      // in arrival order
-  Measurement<4> aligned;         // what the core hands the estimator at the period end
-  Vector<2> control;              // the control in force at the period end
+  std::vector<Event> events;  // in arrival order
+  Measurement<4> aligned;     // what the core hands the estimator at the period end
+  Vector<2> control;          // the control in force at the period end
 };
 
 // A simulated drive of the nav3ctrl model (smoothly varying speed and turn rate), observed
@@ -196,8 +193,10 @@ std::vector<Period> simulateDrive() {
     p.events.push_back({Kind::Control, 0.020, 0, u(0), u(1), false});
     for (int j = 0; j < 10; ++j) {
       const double at = 0.01 * j;
-      p.events.push_back({Kind::Measurement, at + 0.003, 0, z(0) + sigma(0) * normal(engine), 0.0, true});
-      p.events.push_back({Kind::Measurement, at + 0.006, 1, z(1) + sigma(1) * normal(engine), 0.0, true});
+      p.events.push_back(
+          {Kind::Measurement, at + 0.003, 0, z(0) + sigma(0) * normal(engine), 0.0, true});
+      p.events.push_back(
+          {Kind::Measurement, at + 0.006, 1, z(1) + sigma(1) * normal(engine), 0.0, true});
     }
     p.events.push_back({Kind::Measurement, 0.045, 2, z(2) + sigma(2) * normal(engine), 0.0, false});
     p.events.push_back({Kind::Measurement, 0.047, 3, z(3) + sigma(3) * normal(engine), 0.0, false});
@@ -207,7 +206,8 @@ std::vector<Period> simulateDrive() {
     // The aligned measurement, computed exactly as FusionCore does (PeriodAverage::mean).
     std::vector<sf_filter::PeriodAverage> average(4);
     for (const Event& e : p.events) {
-      if (e.kind == Kind::Measurement) average[static_cast<std::size_t>(e.input)].add(e.value, std::nullopt);
+      if (e.kind == Kind::Measurement)
+        average[static_cast<std::size_t>(e.input)].add(e.value, std::nullopt);
     }
     p.aligned = Measurement<4>(4);
     for (int i = 0; i < 4; ++i) {
@@ -228,8 +228,8 @@ const std::vector<Period>& drive() {
 
 // The node's filter: UKF with nav3ctrl, Q, R of the header, x0 = 0, P0 = I, default UT.
 Ukf makeUkf() {
-  return Ukf(Nav3Ctrl{kPeriod, kRadius}, models::nav3ProcessNoise(),
-             models::nav3MeasurementNoise(), Vector<7>::Zero(), Matrix<7, 7>::Identity());
+  return Ukf(Nav3Ctrl{kPeriod, kRadius}, models::nav3ProcessNoise(), models::nav3MeasurementNoise(),
+             Vector<7>::Zero(), Matrix<7, 7>::Identity());
 }
 
 /// An estimator that does nothing: FusionCore around it is the work outside the estimator.
@@ -375,8 +375,8 @@ void FusionCore_overhead_UKF_nav3ctrl(benchmark::State& state) {
   CoreDriver<Ukf> driver(makeUkf());
   Ukf twin = makeUkf();
   std::vector<double> full, estimator, outside;  // per period [s]
-  const auto reserve = static_cast<std::size_t>(std::min<benchmark::IterationCount>(
-      state.max_iterations, 10000000));
+  const auto reserve =
+      static_cast<std::size_t>(std::min<benchmark::IterationCount>(state.max_iterations, 10000000));
   full.reserve(reserve);
   estimator.reserve(reserve);
   outside.reserve(reserve);

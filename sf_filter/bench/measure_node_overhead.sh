@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end overhead of a fusion node under ROS (doc/benchmarks.md, "Fusion node").
+# End-to-end overhead of a fusion node under ROS (doc/node_benchmarks.md, "Fusion node").
 #
 # Starts a private roscore on a free port, then per run: the fusion node (default
 # sf_nav3ctrl_ukf, renamed to that name so its state topic is /sf_nav3ctrl_ukf/state) and
@@ -12,8 +12,8 @@
 # the CPU per period spent outside the estimator (ROS deserialisation, callbacks, alignment,
 # serialisation and publication of the outputs, timers, tf, rosout logging).
 #
-# Usage (in a sourced catkin workspace that built sf_nav3ctrl_ukf, sf_node_load_driver and
-# sf_fusion_core_benchmark):
+# Usage (in a sourced catkin workspace that built sf_nav3ctrl_ukf, sf_node_load_driver,
+# sf_fusion_core_benchmark and, for --reference, sf_ros_floor_node):
 #   sf_filter/bench/measure_node_overhead.sh [--duration 60] [--warmup 5] [--runs 1]
 #     [--port 11399] [--idle 0] [--tcp-nodelay] [--node sf_nav3ctrl_ukf] [--no-estimator-bench]
 #     [--reference] [--out DIR]
@@ -46,7 +46,7 @@ while [[ $# -gt 0 ]]; do
     --node) NODE=$2; shift 2 ;;
     --no-estimator-bench) ESTIMATOR_BENCH=false; shift ;;
     --out) OUT=$2; shift 2 ;;
-    -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
     *) echo "unknown argument: $1" >&2; exit 2 ;;
   esac
 done

@@ -1,6 +1,6 @@
 // Load driver for the end-to-end overhead measurement of a fusion node (see
-// measure_node_overhead.sh and doc/benchmarks.md, "Fusion node"). Publishes the inputs of the
-// nav3ctrl nodes in wall time
+// measure_node_overhead.sh and doc/node_benchmarks.md, "Fusion node"). Publishes the inputs
+// of the nav3ctrl nodes in wall time
 //   angular_velocity, acceleration  geometry_msgs/Vector3Stamped  100 Hz
 //   velocity_wheel_left/right       std_msgs/Float32               10 Hz
 //   cmd_vel                         geometry_msgs/Twist            10 Hz
@@ -21,6 +21,8 @@
 //   ~period        estimation period of the node [s] (0.1), for the per-period figures
 //   ~tcp_nodelay   subscribe to the outputs with TCP_NODELAY (false, as most subscribers do)
 //   ~report        file to write the results to as key=value lines ("" for none)
+#include <dirent.h>
+#include <unistd.h>
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -28,13 +30,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <ctime>
-#include <dirent.h>
 #include <fstream>
 #include <mutex>
 #include <sstream>
 #include <string>
 #include <thread>
-#include <unistd.h>
 #include <vector>
 
 #include <geometry_msgs/Twist.h>
@@ -70,7 +70,8 @@ class DelayRecorder {
     std::lock_guard<std::mutex> lock(mutex_);
     if (s < start_ || s >= end_) return;
     delays_.push_back(received - s);
-    if (last_ > 0.0 && s - last_ > 1.5 * period_) gaps_ += static_cast<std::uint64_t>(std::lround((s - last_) / period_)) - 1;
+    if (last_ > 0.0 && s - last_ > 1.5 * period_)
+      gaps_ += static_cast<std::uint64_t>(std::lround((s - last_) / period_)) - 1;
     last_ = s;
   }
 
@@ -86,7 +87,8 @@ class DelayRecorder {
     double sum = 0.0;
     for (double x : d) sum += x;
     auto at = [&](double q) {
-      const std::size_t i = std::min(d.size() - 1, static_cast<std::size_t>(q * static_cast<double>(d.size())));
+      const std::size_t i =
+          std::min(d.size() - 1, static_cast<std::size_t>(q * static_cast<double>(d.size())));
       return d[i] * 1e6;
     };
     out << name_ << ".delay_mean_us=" << sum / static_cast<double>(d.size()) * 1e6 << "\n";
@@ -180,7 +182,9 @@ int main(int argc, char** argv) {
   if (!stateTopic.empty()) {
     stateSub = nh.subscribe<sf_pkg::StateEstimateStamped>(
         stateTopic, 100,
-        [&](const sf_pkg::StateEstimateStamped::ConstPtr& m) { stateDelays.record(m->header.stamp); },
+        [&](const sf_pkg::StateEstimateStamped::ConstPtr& m) {
+          stateDelays.record(m->header.stamp);
+        },
         ros::VoidConstPtr(), hints);
   }
   ros::AsyncSpinner spinner(1);  // receive callbacks while the main thread publishes
@@ -209,7 +213,8 @@ int main(int argc, char** argv) {
   clock_gettime(CLOCK_MONOTONIC, &next);
   const double tick = 0.01;
   const std::uint64_t warmupTicks = static_cast<std::uint64_t>(std::llround(warmup / tick));
-  const std::uint64_t totalTicks = warmupTicks + static_cast<std::uint64_t>(std::llround(duration / tick));
+  const std::uint64_t totalTicks =
+      warmupTicks + static_cast<std::uint64_t>(std::llround(duration / tick));
   CpuSample cpuStart, cpuEnd;
   double windowStartMono = 0.0, windowEndMono = 0.0;
   double lateSum = 0.0, lateMax = 0.0;
@@ -222,7 +227,8 @@ int main(int argc, char** argv) {
     }
     while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) == EINTR) {
     }
-    const double late = monotonicNow() - (static_cast<double>(next.tv_sec) + 1e-9 * static_cast<double>(next.tv_nsec));
+    const double late = monotonicNow() - (static_cast<double>(next.tv_sec) +
+                                          1e-9 * static_cast<double>(next.tv_nsec));
     if (k == warmupTicks) {
       windowStartMono = monotonicNow();
       if (nodePid > 0) cpuStart = readCpu(nodePid);

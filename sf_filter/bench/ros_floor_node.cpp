@@ -32,8 +32,8 @@ int main(int argc, char** argv) {
   auto vectorCallback = [&](int input) {
     return [&, input](const geometry_msgs::Vector3Stamped::ConstPtr& m) {
       lastNow = ros::Time::now().toSec();
-      sum[static_cast<std::size_t>(input)] += (input == 0 ? m->vector.z : m->vector.y) +
-                                               0.0 * m->header.stamp.toSec();
+      sum[static_cast<std::size_t>(input)] +=
+          (input == 0 ? m->vector.z : m->vector.y) + 0.0 * m->header.stamp.toSec();
     };
   };
   auto floatCallback = [&](int input) {
@@ -43,10 +43,14 @@ int main(int argc, char** argv) {
     };
   };
   std::vector<ros::Subscriber> subscribers;
-  subscribers.push_back(nh.subscribe<geometry_msgs::Vector3Stamped>("angular_velocity", 100, vectorCallback(0)));
-  subscribers.push_back(nh.subscribe<geometry_msgs::Vector3Stamped>("acceleration", 100, vectorCallback(1)));
-  subscribers.push_back(nh.subscribe<std_msgs::Float32>("velocity_wheel_left", 100, floatCallback(2)));
-  subscribers.push_back(nh.subscribe<std_msgs::Float32>("velocity_wheel_right", 100, floatCallback(3)));
+  subscribers.push_back(
+      nh.subscribe<geometry_msgs::Vector3Stamped>("angular_velocity", 100, vectorCallback(0)));
+  subscribers.push_back(
+      nh.subscribe<geometry_msgs::Vector3Stamped>("acceleration", 100, vectorCallback(1)));
+  subscribers.push_back(
+      nh.subscribe<std_msgs::Float32>("velocity_wheel_left", 100, floatCallback(2)));
+  subscribers.push_back(
+      nh.subscribe<std_msgs::Float32>("velocity_wheel_right", 100, floatCallback(3)));
   subscribers.push_back(nh.subscribe<geometry_msgs::Twist>(
       "cmd_vel", 100, [&](const geometry_msgs::Twist::ConstPtr& m) {
         lastNow = ros::Time::now().toSec();
@@ -54,7 +58,8 @@ int main(int argc, char** argv) {
       }));
 
   std::vector<ros::Publisher> outputs;
-  for (const char* topic : {"pose/x", "pose/y", "pose/theta", "velocity/linear", "velocity/angular"}) {
+  for (const char* topic :
+       {"pose/x", "pose/y", "pose/theta", "velocity/linear", "velocity/angular"}) {
     outputs.push_back(nh.advertise<sf_pkg::OutputEntityStamped>(topic, 10));
   }
   ros::Publisher state = pnh.advertise<sf_pkg::StateEstimateStamped>("state", 10);

@@ -7,7 +7,14 @@
 
 #include <sf_filter/config/configuration.hpp>
 
+// A configuration mistake has been reported above; generating the node would only add
+// follow-up errors.
+#if SF_CONFIG_OK
+
+#include <chrono>
 #include <cstdlib>
+#include <iostream>
+#include <stdexcept>
 #include <limits>
 #include <optional>
 #include <string>
@@ -21,6 +28,7 @@
 #include "sf_filter/node/frame_alignment_config.hpp"
 #include "sf_filter/node/fusion_node.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
+#include "sf_filter/replay/bag_replay.hpp"
 
 #ifdef POSE_OUT
 #include <boost/preprocessor/seq/elem.hpp>
@@ -101,12 +109,13 @@ std::optional<double> alignedValue(sf_filter::FrameAligner& aligner, const Messa
 
 /// One subscription per distinct topic; its callback reads every field used from it. The
 /// FRAME_ALIGNED_INPUTS read a component of a vector rotated into the base frame instead.
-void subscribeInputs(Node& node, sf_filter::FrameAligner* aligner) {
+template <class Sink>
+void subscribeInputs(Sink& node, sf_filter::FrameAligner* aligner) {
   sf_config::forEachInput([&](auto owner) {
     using Owner = decltype(owner);
     if constexpr (Owner::owns_subscription) {
       using Message = typename Owner::Message;
-      node.subscribe<Message>(std::string(Owner::topic), [aligner](const Message& msg, Node& n,
+      node.template subscribe<Message>(std::string(Owner::topic), [aligner](const Message& msg, auto& n,
                                                                    double now) {
         sf_config::forEachInput([&](auto in) {
           using In = decltype(in);
@@ -133,7 +142,7 @@ void subscribeInputs(Node& node, sf_filter::FrameAligner* aligner) {
     using Owner = decltype(owner);
     if constexpr (Owner::owns_subscription) {
       using Message = typename Owner::Message;
-      node.subscribe<Message>(std::string(Owner::topic), [](const Message& msg, Node& n, double) {
+      node.template subscribe<Message>(std::string(Owner::topic), [](const Message& msg, auto& n, double) {
         sf_config::forEachControl([&](auto in) {
           using In = decltype(in);
           if constexpr (In::first_same_topic == Owner::index) n.control(In::index, In::value(msg));
@@ -143,9 +152,94 @@ void subscribeInputs(Node& node, sf_filter::FrameAligner* aligner) {
   });
 }
 
+/// Offline replay: `<node> --replay in.bag [--csv out.csv] [--bag out.bag] [options]`.
+int replayMain(int argc, char** argv) {
+  const std::string program = argv[0];
+  const std::string usage =
+      "usage: " + program +
+      " --replay INPUT.bag [--csv OUT.csv] [--bag OUT.bag] [--name NODE]\n"
+      "       [--estimation-period MS] [--scale-q FACTOR] [--scale-r FACTOR] [--seed N]\n"
+      "Replays the bag through this node's filter without a ROS master, in recorded-time\n"
+      "order, and writes the estimates. Without --csv and --bag only a summary is printed.";
+  sf_filter::ReplayOptions options;
+  options.nodeName = program.substr(program.find_last_of('/') + 1);
+  double periodMs = sf_config::kEstimationPeriodMs, scaleQ = 1.0, scaleR = 1.0;
+  std::optional<long> seed;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      auto value = [&]() -> std::string {
+        if (i + 1 >= argc) throw std::invalid_argument("option " + arg + " needs a value");
+        return argv[++i];
+      };
+      if (arg == "--help") {
+        std::cout << usage << std::endl;
+        return EXIT_SUCCESS;
+      } else if (arg == "--replay") {
+        options.inputBag = value();
+      } else if (arg == "--csv") {
+        options.csvPath = value();
+      } else if (arg == "--bag") {
+        options.outputBag = value();
+      } else if (arg == "--name") {
+        options.nodeName = value();
+      } else if (arg == "--estimation-period") {
+        periodMs = std::stod(value());
+      } else if (arg == "--scale-q") {
+        scaleQ = std::stod(value());
+      } else if (arg == "--scale-r") {
+        scaleR = std::stod(value());
+      } else if (arg == "--seed") {
+        seed = std::stol(value());
+      } else {
+        throw std::invalid_argument("unknown option " + arg);
+      }
+    }
+    if (!(periodMs > 0.0)) throw std::invalid_argument("--estimation-period must be positive");
+    if (!(scaleQ > 0.0) || !(scaleR > 0.0)) throw std::invalid_argument("scale factors must be positive");
+    if (seed && *seed < 0) throw std::invalid_argument("--seed must not be negative");
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << "\n" << usage << std::endl;
+    return 2;
+  }
+  try {
+    if constexpr (sf_config::kHasFrameAlignment) {
+      throw sf_filter::ReplayError(
+          "offline replay does not support FRAME_ALIGNED_INPUTS (it needs the bag's tf); "
+          "replay the bag online with rosbag play --clock");
+    }
+    ros::Time::init();
+    sf_config::Parameters parameters = sf_config::defaultParameters(periodMs);
+    parameters.process_noise_covariance *= scaleQ;
+    parameters.measurement_noise_covariance *= scaleR;
+    if (seed) parameters.random_seed = static_cast<unsigned>(*seed);
+    sf_filter::BagReplay<sf_filter::generated::Filter> replay(
+        sf_filter::generated::makeFilter(parameters), periodMs / 1000.0, describe(nullptr),
+        options);
+    subscribeInputs(replay, nullptr);
+    const auto start = std::chrono::steady_clock::now();
+    const sf_filter::ReplaySummary s = replay.run();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << options.nodeName << ": " << s.messages << " messages, " << s.estimates
+              << " estimates, " << s.dropped << " dropped values, "
+              << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
+              << " us per estimation step, " << wall << " s in all" << std::endl;
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << std::endl;
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--replay" || std::string(argv[i]) == "--help") {
+      return replayMain(argc, argv);
+    }
+  }
   ros::init(argc, argv, "sf_filter");
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
@@ -169,3 +263,5 @@ int main(int argc, char** argv) {
   ros::spin();
   return EXIT_SUCCESS;
 }
+
+#endif  // SF_CONFIG_OK

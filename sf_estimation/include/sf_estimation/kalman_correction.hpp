@@ -15,7 +15,6 @@
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/measurement_noise.hpp"
 #include "sf_estimation/parameter_checks.hpp"
-#include "sf_estimation/probability/gaussian.hpp"
 
 namespace estimation {
 
@@ -30,26 +29,38 @@ void neutraliseMissing(const Measurement<M>& z, Vector<M>& innovation, RowsType&
   }
 }
 
-/// K = crossCovariance * S^-1, with S factorised by Cholesky. Throws NumericalError when S is
-/// not positive definite or the gain is not finite.
+/// K = crossCovariance * S^-1. Throws NumericalError when S is not positive definite or the
+/// gain is not finite.
+///
+/// S is factorised as L D L^T (unit lower triangular L, diagonal D; the square-root-free form
+/// of Cholesky, with the same positive-definiteness test: every pivot of D > 0). At these
+/// sizes the cost is latency, not arithmetic: Cholesky chains a square root and a division
+/// per column, through the factorisation and again through both triangular solves, while
+/// here the solves need no division but the independent ones by D. Both solves run on whole
+/// columns of K (contiguous N-vectors).
 template <int N, int M>
 void kalmanGain(const Matrix<N, M>& crossCovariance, const Matrix<M, M>& S, Matrix<N, M>& K) {
-  Matrix<M, M> L = S;
-  if (!probability::choleskyInPlace(L)) {
-    throw NumericalError("innovation covariance is not positive definite; step rejected");
+  const Index m = S.rows();
+  Matrix<M, M> LD = S;  // becomes L below the diagonal and D on it; only S's lower part is read
+  for (Index k = 0; k < m; ++k) {
+    for (Index j = 0; j < k; ++j) {
+      const double scaled = LD(k, j) * LD(j, j);  // L(k,j) D(j)
+      LD(k, k) -= scaled * LD(k, j);
+      for (Index i = k + 1; i < m; ++i) LD(i, k) -= LD(i, j) * scaled;
+    }
+    if (LD(k, k) <= 0.0) {
+      throw NumericalError("innovation covariance is not positive definite; step rejected");
+    }
+    for (Index i = k + 1; i < m; ++i) LD(i, k) /= LD(k, k);
   }
-  // K L L^T = crossCovariance, solved by two substitutions on whole columns of K (contiguous
-  // N-vectors); Eigen's solve with a matrix right-hand side goes through its blocked
-  // triangular solver, several times slower at these sizes.
+  // K L D L^T = crossCovariance.
   K = crossCovariance;
-  const Index m = L.rows();
   for (Index i = 0; i < m; ++i) {  // K <- K L^-T
-    for (Index j = 0; j < i; ++j) K.col(i) -= L(i, j) * K.col(j);
-    K.col(i) /= L(i, i);
+    for (Index j = 0; j < i; ++j) K.col(i) -= LD(i, j) * K.col(j);
   }
-  for (Index i = m - 1; i >= 0; --i) {  // K <- K L^-1
-    for (Index j = i + 1; j < m; ++j) K.col(i) -= L(j, i) * K.col(j);
-    K.col(i) /= L(i, i);
+  for (Index i = 0; i < m; ++i) K.col(i) /= LD(i, i);  // K <- K D^-1
+  for (Index i = m - 1; i >= 0; --i) {                 // K <- K L^-1
+    for (Index j = i + 1; j < m; ++j) K.col(i) -= LD(j, i) * K.col(j);
   }
   if (!K.allFinite()) throw NumericalError("Kalman gain is not finite; step rejected");
 }

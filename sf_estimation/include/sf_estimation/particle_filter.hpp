@@ -60,6 +60,7 @@ class ParticleFilterSIR {
       throw ParameterError(method + ": parameter 'resampling-threshold' must be in [0, 1]");
     }
     noiseRoot_ = probability::covarianceSquareRoot(Q);
+    findNoiseSources();
     const Index m = R.rows(), p = params.particles;
     u_ = Vector<L>::Zero(model_.controlSize());
     particles_.resize(n, p);
@@ -70,8 +71,9 @@ class ParticleFilterSIR {
     weights_.resize(p);
     state_.resize(n);
     covariance_.resize(n, n);
-    fullNoise_.compute(R);
-    maskedNoise_ = fullNoise_;
+    maskedNoise_.compute(R);
+    whiteningOf(maskedNoise_, fullWhitening_);
+    maskedWhitening_ = fullWhitening_;
     reducedR_.resize(m, m);
     reset();
   }
@@ -103,7 +105,7 @@ class ParticleFilterSIR {
     particles_.noalias() = root * noise_;
     particles_.colwise() += x0_;
     logWeights_.setConstant(-std::log(static_cast<double>(particleCount())));
-    updateWeights();
+    weights_.setConstant(1.0 / static_cast<double>(particleCount()));
     updateMoments();
     effectiveSampleSize_ = static_cast<double>(particleCount());
     resampled_ = false;
@@ -140,7 +142,11 @@ class ParticleFilterSIR {
       in = particles_.col(i);
       model_.transition(in, u_, out);
       probability::fillStandardNormal(engine_, noise);
-      scratch_.col(i).noalias() = noiseRoot_ * noise;
+      if (noisePerRow_) {
+        for (Index r = 0; r < n; ++r) scratch_(r, i) = noiseScale_(r) * noise(noiseSource_(r));
+      } else {
+        scratch_.col(i).noalias() = noiseRoot_ * noise;
+      }
       scratch_.col(i) += out;
       if (!scratch_.col(i).allFinite()) {
         throw NumericalError("ParticleFilterSIR: the state transition produced a non-finite "
@@ -150,15 +156,10 @@ class ParticleFilterSIR {
     // Weight: log w_i += log N(z; h(x_i), R) over the present entries.
     newLogWeights_ = logWeights_;
     if (z.anyAvailable()) weigh(z);
-    const double total = probability::logSumExp(newLogWeights_);
-    if (!std::isfinite(total)) {
-      throw NumericalError("ParticleFilterSIR: all particle weights vanished; step rejected");
-    }
-    newLogWeights_.array() -= total;
+    normaliseWeights();
 
     particles_.swap(scratch_);
     logWeights_.swap(newLogWeights_);
-    updateWeights();
     effectiveSampleSize_ = 1.0 / weights_.squaredNorm();
     resampled_ = effectiveSampleSize_ < params_.resamplingThreshold * static_cast<double>(p);
     if (resampled_) resample();
@@ -167,18 +168,19 @@ class ParticleFilterSIR {
 
   void weigh(const Measurement<M>& z) {
     const Index m = measurementSize(), p = particleCount();
-    const Eigen::LLT<Matrix<M, M>>* noise = &fullNoise_;
+    const Matrix<M, M>* whitening = &fullWhitening_;
     if (z.availableCount() != m || z.varianceGiven.any()) {
       effectiveMeasurementNoise(R_, z, reducedR_);
       maskedNoise_.compute(reducedR_);
       if (maskedNoise_.info() != Eigen::Success) {
         throw NumericalError("ParticleFilterSIR: measurement noise is not positive definite");
       }
-      noise = &maskedNoise_;
+      whiteningOf(maskedNoise_, maskedWhitening_);
+      whitening = &maskedWhitening_;
     }
     const bool complete = z.availableCount() == m;
     Vector<N> in(stateSize());
-    Vector<M> expected(m), residual(m);
+    Vector<M> expected(m), residual(m), whitened(m);
     for (Index i = 0; i < p; ++i) {
       in = scratch_.col(i);  // the freshly sampled particles, not yet committed
       model_.observation(in, expected);
@@ -186,8 +188,29 @@ class ParticleFilterSIR {
       for (Index j = 0; !complete && j < m; ++j) {
         if (!z.available(j)) residual(j) = 0.0;
       }
-      noise->matrixL().solveInPlace(residual);
-      newLogWeights_(i) -= 0.5 * residual.squaredNorm();
+      whitened.noalias() = *whitening * residual;
+      newLogWeights_(i) -= 0.5 * whitened.squaredNorm();
+    }
+  }
+
+  /// A diagonal Q (the usual case) has a root with at most one nonzero per row: a diagonal
+  /// permuted by the pivoting of the LDLT. Then entry r of the process noise is the single
+  /// product noiseScale_(r) * w(noiseSource_(r)), the same value the full row of the matrix
+  /// product gives (its other terms are zero), at a seventh of the cost for n = 7.
+  void findNoiseSources() {
+    const Index n = noiseRoot_.rows();
+    noiseSource_.setZero(n);
+    noiseScale_.setZero(n);
+    noisePerRow_ = true;
+    for (Index r = 0; r < n; ++r) {
+      Index nonzeros = 0;
+      for (Index c = 0; c < n; ++c) {
+        if (noiseRoot_(r, c) == 0.0) continue;
+        ++nonzeros;
+        noiseSource_(r) = c;
+        noiseScale_(r) = noiseRoot_(r, c);
+      }
+      if (nonzeros > 1) noisePerRow_ = false;
     }
   }
 
@@ -206,36 +229,70 @@ class ParticleFilterSIR {
     }
     particles_.swap(scratch_);
     logWeights_.setConstant(-std::log(static_cast<double>(p)));
-    updateWeights();
+    weights_.setConstant(step);
   }
 
-  /// weights_ = exp(logWeights_), except that weights below e^-700 are exactly zero. Such a
-  /// weight cannot change any sum the filter forms (the largest weight is at least 1/p), and
-  /// computing it would yield a denormal number (Eigen's exp returns about 5.6e-309 for any
-  /// argument below -709), on which x86 arithmetic is many times slower: with an accurate
-  /// sensor most particles are in that range.
-  void updateWeights() {
+  /// L^-1 for the Cholesky factor L of a noise covariance: the log-likelihood's |L^-1 r|^2
+  /// then costs multiplications only, where solving with L costs m divisions per particle.
+  static void whiteningOf(const Eigen::LLT<Matrix<M, M>>& factor, Matrix<M, M>& inverse) {
+    const Index m = factor.rows();
+    inverse = factor.matrixL().solve(Matrix<M, M>::Identity(m, m));
+  }
+
+  /// Normalises newLogWeights_ (log-sum-exp) and sets weights_ to the normalised weights, one
+  /// exp per particle serving both: w_i = e_i / sum_j e_j with e_i = exp(l_i - max_j l_j).
+  /// An e_i below e^-700 is taken as zero: it cannot change the sum, which contains e^0 = 1,
+  /// and computing it would give a denormal number, on which x86 arithmetic is many times
+  /// slower (with an accurate sensor most particles are there).
+  void normaliseWeights() {
     constexpr double kLogFloor = -700.0;
-    weights_ = logWeights_.array().max(kLogFloor).exp();
-    for (Index i = 0; i < weights_.size(); ++i) {
-      if (logWeights_(i) < kLogFloor) weights_(i) = 0.0;
+    const double largest = newLogWeights_.maxCoeff();
+    if (!std::isfinite(largest) || newLogWeights_.hasNaN()) {
+      throw NumericalError("ParticleFilterSIR: all particle weights vanished; step rejected");
     }
+    double sum = 0.0;
+    for (Index i = 0; i < newLogWeights_.size(); ++i) {
+      const double relative = newLogWeights_(i) - largest;
+      weights_(i) = relative < kLogFloor ? 0.0 : std::exp(relative);
+      sum += weights_(i);
+    }
+    newLogWeights_.array() -= largest + std::log(sum);
+    weights_ /= sum;
   }
 
-  /// Weighted mean and covariance of the particles; weights_ must be up to date.
+  /// Weighted mean and covariance of the particles; weights_ must be up to date. Both are sums
+  /// over the particles, one at a time: Eigen evaluates the mean's n x p times p product as n
+  /// strided dot products, and the covariance as one n x p x n product would need the
+  /// deviations scaled and stored first, both slower at these sizes.
   void updateMoments() {
-    state_.noalias() = particles_ * weights_;
-    // sum_i w_i d_i d_i^T, one small outer product per particle: cheaper than one n x p x n
-    // matrix product, which needs the deviations scaled and stored first.
+    state_.setZero();
+    forEachDistinctParticle([&](Index i, double w) { state_ += w * particles_.col(i); });
     Vector<N> deviation(stateSize()), weighted(stateSize());
     covariance_.setZero();
-    for (Index i = 0; i < particles_.cols(); ++i) {
+    forEachDistinctParticle([&](Index i, double w) {
       deviation = particles_.col(i) - state_;
-      weighted = weights_(i) * deviation;
+      weighted = w * deviation;
       covariance_.noalias() += weighted * deviation.transpose();
-    }
+    });
     symmetrize(covariance_);
   }
+
+  /// Calls f(i, w) for each run of equal adjacent particles, with i its first particle and w
+  /// their summed weight, skipping zero weights. Resampling copies a particle to adjacent
+  /// places, and after resampling with an accurate sensor most particles are such copies.
+  template <class F>
+  void forEachDistinctParticle(F&& f) const {
+    const Index p = particles_.cols();
+    for (Index i = 0; i < p;) {
+      double weight = weights_(i);
+      Index next = i + 1;
+      while (next < p && particles_.col(next) == particles_.col(i)) weight += weights_(next++);
+      if (weight != 0.0) f(i, weight);
+      i = next;
+    }
+  }
+
+
 
   Model model_;
   Matrix<N, N> Q_;
@@ -244,7 +301,11 @@ class ParticleFilterSIR {
   Matrix<N, N> P0_;
   ParticleFilterParameters params_;
   Matrix<N, N> noiseRoot_;
-  Eigen::LLT<Matrix<M, M>> fullNoise_, maskedNoise_;
+  bool noisePerRow_ = false;                 // see findNoiseSources()
+  Eigen::Matrix<Index, N, 1> noiseSource_;
+  Vector<N> noiseScale_;
+  Eigen::LLT<Matrix<M, M>> maskedNoise_;
+  Matrix<M, M> fullWhitening_, maskedWhitening_;  // L^-1 of R and of this step's noise
   Matrix<M, M> reducedR_;
   Vector<L> u_;
   probability::RandomEngine engine_;

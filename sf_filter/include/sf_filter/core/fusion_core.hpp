@@ -4,6 +4,7 @@
 // adapters around it, so both behave identically and it is unit-tested without a master.
 #pragma once
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -151,6 +152,9 @@ class FusionCore {
   const std::string& lastFailure() const { return lastFailure_; }
   std::uint64_t controlNonFinite() const { return controlNonFinite_; }
   double period() const { return options_.period; }
+  /// Wall time spent in the estimator's steps, and their number (failed steps excluded).
+  double estimatorSeconds() const { return estimatorSeconds_; }
+  std::uint64_t estimateCount() const { return estimateCount_; }
 
  private:
   void estimatePeriod(double end) {
@@ -167,9 +171,12 @@ class FusionCore {
       }
       in.clear();
     }
+    const auto begin = std::chrono::steady_clock::now();
     try {
       filter_.setControl(control_);
       filter_.estimate(measurement_);
+      estimatorSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+      ++estimateCount_;
     } catch (const estimation::EstimationError& e) {
       // The filter rejected the step and kept its belief; a numerical failure is not
       // recoverable by waiting, so the filter restarts from its initial belief.
@@ -196,6 +203,8 @@ class FusionCore {
   estimation::Measurement<M> measurement_;
   estimation::Vector<L> control_;
   Estimate last_;
+  double estimatorSeconds_ = 0.0;
+  std::uint64_t estimateCount_ = 0;
   std::uint64_t clockResets_ = 0;
   std::uint64_t estimationFailures_ = 0;
   std::uint64_t controlNonFinite_ = 0;

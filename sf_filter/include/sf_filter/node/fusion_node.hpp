@@ -13,24 +13,14 @@
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
-#include <tf2/LinearMath/Quaternion.h>
 #include <tf2_ros/transform_broadcaster.h>
 
-#include <sf_pkg/OutputEntityStamped.h>
-#include <sf_pkg/StateEstimateStamped.h>
 
 #include "sf_filter/core/fusion_core.hpp"
+#include "sf_filter/node/estimate_messages.hpp"
+#include "sf_filter/node/node_description.hpp"
 
 namespace sf_filter {
-
-/// What the configuration header says about the node's interface.
-struct NodeDescription {
-  std::string method;
-  std::vector<std::string> inputs;    ///< "topic field" per measurement input
-  std::vector<std::string> controls;  ///< "topic field" per control input
-  std::vector<std::pair<std::string, int>> outputs;  ///< topic and state index (TOPICS_OUT)
-  std::optional<std::array<int, 3>> pose;  ///< state indices of x, y, heading (POSE_OUT)
-};
 
 template <class Filter>
 class FusionNode {
@@ -113,56 +103,12 @@ class FusionNode {
   }
 
   void publish(const typename Core::Estimate& e) {
-    const ros::Time stamp(e.time);
     for (std::size_t k = 0; k < outputs_.size(); ++k) {
-      const int i = description_.outputs[k].second;
-      sf_pkg::OutputEntityStamped msg;
-      msg.header.stamp = stamp;
-      msg.header.frame_id = frameId_;
-      msg.value = e.state(i);
-      msg.variance = e.covariance(i, i);
-      outputs_[k].publish(msg);
+      outputs_[k].publish(makeOutputEntity(e, description_.outputs[k].second, frameId_));
     }
-    const Index n = e.state.size();
-    sf_pkg::StateEstimateStamped state;
-    state.header.stamp = stamp;
-    state.header.frame_id = frameId_;
-    state.method = description_.method;
-    state.state.assign(e.state.data(), e.state.data() + n);
-    state.covariance.resize(static_cast<std::size_t>(n * n));
-    for (Index r = 0; r < n; ++r) {
-      for (Index c = 0; c < n; ++c) state.covariance[static_cast<std::size_t>(r * n + c)] = e.covariance(r, c);
-    }
-    state.present_inputs = static_cast<std::uint32_t>(e.presentInputs);
-    state_.publish(state);
-    if (description_.pose) publishPose(e, stamp);
-  }
-
-  /// nav_msgs/Odometry and the frame_id -> child_frame_id transform from the planar pose.
-  void publishPose(const typename Core::Estimate& e, const ros::Time& stamp) {
-    const auto [ix, iy, ith] = *description_.pose;
-    tf2::Quaternion q;
-    q.setRPY(0.0, 0.0, e.state(ith));
-    nav_msgs::Odometry odom;
-    odom.header.stamp = stamp;
-    odom.header.frame_id = frameId_;
-    odom.child_frame_id = childFrameId_;
-    odom.pose.pose.position.x = e.state(ix);
-    odom.pose.pose.position.y = e.state(iy);
-    odom.pose.pose.orientation.x = q.x();
-    odom.pose.pose.orientation.y = q.y();
-    odom.pose.pose.orientation.z = q.z();
-    odom.pose.pose.orientation.w = q.w();
-    // Covariance over (x, y, z, roll, pitch, yaw): fill the planar block, mark z/roll/pitch
-    // as unknown with a large variance.
-    const std::array<int, 3> idx = {ix, iy, ith};
-    const std::array<int, 3> slot = {0, 1, 5};
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) {
-        odom.pose.covariance[static_cast<std::size_t>(slot[r] * 6 + slot[c])] = e.covariance(idx[r], idx[c]);
-      }
-    }
-    for (int k : {2, 3, 4}) odom.pose.covariance[static_cast<std::size_t>(k * 7)] = 1e6;
+    state_.publish(makeStateEstimate(e, description_.method, frameId_));
+    if (!description_.pose) return;
+    const nav_msgs::Odometry odom = makeOdometry(e, *description_.pose, frameId_, childFrameId_);
     odometry_.publish(odom);
     if (publishTf_) {
       geometry_msgs::TransformStamped t;

@@ -1,0 +1,77 @@
+// The ROS messages an estimate is published as, shared by the online node and the offline
+// bag replay so that both write exactly the same thing.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include <Eigen/Core>
+#include <nav_msgs/Odometry.h>
+#include <tf2/LinearMath/Quaternion.h>
+
+#include <sf_pkg/OutputEntityStamped.h>
+#include <sf_pkg/StateEstimateStamped.h>
+
+namespace sf_filter {
+
+template <class Estimate>
+sf_pkg::OutputEntityStamped makeOutputEntity(const Estimate& e, int index,
+                                             const std::string& frame) {
+  sf_pkg::OutputEntityStamped msg;
+  msg.header.stamp = ros::Time(e.time);
+  msg.header.frame_id = frame;
+  msg.value = e.state(index);
+  msg.variance = e.covariance(index, index);
+  return msg;
+}
+
+template <class Estimate>
+sf_pkg::StateEstimateStamped makeStateEstimate(const Estimate& e, const std::string& method,
+                                               const std::string& frame) {
+  const Eigen::Index n = e.state.size();
+  sf_pkg::StateEstimateStamped msg;
+  msg.header.stamp = ros::Time(e.time);
+  msg.header.frame_id = frame;
+  msg.method = method;
+  msg.state.assign(e.state.data(), e.state.data() + n);
+  msg.covariance.resize(static_cast<std::size_t>(n * n));
+  for (Eigen::Index r = 0; r < n; ++r) {
+    for (Eigen::Index c = 0; c < n; ++c) {
+      msg.covariance[static_cast<std::size_t>(r * n + c)] = e.covariance(r, c);
+    }
+  }
+  msg.present_inputs = static_cast<std::uint32_t>(e.presentInputs);
+  return msg;
+}
+
+/// Planar pose (x, y, heading state indices) as nav_msgs/Odometry. The covariance block of
+/// (x, y, yaw) comes from the state; z, roll and pitch are marked unknown (1e6).
+template <class Estimate>
+nav_msgs::Odometry makeOdometry(const Estimate& e, const std::array<int, 3>& pose,
+                                const std::string& frame, const std::string& childFrame) {
+  const auto [ix, iy, ith] = pose;
+  tf2::Quaternion q;
+  q.setRPY(0.0, 0.0, e.state(ith));
+  nav_msgs::Odometry odom;
+  odom.header.stamp = ros::Time(e.time);
+  odom.header.frame_id = frame;
+  odom.child_frame_id = childFrame;
+  odom.pose.pose.position.x = e.state(ix);
+  odom.pose.pose.position.y = e.state(iy);
+  odom.pose.pose.orientation.x = q.x();
+  odom.pose.pose.orientation.y = q.y();
+  odom.pose.pose.orientation.z = q.z();
+  odom.pose.pose.orientation.w = q.w();
+  const std::array<int, 3> index = {ix, iy, ith};
+  const std::array<int, 3> slot = {0, 1, 5};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      odom.pose.covariance[static_cast<std::size_t>(slot[r] * 6 + slot[c])] =
+          e.covariance(index[r], index[c]);
+    }
+  }
+  for (int k : {2, 3, 4}) odom.pose.covariance[static_cast<std::size_t>(k * 7)] = 1e6;
+  return odom;
+}
+
+}  // namespace sf_filter
