@@ -37,6 +37,17 @@
   ((0)(0)(2)(0)) \
   ((0)(0)(0)(2))
 #define INITIAL_STATE (0)(0)(0)(0)(0)(0)(0)
+// The robot starts on a marked position (section 5.1): x, y and theta are known almost
+// exactly. With the default P0 = I the heading, which no sensor measures, would keep a
+// variance of 1 rad^2 and a UKF would average cos(theta) over +-1 rad, shrinking the path.
+#define INITIAL_ERROR_COVARIANCE \
+  ((1e-4)(0)(0)(0)(0)(0)(0)) \
+  ((0)(1e-4)(0)(0)(0)(0)(0)) \
+  ((0)(0)(1e-4)(0)(0)(0)(0)) \
+  ((0)(0)(0)(1)(0)(0)(0)) \
+  ((0)(0)(0)(0)(1)(0)(0)) \
+  ((0)(0)(0)(0)(0)(1)(0)) \
+  ((0)(0)(0)(0)(0)(0)(1))
 #define TOPICS_IN \
   ((angular_velocity)(geometry_msgs::Vector3Stamped)(vector.z)) \
   ((acceleration)(geometry_msgs::Vector3Stamped)(vector.y)) \

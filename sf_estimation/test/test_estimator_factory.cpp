@@ -326,6 +326,17 @@ TEST(EstimatorFactory, AveragingMethodsRunThroughTheInterface) {
   ASSERT_EQ(out.size(), 1u);
   EXPECT_NEAR(out[0].getValue(), 3.0, 1e-12);
   EXPECT_NEAR(out[0].getVariance(), 0.8, 1e-12);
+
+  // None of them takes controls: an empty control input is accepted, a non-empty refused.
+  for (IEstimator* e : {average.get(), median.get(), fused.get()}) {
+    EXPECT_FALSE(e->description().empty());
+    EXPECT_NO_THROW(e->setControlInput(Input()));
+    EXPECT_THROW(e->setControlInput(toInput(Eigen::VectorXd::Constant(1, 1.0))),
+                 InvalidInputError);
+  }
+  EXPECT_NE(median->description().find("MovingMedian"), std::string::npos);
+  EXPECT_NE(fused->description().find("ConfidenceWeightedAveraging"), std::string::npos)
+      << fused->description();
 }
 
 TEST(EstimatorFactory, ControlInputKeepsMissingEntries) {

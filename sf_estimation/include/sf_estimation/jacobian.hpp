@@ -33,12 +33,17 @@ struct HasObservationJacobian<
                std::declval<Matrix<Model::MeasurementSize, Model::StateSize>&>()))>>
     : std::true_type {};
 
-/// Seeds an AutoDiff vector with x and the unit derivative directions.
+/// Seeds an AutoDiff vector with x and the unit derivative directions. Entries are written in
+/// place: assigning a temporary AutoDiffScalar costs a store-forwarding stall per entry.
 template <class ADVector>
 void seedDerivatives(const Vector<ADVector::RowsAtCompileTime>& x, ADVector& seeded) {
+  using Derivatives = typename ADVector::Scalar::DerType;
   const Index n = x.size();
   seeded.resize(n);
-  for (Index i = 0; i < n; ++i) seeded(i) = typename ADVector::Scalar(x(i), n, i);
+  for (Index i = 0; i < n; ++i) {
+    seeded(i).value() = x(i);
+    seeded(i).derivatives() = Derivatives::Unit(n, i);
+  }
 }
 
 /// Copies the derivative rows of an AutoDiff result into a Jacobian. Entries that do not

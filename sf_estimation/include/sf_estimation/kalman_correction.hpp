@@ -41,17 +41,23 @@ void neutraliseMissing(const Measurement<M>& z, Vector<M>& innovation, RowsType&
 template <int N, int M>
 void kalmanGain(const Matrix<N, M>& crossCovariance, const Matrix<M, M>& S, Matrix<N, M>& K) {
   const Index m = S.rows();
-  Matrix<M, M> LD = S;  // becomes L below the diagonal and D on it; only S's lower part is read
+  Matrix<M, M> LD(m, m);  // L below the diagonal, D on it; only S's lower part is read
+  Vector<M> scaled(m);    // row k of L times D
   for (Index k = 0; k < m; ++k) {
+    double pivot = S(k, k);
     for (Index j = 0; j < k; ++j) {
-      const double scaled = LD(k, j) * LD(j, j);  // L(k,j) D(j)
-      LD(k, k) -= scaled * LD(k, j);
-      for (Index i = k + 1; i < m; ++i) LD(i, k) -= LD(i, j) * scaled;
+      scaled(j) = LD(k, j) * LD(j, j);
+      pivot -= scaled(j) * LD(k, j);
     }
-    if (LD(k, k) <= 0.0) {
+    if (pivot <= 0.0) {
       throw NumericalError("innovation covariance is not positive definite; step rejected");
     }
-    for (Index i = k + 1; i < m; ++i) LD(i, k) /= LD(k, k);
+    LD(k, k) = pivot;
+    for (Index i = k + 1; i < m; ++i) {
+      double sum = S(i, k);
+      for (Index j = 0; j < k; ++j) sum -= LD(i, j) * scaled(j);
+      LD(i, k) = sum / pivot;
+    }
   }
   // K L D L^T = crossCovariance.
   K = crossCovariance;
@@ -79,7 +85,9 @@ void linearCorrection(Vector<N>& x, Matrix<N, N>& P, const Matrix<M, N>& H, cons
   x += K * y;
   Matrix<N, N> IKH = -K * H;
   IKH.diagonal().array() += 1.0;
-  P = IKH * P * IKH.transpose() + K * R * K.transpose();
+  // (I - K H) P = P - K (P H^T)^T as P is symmetric: reuses P H^T, n^2 m instead of n^3.
+  const Matrix<N, N> IKHP = P - K * PHt.transpose();
+  P = IKHP * IKH.transpose() + K * R * K.transpose();
 }
 
 }  // namespace estimation
