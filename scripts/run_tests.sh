@@ -14,7 +14,7 @@ rm -rf "$results"
 
 sf_log "running tests (log: ${SF_WS}/tests.log)"
 t0=$SECONDS
-cmd=(catkin_make -C "$SF_WS" -j"${SF_JOBS}"
+cmd=(catkin_make -C "$SF_WS" -j"${SF_JOBS}" -k
   -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests)
 if [[ "$SF_VERBOSE" == 1 ]]; then
   "${cmd[@]}" 2>&1 | tee "${SF_WS}/tests.log" && test_rc=0 || test_rc=$?
