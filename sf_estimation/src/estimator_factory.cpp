@@ -26,6 +26,11 @@ const char* typeName(const Parameter& p) {
   }
 }
 
+/// "an integer", "a matrix ...": the article of an expected type in an error message.
+std::string article(const std::string& word) {
+  return !word.empty() && std::string("aeiou").find(word[0]) != std::string::npos ? "an" : "a";
+}
+
 /// Typed, checked access to the parameter map of one method.
 class ParameterReader {
  public:
@@ -102,7 +107,7 @@ class ParameterReader {
   }
   ParameterError wrongType(const std::string& name, const std::string& expected,
                            const Parameter& p) const {
-    return ParameterError(method_ + ": parameter '" + name + "' must be a " + expected +
+    return ParameterError(method_ + ": parameter '" + name + "' must be " + article(expected) + " " + expected +
                           ", got " + typeName(p));
   }
 
@@ -115,12 +120,18 @@ struct GaussianParameters {
   Eigen::MatrixXd Q, R, P0;
   Eigen::VectorXd x0;
 
-  GaussianParameters(const ParameterReader& in, Index n, Index m) {
+  /// n and m come from the model (or A and H); every matrix is checked against them here so
+  /// that an error names the parameter and the size it should have.
+  GaussianParameters(const std::string& method, const ParameterReader& in, Index n, Index m) {
     const std::string nn = "(" + std::to_string(n) + "x" + std::to_string(n) + ")";
     Q = in.matrix("Q", nn);
     R = in.matrix("R", "(" + std::to_string(m) + "x" + std::to_string(m) + ")");
     x0 = in.has("x0") ? in.vector("x0", "(" + std::to_string(n) + ")") : Eigen::VectorXd::Zero(n);
     P0 = in.has("P0") ? in.matrix("P0", nn) : Eigen::MatrixXd::Identity(n, n);
+    requireSize(method, "Q", Q, n, n);
+    requireSize(method, "R", R, m, m);
+    requireSize(method, "x0", x0, n, 1);
+    requireSize(method, "P0", P0, n, n);
   }
 };
 
@@ -134,7 +145,7 @@ std::unique_ptr<IEstimator> createKalman(const ParameterMap& map) {
   const Eigen::MatrixXd A = in.matrix("A", "(n x n)");
   const Eigen::MatrixXd H = in.matrix("H", "(m x n)");
   const Eigen::MatrixXd B = in.has("B") ? in.matrix("B", "(n x l)") : Eigen::MatrixXd(A.rows(), 0);
-  const GaussianParameters g(in, A.rows(), H.rows());
+  const GaussianParameters g("KalmanFilter", in, A.rows(), H.rows());
   return wrap(KalmanFilter<Dynamic, Dynamic, Dynamic>(A, B, H, g.Q, g.R, g.x0, g.P0));
 }
 
@@ -145,7 +156,7 @@ std::unique_ptr<IEstimator> createExtendedKalman(const ParameterMap& map) {
     throw ParameterError("ExtendedKalmanFilter: parameter 'model' has no Jacobians; build it "
                          "with makeFunctionModel() from generic lambdas or pass them");
   }
-  const GaussianParameters g(in, model.stateSize(), model.measurementSize());
+  const GaussianParameters g("ExtendedKalmanFilter", in, model.stateSize(), model.measurementSize());
   return wrap(ExtendedKalmanFilter<FunctionModel>(model, g.Q, g.R, g.x0, g.P0));
 }
 
@@ -153,7 +164,7 @@ std::unique_ptr<IEstimator> createUnscentedKalman(const ParameterMap& map) {
   const ParameterReader in("UnscentedKalmanFilter", map,
                            {"model", "Q", "R", "x0", "P0", "alpha", "beta", "kappa"});
   FunctionModel model = in.model();
-  const GaussianParameters g(in, model.stateSize(), model.measurementSize());
+  const GaussianParameters g("UnscentedKalmanFilter", in, model.stateSize(), model.measurementSize());
   UnscentedParameters ut;
   ut.alpha = in.number("alpha", ut.alpha);
   ut.beta = in.number("beta", ut.beta);
@@ -166,7 +177,7 @@ std::unique_ptr<IEstimator> createParticle(const ParameterMap& map) {
                            {"model", "Q", "R", "x0", "P0", "particles", "seed",
                             "resampling-threshold"});
   FunctionModel model = in.model();
-  const GaussianParameters g(in, model.stateSize(), model.measurementSize());
+  const GaussianParameters g("ParticleFilterSIR", in, model.stateSize(), model.measurementSize());
   ParticleFilterParameters pf;
   pf.particles = in.integer("particles", static_cast<int>(pf.particles));
   const int seed = in.integer("seed", static_cast<int>(pf.seed));

@@ -479,12 +479,7 @@ TEST(EstimatorFactoryErrors, WrongSizeIsRefusedWithParameterError) {
   }
 }
 
-// DISABLED: the factory does not check the sizes of Q, R, x0, P0 against the model; the
-// filter constructors then take n from Q, so a 3x3 Q for n = 2 is reported as
-// "parameter 'x0' must be 3x1, got 2x1" and a 3x3 R for m = 4 as "the model has 4
-// measurements but R is 3x3" (no expected size). Enable once GaussianParameters in
-// src/estimator_factory.cpp checks the sizes with requireSize (see the report).
-TEST(EstimatorFactoryErrors, DISABLED_WrongSizeNamesMethodParameterAndExpectedSize) {
+TEST(EstimatorFactoryErrors, WrongSizeNamesMethodParameterAndExpectedSize) {
   for (const auto& c : wrongSizeCases()) {
     const std::string message = parameterError(c.method, c.parameters);
     EXPECT_TRUE(contains(message, c.method)) << message;
