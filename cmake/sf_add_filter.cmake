@@ -4,10 +4,12 @@
 # Exported through catkin: a package that find_package()s sf_pkg can call it with its own
 # headers. The header path is relative to the calling CMakeLists.txt or absolute.
 if(NOT DEFINED SF_PKG_FILTER_MAIN)
-  # Inside sf_pkg itself, or from its source tree (devel space): the sources are beside us.
+  # Inside sf_pkg itself, or installed (share/sf_pkg mirrors the source tree): the main is
+  # beside this file's directory.
   get_filename_component(_sf_pkg_root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
   if(NOT EXISTS "${_sf_pkg_root}/sf_filter/src/fusion_node_main.cpp")
-    # Devel/install space: catkin puts this file in <prefix>/share/sf_pkg/cmake.
+    # Devel space: catkin puts this file in devel/share/sf_pkg/cmake; the main stays in
+    # the source tree.
     set(_sf_pkg_root "${sf_pkg_SOURCE_PREFIX}")
   endif()
   set(SF_PKG_FILTER_MAIN "${_sf_pkg_root}/sf_filter/src/fusion_node_main.cpp")
@@ -20,6 +22,7 @@ function(sf_add_filter name header)
   endif()
   add_executable(${name} "${SF_PKG_FILTER_MAIN}")
   target_compile_definitions(${name} PRIVATE SF_CONFIG_HEADER="${_header}")
+  target_compile_features(${name} PRIVATE cxx_std_17)
   # Configuration mistakes are reported by #error/static_assert naming the macro; the
   # macro-expansion backtrace under each would only bury that message.
   target_compile_options(${name} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ftrack-macro-expansion=0>)

@@ -1,0 +1,90 @@
+"""The install space serves a downstream package: `cmake --install` of the workspace build,
+then a throw-away catkin package that find_package()s only the installed sf_pkg builds a
+fusion node from its own copy of a shipped header with sf_add_filter() and runs it.
+
+Run by `catkin_make run_tests` (root CMakeLists.txt) with SF_BUILD_DIR (the workspace's
+build directory) and SF_INSTALL_PREFIX (its install prefix) in the environment.
+"""
+
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+BUILD_DIR = os.environ.get("SF_BUILD_DIR", "")
+PREFIX = os.environ.get("SF_INSTALL_PREFIX", "")
+
+PACKAGE_XML = """<?xml version="1.0"?>
+<package format="3">
+  <name>my_robot_fusion</name>
+  <version>0.0.1</version>
+  <description>Downstream package of the install-space test.</description>
+  <maintainer email="nobody@example.com">nobody</maintainer>
+  <license>BSD</license>
+  <buildtool_depend>catkin</buildtool_depend>
+  <depend>sf_pkg</depend>
+</package>
+"""
+
+CMAKELISTS = """cmake_minimum_required(VERSION 3.16)
+project(my_robot_fusion CXX)
+find_package(catkin REQUIRED COMPONENTS sf_pkg)
+catkin_package()
+sf_add_filter(my_train_kf config/my_train_kf.h)
+"""
+
+
+def run(cmd, env, cwd=None):
+    proc = subprocess.run(cmd, env=env, cwd=cwd, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, universal_newlines=True)
+    if proc.returncode != 0:
+        raise AssertionError("%s failed (exit %d):\n%s" % (" ".join(cmd), proc.returncode,
+                                                          proc.stdout[-6000:]))
+    return proc.stdout
+
+
+@unittest.skipUnless(BUILD_DIR and PREFIX, "SF_BUILD_DIR and SF_INSTALL_PREFIX not set")
+class InstallSpaceTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        # Only the installed prefix and the system, not the sourced devel space.
+        cls.env = {"PATH": "/usr/bin:/bin", "HOME": os.environ.get("HOME", "/tmp"),
+                   "CMAKE_PREFIX_PATH": PREFIX, "LANG": "C"}
+        run(["cmake", "--install", BUILD_DIR], cls.env)
+
+    def test_installed_files(self):
+        share = os.path.join(PREFIX, "share", "sf_pkg")
+        for rel in ["cmake/sf_add_filter.cmake", "sf_filter/src/fusion_node_main.cpp",
+                    "config/train_kf.h", "launch/filter.launch", "bags/pioneer_seed1.bag",
+                    "tools/eval/evaluate.py"]:
+            self.assertTrue(os.path.isfile(os.path.join(share, rel)), rel)
+        include = os.path.join(PREFIX, "include")
+        for rel in ["sf_filter/config/configuration.hpp", "sf_filter/core/fusion_core.hpp",
+                    "sf_estimation/estimator.hpp", "sf_pkg/OutputEntityStamped.h"]:
+            self.assertTrue(os.path.isfile(os.path.join(include, rel)), rel)
+        self.assertTrue(os.path.isfile(os.path.join(PREFIX, "lib", "sf_pkg", "sf_train_kf")))
+
+    def test_downstream_package_builds_a_node(self):
+        with tempfile.TemporaryDirectory(prefix="sf_install_test_") as tmp:
+            src = os.path.join(tmp, "my_robot_fusion")
+            os.makedirs(os.path.join(src, "config"))
+            with open(os.path.join(src, "package.xml"), "w") as f:
+                f.write(PACKAGE_XML)
+            with open(os.path.join(src, "CMakeLists.txt"), "w") as f:
+                f.write(CMAKELISTS)
+            shutil.copy(os.path.join(PREFIX, "share", "sf_pkg", "config", "train_kf.h"),
+                        os.path.join(src, "config", "my_train_kf.h"))
+            build = os.path.join(tmp, "build")
+            devel = os.path.join(tmp, "devel")
+            run(["cmake", "-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
+                 "-DCATKIN_DEVEL_PREFIX=" + devel], self.env)
+            run(["cmake", "--build", build, "--target", "my_train_kf", "--", "-j1"], self.env)
+            node = os.path.join(devel, "lib", "my_robot_fusion", "my_train_kf")
+            self.assertTrue(os.access(node, os.X_OK), node)
+            usage = run([node, "--help"], self.env)
+            self.assertIn("--replay", usage)
+
+
+if __name__ == "__main__":
+    unittest.main()
