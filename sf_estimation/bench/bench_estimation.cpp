@@ -7,7 +7,8 @@
 //
 // Inputs come from a simulated drive replayed in a loop; at the end of the drive the filter
 // is reset outside the timed region, so it never runs far from the data it was tuned for.
-// The counter allocs_per_step is the number of heap allocations per step (see below).
+// The counter allocs_per_step is the number of heap allocations per step
+// (support/allocation_counter.hpp).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -27,103 +28,7 @@
 #include "sf_estimation/models/navigation.hpp"
 #include "sf_estimation/particle_filter.hpp"
 #include "sf_estimation/unscented_kalman_filter.hpp"
-
-// -----------------------------------------------------------------------------
-// Heap allocation counter. The benchmark is single threaded, so a plain counter will do.
-// Every operator new is replaced; with glibc malloc and friends are too, because Eigen's
-// dynamic matrices allocate with std::malloc, not with operator new.
-// -----------------------------------------------------------------------------
-namespace {
-std::size_t gAllocations = 0;
-}  // namespace
-
-#if defined(__GLIBC__)
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* pointer, std::size_t size);
-void __libc_free(void* pointer);
-
-void* malloc(std::size_t size) {
-  ++gAllocations;
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  ++gAllocations;
-  return __libc_calloc(count, size);
-}
-void* realloc(void* pointer, std::size_t size) {
-  ++gAllocations;
-  return __libc_realloc(pointer, size);
-}
-void free(void* pointer) { __libc_free(pointer); }
-}
-#define SF_BENCH_RAW_MALLOC __libc_malloc  // operator new below must not count twice
-#else
-#define SF_BENCH_RAW_MALLOC std::malloc
-#endif
-
-namespace {
-
-void* countedNew(std::size_t size) {
-  ++gAllocations;
-  if (void* p = SF_BENCH_RAW_MALLOC(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-
-void* countedAlignedNew(std::size_t size, std::align_val_t alignment) {
-  ++gAllocations;
-  const auto align = static_cast<std::size_t>(alignment);
-  const std::size_t rounded = ((size == 0 ? 1 : size) + align - 1) / align * align;
-  if (void* p = std::aligned_alloc(align, rounded)) return p;
-  throw std::bad_alloc();
-}
-
-}  // namespace
-
-void* operator new(std::size_t size) { return countedNew(size); }
-void* operator new[](std::size_t size) { return countedNew(size); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return countedNew(size);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  return operator new(size, std::nothrow);
-}
-void* operator new(std::size_t size, std::align_val_t alignment) {
-  return countedAlignedNew(size, alignment);
-}
-void* operator new[](std::size_t size, std::align_val_t alignment) {
-  return countedAlignedNew(size, alignment);
-}
-void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-  try {
-    return countedAlignedNew(size, alignment);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t size, std::align_val_t alignment,
-                     const std::nothrow_t&) noexcept {
-  return operator new(size, alignment, std::nothrow);
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-  std::free(p);
-}
+#include "support/allocation_counter.hpp"
 
 namespace {
 
@@ -131,8 +36,8 @@ using namespace estimation;
 using models::Nav3Ctrl;
 using models::Nav3Reduced;
 
-constexpr double kPeriod = 0.1;   // T [s]
-constexpr double kRadius = 0.3;   // R [m]
+constexpr double kPeriod = 0.1;           // T [s]
+constexpr double kRadius = 0.3;           // R [m]
 constexpr std::size_t kDriveSteps = 400;  // 40 s of driving, replayed in a loop
 
 // -----------------------------------------------------------------------------
@@ -265,8 +170,8 @@ ParticleFilterSIR<Nav3Ctrl> makeParticle(Index particles) {
   ParticleFilterParameters params;
   params.particles = particles;
   params.seed = kSeed;
-  return ParticleFilterSIR<Nav3Ctrl>(Nav3Ctrl{kPeriod, kRadius}, kParticleQ, kR,
-                                     Vector<7>::Zero(), Matrix<7, 7>::Identity(), params);
+  return ParticleFilterSIR<Nav3Ctrl>(Nav3Ctrl{kPeriod, kRadius}, kParticleQ, kR, Vector<7>::Zero(),
+                                     Matrix<7, 7>::Identity(), params);
 }
 
 // -----------------------------------------------------------------------------
@@ -292,19 +197,20 @@ template <class Filter>
 void runSteps(benchmark::State& state, Filter& filter) {
   const Drive& d = drive();
   std::size_t k = 0, resetAllocations = 0;
-  const std::size_t before = gAllocations;
+  const std::size_t before = sf_bench::heapAllocations();
   for (auto _ : state) {
     if (k == d.controls.size()) {  // end of the drive: start again, untimed
       state.PauseTiming();
-      const std::size_t start = gAllocations;
+      const std::size_t start = sf_bench::heapAllocations();
       filter.reset();
       k = 0;
-      resetAllocations += gAllocations - start;
+      resetAllocations += sf_bench::heapAllocations() - start;
       state.ResumeTiming();
     }
     step(filter, d, k++);
   }
-  const auto allocations = static_cast<double>(gAllocations - before - resetAllocations);
+  const auto allocations =
+      static_cast<double>(sf_bench::heapAllocations() - before - resetAllocations);
   state.counters["allocs_per_step"] =
       benchmark::Counter(allocations, benchmark::Counter::kAvgIterations);
 }

@@ -20,7 +20,8 @@
 //                                     outside_us = (a) - (b) (means over the periods) and
 //                                     their medians *_med_us. Iteration time = (a) (manual).
 // Counters: allocs_per_period = heap allocations per period (operator new and malloc are
-// replaced below; AllocationCounter_check shows they are counted); estimates_per_period
+// replaced by sf_estimation/bench/support/allocation_counter.cpp; AllocationCounter_check shows
+// they are counted); estimates_per_period
 // must be 1.
 //
 // Run: rosrun sf_pkg sf_fusion_core_benchmark --benchmark_repetitions=10
@@ -44,100 +45,7 @@
 #include "sf_estimation/unscented_kalman_filter.hpp"
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/core/period_average.hpp"
-
-// -----------------------------------------------------------------------------
-// Heap allocation counter (single threaded benchmark: a plain counter will do). Every
-// operator new is replaced; with glibc, malloc and friends are too, since Eigen's dynamic
-// matrices allocate with std::malloc rather than operator new.
-// -----------------------------------------------------------------------------
-namespace {
-std::size_t gAllocations = 0;
-}  // namespace
-
-#if defined(__GLIBC__)
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* pointer, std::size_t size);
-void __libc_free(void* pointer);
-
-void* malloc(std::size_t size) {
-  ++gAllocations;
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  ++gAllocations;
-  return __libc_calloc(count, size);
-}
-void* realloc(void* pointer, std::size_t size) {
-  ++gAllocations;
-  return __libc_realloc(pointer, size);
-}
-void free(void* pointer) { __libc_free(pointer); }
-}
-#define SF_BENCH_RAW_MALLOC __libc_malloc  // operator new below must not count twice
-#else
-#define SF_BENCH_RAW_MALLOC std::malloc
-#endif
-
-namespace {
-
-void* countedNew(std::size_t size) {
-  ++gAllocations;
-  if (void* p = SF_BENCH_RAW_MALLOC(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-
-void* countedAlignedNew(std::size_t size, std::align_val_t alignment) {
-  ++gAllocations;
-  const auto align = static_cast<std::size_t>(alignment);
-  const std::size_t rounded = ((size == 0 ? 1 : size) + align - 1) / align * align;
-  if (void* p = std::aligned_alloc(align, rounded)) return p;
-  throw std::bad_alloc();
-}
-
-}  // namespace
-
-void* operator new(std::size_t size) { return countedNew(size); }
-void* operator new[](std::size_t size) { return countedNew(size); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return countedNew(size);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  return operator new(size, std::nothrow);
-}
-void* operator new(std::size_t size, std::align_val_t alignment) {
-  return countedAlignedNew(size, alignment);
-}
-void* operator new[](std::size_t size, std::align_val_t alignment) {
-  return countedAlignedNew(size, alignment);
-}
-void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-  try {
-    return countedAlignedNew(size, alignment);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-  return operator new(size, alignment, std::nothrow);
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+#include "support/allocation_counter.hpp"
 
 namespace {
 
@@ -309,19 +217,20 @@ void runPeriods(benchmark::State& state, Filter filter) {
   const auto& d = drive();
   CoreDriver<Filter> driver(std::move(filter));
   std::size_t k = 0, untimedAllocations = 0;
-  const std::size_t before = gAllocations;
+  const std::size_t before = sf_bench::heapAllocations();
   for (auto _ : state) {
     if (k == d.size()) {
       state.PauseTiming();
-      const std::size_t start = gAllocations;
+      const std::size_t start = sf_bench::heapAllocations();
       driver.core.reset();
       k = 0;
-      untimedAllocations += gAllocations - start;
+      untimedAllocations += sf_bench::heapAllocations() - start;
       state.ResumeTiming();
     }
     driver.runPeriod(d[k++]);
   }
-  const auto allocations = static_cast<double>(gAllocations - before - untimedAllocations);
+  const auto allocations =
+      static_cast<double>(sf_bench::heapAllocations() - before - untimedAllocations);
   state.counters["allocs_per_period"] =
       benchmark::Counter(allocations, benchmark::Counter::kAvgIterations);
   state.counters["estimates_per_period"] =
@@ -342,14 +251,14 @@ void UKF_nav3ctrl_step(benchmark::State& state) {
   const auto& d = drive();
   Ukf filter = makeUkf();
   std::size_t k = 0, untimedAllocations = 0;
-  const std::size_t before = gAllocations;
+  const std::size_t before = sf_bench::heapAllocations();
   for (auto _ : state) {
     if (k == d.size()) {
       state.PauseTiming();
-      const std::size_t start = gAllocations;
+      const std::size_t start = sf_bench::heapAllocations();
       filter.reset();
       k = 0;
-      untimedAllocations += gAllocations - start;
+      untimedAllocations += sf_bench::heapAllocations() - start;
       state.ResumeTiming();
     }
     filter.setControl(d[k].control);
@@ -358,7 +267,8 @@ void UKF_nav3ctrl_step(benchmark::State& state) {
     benchmark::DoNotOptimize(filter.state().data());
     benchmark::ClobberMemory();
   }
-  const auto allocations = static_cast<double>(gAllocations - before - untimedAllocations);
+  const auto allocations =
+      static_cast<double>(sf_bench::heapAllocations() - before - untimedAllocations);
   state.counters["allocs_per_period"] =
       benchmark::Counter(allocations, benchmark::Counter::kAvgIterations);
 }
@@ -391,20 +301,20 @@ void FusionCore_overhead_UKF_nav3ctrl(benchmark::State& state) {
     }
     const Period& p = d[k++];
 
-    std::size_t a0 = gAllocations;
+    std::size_t a0 = sf_bench::heapAllocations();
     const auto t0 = Clock::now();
     driver.runPeriod(p);
     const auto t1 = Clock::now();
-    periodAllocations += gAllocations - a0;
+    periodAllocations += sf_bench::heapAllocations() - a0;
 
-    a0 = gAllocations;
+    a0 = sf_bench::heapAllocations();
     const auto t2 = Clock::now();
     twin.setControl(p.control);
     twin.estimate(p.aligned);
     benchmark::DoNotOptimize(twin.state().data());
     benchmark::ClobberMemory();
     const auto t3 = Clock::now();
-    estimatorAllocations += gAllocations - a0;
+    estimatorAllocations += sf_bench::heapAllocations() - a0;
 
     const double a = std::chrono::duration<double>(t1 - t0).count();
     const double b = std::chrono::duration<double>(t3 - t2).count();
@@ -442,15 +352,16 @@ void FusionCore_overhead_UKF_nav3ctrl(benchmark::State& state) {
 // Check of the counter itself: one std::vector and one Eigen::VectorXd per iteration must
 // read allocs_per_iteration=2, or the zeros above would mean nothing.
 void AllocationCounter_check(benchmark::State& state) {
-  const std::size_t before = gAllocations;
+  const std::size_t before = sf_bench::heapAllocations();
   for (auto _ : state) {
     std::vector<double> v(16);
     Eigen::VectorXd e(16);
     benchmark::DoNotOptimize(v.data());
     benchmark::DoNotOptimize(e.data());
   }
-  state.counters["allocs_per_iteration"] = benchmark::Counter(
-      static_cast<double>(gAllocations - before), benchmark::Counter::kAvgIterations);
+  state.counters["allocs_per_iteration"] =
+      benchmark::Counter(static_cast<double>(sf_bench::heapAllocations() - before),
+                         benchmark::Counter::kAvgIterations);
 }
 
 }  // namespace
