@@ -13,9 +13,8 @@
 #include <Eigen/Core>
 
 #include "sf_estimation/errors.hpp"
-#include "sf_estimation/measurement.hpp"
-#include "sf_estimation/sliding_windows.hpp"
 #include "sf_estimation/types.hpp"
+#include "sf_estimation/window_smoother.hpp"
 
 namespace estimation {
 
@@ -24,15 +23,12 @@ namespace estimation {
 /// the spread of the window, not the uncertainty of the mean. The weights are normalised over
 /// the values actually held, so a window that is not yet full already averages correctly.
 ///
-/// A missing entry does not enter its window (the output keeps its value). Until an entry's
-/// window holds a value with positive weight (e.g. no value yet, or a delay-line weighting
-/// {0, 1} after one value) its output is 0 with infinite variance: nothing is known yet.
-/// Controls are ignored (ControlSize = 0).
-class MovingAverage {
+/// Missing entries: see WindowSmoother. An entry's output is undefined (0, infinite variance)
+/// until its window holds a value with positive weight (e.g. no value yet, or a delay-line
+/// weighting {0, 1} after one value).
+class MovingAverage : public WindowSmoother<MovingAverage> {
  public:
-  static constexpr int StateSize = Dynamic;
-  static constexpr int MeasurementSize = Dynamic;
-  static constexpr int ControlSize = 0;
+  static constexpr const char* kName = "MovingAverage";
 
   /// Equal weights.
   MovingAverage(Index inputCount, Index windowSize)
@@ -52,40 +48,7 @@ class MovingAverage {
   MovingAverage(Index inputCount, Index windowSize, const Eigen::MatrixBase<Derived>& weights)
       : MovingAverage(inputCount, windowSize, Eigen::VectorXd(weights), true) {}
 
-  Index stateSize() const { return state_.size(); }
-  Index measurementSize() const { return state_.size(); }
-  Index controlSize() const { return 0; }
-  Index windowSize() const { return windows_.capacity(); }
   const Eigen::VectorXd& weights() const { return weights_; }
-
-  /// Controls are ignored; only a size-0 control vector is accepted.
-  template <class Derived>
-  void setControl(const Eigen::MatrixBase<Derived>& u) {
-    validateControl(u, 0);
-  }
-
-  /// Adds the present entries of z to their windows and recomputes those outputs. Throws
-  /// InvalidInputError (nothing changed) on a wrong size or a non-finite present value.
-  void estimate(const Measurement<MeasurementSize>& z) {
-    z.validate(measurementSize());
-    for (Index i = 0; i < measurementSize(); ++i) {
-      if (!z.available(i)) continue;
-      windows_.push(i, z.value(i));
-      updateOutput(i);
-    }
-  }
-
-  const Eigen::VectorXd& state() const { return state_; }
-  /// Diagonal: the variances of the windows (infinite while an entry has no weighted value).
-  const Eigen::MatrixXd& covariance() const { return covariance_; }
-  const Vector<ControlSize>& control() const { return control_; }
-
-  /// Empties every window; outputs return to 0 with infinite variance.
-  void reset() {
-    windows_.clear();
-    state_.setZero();
-    covariance_.diagonal().setConstant(std::numeric_limits<double>::infinity());
-  }
 
   std::string description() const {
     std::ostringstream text;
@@ -102,29 +65,9 @@ class MovingAverage {
  private:
   MovingAverage(Index inputCount, Index windowSize, const Eigen::VectorXd& weights,
                 bool customWeights)
-      : windows_(checkedInputCount(inputCount), checkedWindowSize(windowSize)),
+      : WindowSmoother(inputCount, windowSize),
         weights_(checkedWeights(weights, windowSize)),
-        customWeights_(customWeights),
-        state_(Eigen::VectorXd::Zero(inputCount)),
-        covariance_(Eigen::MatrixXd::Zero(inputCount, inputCount)) {
-    reset();
-  }
-
-  static Index checkedInputCount(Index inputCount) {
-    if (inputCount < 1) {
-      throw ParameterError("MovingAverage: parameter 'inputCount' must be at least 1, got " +
-                           std::to_string(inputCount));
-    }
-    return inputCount;
-  }
-
-  static Index checkedWindowSize(Index windowSize) {
-    if (windowSize < 1) {
-      throw ParameterError("MovingAverage: parameter 'windowSize' must be at least 1, got " +
-                           std::to_string(windowSize));
-    }
-    return windowSize;
-  }
+        customWeights_(customWeights) {}
 
   static const Eigen::VectorXd& checkedWeights(const Eigen::VectorXd& weights, Index windowSize) {
     if (weights.size() != windowSize) {
@@ -143,6 +86,8 @@ class MovingAverage {
     }
     return weights;
   }
+
+  friend class WindowSmoother<MovingAverage>;
 
   void updateOutput(Index i) {
     const Index held = windows_.count(i);
@@ -167,12 +112,8 @@ class MovingAverage {
     covariance_(i, i) = weightedSquares / weightSum;
   }
 
-  SlidingWindows windows_;
   Eigen::VectorXd weights_;
   bool customWeights_;
-  Eigen::VectorXd state_;
-  Eigen::MatrixXd covariance_;  // diagonal; preallocated so covariance() returns a reference
-  Vector<ControlSize> control_;
 };
 
 }  // namespace estimation

@@ -4,15 +4,12 @@
 #pragma once
 
 #include <algorithm>
-#include <limits>
 #include <string>
 
 #include <Eigen/Core>
 
-#include "sf_estimation/errors.hpp"
-#include "sf_estimation/measurement.hpp"
-#include "sf_estimation/sliding_windows.hpp"
 #include "sf_estimation/types.hpp"
+#include "sf_estimation/window_smoother.hpp"
 
 namespace estimation {
 
@@ -21,56 +18,13 @@ namespace estimation {
 /// of the window values around their mean, 0 with one value: the spread of the window, not
 /// the uncertainty of the median.
 ///
-/// A missing entry does not enter its window (the output keeps its value). Before the first
-/// value of an entry its output is 0 with infinite variance: nothing is known yet. Controls
-/// are ignored (ControlSize = 0).
-class MovingMedian {
+/// Missing entries and the output before an entry's first value: see WindowSmoother.
+class MovingMedian : public WindowSmoother<MovingMedian> {
  public:
-  static constexpr int StateSize = Dynamic;
-  static constexpr int MeasurementSize = Dynamic;
-  static constexpr int ControlSize = 0;
+  static constexpr const char* kName = "MovingMedian";
 
   MovingMedian(Index inputCount, Index windowSize)
-      : windows_(checkedInputCount(inputCount), checkedWindowSize(windowSize)),
-        scratch_(windowSize),
-        state_(Eigen::VectorXd::Zero(inputCount)),
-        covariance_(Eigen::MatrixXd::Zero(inputCount, inputCount)) {
-    reset();
-  }
-
-  Index stateSize() const { return state_.size(); }
-  Index measurementSize() const { return state_.size(); }
-  Index controlSize() const { return 0; }
-  Index windowSize() const { return windows_.capacity(); }
-
-  /// Controls are ignored; only a size-0 control vector is accepted.
-  template <class Derived>
-  void setControl(const Eigen::MatrixBase<Derived>& u) {
-    validateControl(u, 0);
-  }
-
-  /// Adds the present entries of z to their windows and recomputes those outputs. Throws
-  /// InvalidInputError (nothing changed) on a wrong size or a non-finite present value.
-  void estimate(const Measurement<MeasurementSize>& z) {
-    z.validate(measurementSize());
-    for (Index i = 0; i < measurementSize(); ++i) {
-      if (!z.available(i)) continue;
-      windows_.push(i, z.value(i));
-      updateOutput(i);
-    }
-  }
-
-  const Eigen::VectorXd& state() const { return state_; }
-  /// Diagonal: the variances of the windows (infinite before an entry's first value).
-  const Eigen::MatrixXd& covariance() const { return covariance_; }
-  const Vector<ControlSize>& control() const { return control_; }
-
-  /// Empties every window; outputs return to 0 with infinite variance.
-  void reset() {
-    windows_.clear();
-    state_.setZero();
-    covariance_.diagonal().setConstant(std::numeric_limits<double>::infinity());
-  }
+      : WindowSmoother(inputCount, windowSize), scratch_(windowSize) {}
 
   std::string description() const {
     return "MovingMedian(inputs=" + std::to_string(measurementSize()) +
@@ -78,21 +32,7 @@ class MovingMedian {
   }
 
  private:
-  static Index checkedInputCount(Index inputCount) {
-    if (inputCount < 1) {
-      throw ParameterError("MovingMedian: parameter 'inputCount' must be at least 1, got " +
-                           std::to_string(inputCount));
-    }
-    return inputCount;
-  }
-
-  static Index checkedWindowSize(Index windowSize) {
-    if (windowSize < 1) {
-      throw ParameterError("MovingMedian: parameter 'windowSize' must be at least 1, got " +
-                           std::to_string(windowSize));
-    }
-    return windowSize;
-  }
+  friend class WindowSmoother<MovingMedian>;
 
   void updateOutput(Index i) {
     const Index held = windows_.count(i);
@@ -119,11 +59,7 @@ class MovingMedian {
     covariance_(i, i) = squares / static_cast<double>(held);
   }
 
-  SlidingWindows windows_;
   Eigen::VectorXd scratch_;  // window copy reordered by nth_element, preallocated
-  Eigen::VectorXd state_;
-  Eigen::MatrixXd covariance_;  // diagonal; preallocated so covariance() returns a reference
-  Vector<ControlSize> control_;
 };
 
 }  // namespace estimation
