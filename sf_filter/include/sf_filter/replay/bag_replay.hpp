@@ -230,7 +230,8 @@ class BagReplay {
   }
 
   /// The bag's names of the topics the configuration reads; throws when one is missing.
-  std::vector<std::string> recordedTopics(const std::map<std::string, std::string>& recorded) const {
+  std::vector<std::string> recordedTopics(
+      const std::map<std::string, std::string>& recorded) const {
     std::vector<std::string> topics;
     for (const auto& handler : handlers_) {
       const auto it = recorded.find(handler.first);
