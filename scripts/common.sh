@@ -26,7 +26,8 @@ SF_DEB_PACKAGES=(
   ros-std-msgs ros-geometry-msgs ros-nav-msgs ros-sensor-msgs ros-diagnostic-msgs
   libdiagnostic-updater-dev ros-message-generation ros-message-runtime
   libeigen3-dev libboost-dev libgtest-dev libgmock-dev libbenchmark-dev
-  python3-rosbag python3-matplotlib cmake g++
+  python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
+  cmake g++
 )
 
 sf_log() { printf '[sf_pkg] %s\n' "$*" >&2; }

@@ -29,6 +29,7 @@
 #include "sf_filter/node/fusion_node.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
 #include "sf_filter/replay/bag_replay.hpp"
+#include "sf_filter/replay/replay_frame_aligner.hpp"
 
 #ifdef POSE_OUT
 #include <boost/preprocessor/seq/elem.hpp>
@@ -69,7 +70,10 @@ std::vector<std::string> inputNames() {
   return names;
 }
 
-sf_filter::NodeDescription describe(const sf_filter::FrameAligner* aligner) {
+/// `aligner`: the node's FrameAligner or the replay's ReplayFrameAligner (nullptr without
+/// FRAME_ALIGNED_INPUTS).
+template <class Aligner>
+sf_filter::NodeDescription describe(const Aligner* aligner) {
   sf_filter::NodeDescription d;
   d.method = sf_config::kMethodName;
   d.inputs = inputNames();
@@ -97,8 +101,8 @@ sf_filter::NodeDescription describe(const sf_filter::FrameAligner* aligner) {
 
 /// Component Align::axis of the aligned input's vector in the base frame; nullopt if it cannot
 /// be rotated (the aligner has counted and reported it).
-template <class Align, class Message>
-std::optional<double> alignedValue(sf_filter::FrameAligner& aligner, const Message& msg) {
+template <class Align, class Aligner, class Message>
+std::optional<double> alignedValue(Aligner& aligner, const Message& msg) {
   if constexpr (Align::valid) {
     return aligner.align(Align::input_index, msg.header.frame_id, msg.header.stamp,
                          Align::vector(msg), Align::axis);
@@ -109,8 +113,8 @@ std::optional<double> alignedValue(sf_filter::FrameAligner& aligner, const Messa
 
 /// One subscription per distinct topic; its callback reads every field used from it. The
 /// FRAME_ALIGNED_INPUTS read a component of a vector rotated into the base frame instead.
-template <class Sink>
-void subscribeInputs(Sink& node, sf_filter::FrameAligner* aligner) {
+template <class Sink, class Aligner>
+void subscribeInputs(Sink& node, Aligner* aligner) {
   sf_config::forEachInput([&](auto owner) {
     using Owner = decltype(owner);
     if constexpr (Owner::owns_subscription) {
@@ -159,12 +163,18 @@ int replayMain(int argc, char** argv) {
       "usage: " + program +
       " --replay INPUT.bag [--csv OUT.csv] [--bag OUT.bag] [--name NODE]\n"
       "       [--estimation-period MS] [--scale-q FACTOR] [--scale-r FACTOR] [--seed N]\n"
+      "       [--frame-id FRAME] [--child-frame-id FRAME] [--base-frame FRAME]\n"
       "Replays the bag through this node's filter without a ROS master, in recorded-time\n"
-      "order, and writes the estimates. Without --csv and --bag only a summary is printed.";
+      "order, and writes the estimates. Without --csv and --bag only a summary is printed.\n"
+      "--frame-id, --child-frame-id: frames of the output bag's odometry (default odom,\n"
+      "base_link, like the node's ~frame_id, ~child_frame_id); --base-frame: the frame\n"
+      "FRAME_ALIGNED_INPUTS are rotated into (default BASE_FRAME, like ~base_frame), with\n"
+      "the bag's /tf_static and /tf.";
   sf_filter::ReplayOptions options;
   options.nodeName = program.substr(program.find_last_of('/') + 1);
   double periodMs = sf_config::kEstimationPeriodMs, scaleQ = 1.0, scaleR = 1.0;
   std::optional<long> seed;
+  std::string baseFrame(sf_config::kBaseFrame);
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -191,6 +201,12 @@ int replayMain(int argc, char** argv) {
         scaleR = std::stod(value());
       } else if (arg == "--seed") {
         seed = std::stol(value());
+      } else if (arg == "--frame-id") {
+        options.frameId = value();
+      } else if (arg == "--child-frame-id") {
+        options.childFrameId = value();
+      } else if (arg == "--base-frame") {
+        baseFrame = value();
       } else {
         throw std::invalid_argument("unknown option " + arg);
       }
@@ -198,25 +214,32 @@ int replayMain(int argc, char** argv) {
     if (!(periodMs > 0.0)) throw std::invalid_argument("--estimation-period must be positive");
     if (!(scaleQ > 0.0) || !(scaleR > 0.0)) throw std::invalid_argument("scale factors must be positive");
     if (seed && *seed < 0) throw std::invalid_argument("--seed must not be negative");
+    if (sf_config::kHasFrameAlignment && (baseFrame.empty() || baseFrame.front() == '/')) {
+      throw std::invalid_argument("--base-frame '" + baseFrame +
+                                  "' is not a tf2 frame name (not empty, no leading '/')");
+    }
   } catch (const std::exception& e) {
     std::cerr << program << ": " << e.what() << "\n" << usage << std::endl;
     return 2;
   }
   try {
-    if constexpr (sf_config::kHasFrameAlignment) {
-      throw sf_filter::ReplayError(
-          "offline replay does not support FRAME_ALIGNED_INPUTS (it needs the bag's tf); "
-          "replay the bag online with rosbag play --clock");
-    }
     ros::Time::init();
     sf_config::Parameters parameters = sf_config::defaultParameters(periodMs);
     parameters.process_noise_covariance *= scaleQ;
     parameters.measurement_noise_covariance *= scaleR;
     if (seed) parameters.random_seed = static_cast<unsigned>(*seed);
+    std::optional<sf_filter::ReplayFrameAligner> aligner;
+    if constexpr (sf_config::kHasFrameAlignment) aligner.emplace(baseFrame, inputNames());
+    sf_filter::ReplayFrameAligner* const alignerPtr = aligner ? &*aligner : nullptr;
     sf_filter::BagReplay<sf_filter::generated::Filter> replay(
-        sf_filter::generated::makeFilter(parameters), periodMs / 1000.0, describe(nullptr),
+        sf_filter::generated::makeFilter(parameters), periodMs / 1000.0, describe(alignerPtr),
         options);
-    subscribeInputs(replay, nullptr);
+    if (aligner) {
+      replay.readTransforms([alignerPtr](const tf2_msgs::TFMessage& msg, bool isStatic) {
+        alignerPtr->addTransforms(msg, isStatic);
+      });
+    }
+    subscribeInputs(replay, alignerPtr);
     const auto start = std::chrono::steady_clock::now();
     const sf_filter::ReplaySummary s = replay.run();
     const double wall =
@@ -225,6 +248,13 @@ int replayMain(int argc, char** argv) {
               << " estimates, " << s.dropped << " dropped values, "
               << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
               << " us per estimation step, " << wall << " s in all" << std::endl;
+    if (aligner) {
+      std::cout << options.nodeName << ": " << aligner->transforms()
+                << " transforms read from the bag's /tf_static and /tf ("
+                << aligner->rejectedTransforms() << " refused by tf2), "
+                << aligner->droppedTotal() << " values dropped: not rotatable into '"
+                << aligner->baseFrame() << "'" << std::endl;
+    }
   } catch (const std::exception& e) {
     std::cerr << program << ": " << e.what() << std::endl;
     return EXIT_FAILURE;

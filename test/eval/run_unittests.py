@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""Runs the unittest modules test_*.py of this directory (or of --dir) and optionally writes a JUnit XML
+"""Runs the unittest modules test_*.py of this directory (or --start-dir) and optionally writes a JUnit XML
 file (one <testcase> per test method), so that `catkin_make run_tests` and
 catkin_test_results count them like the gtest cases. Standard library only (Debian has
 neither python3-nose's catkin integration nor xmlrunner here).
 
-Usage: run_unittests.py [--dir DIR] [--suite-name NAME] [--junit FILE] [-v] [PATTERN]
+Usage: run_unittests.py [--start-dir DIR] [--suite-name NAME] [--junit FILE] [-v] [PATTERN]
 Exits 1 when a test failed or errored, or when none ran.
 """
 
@@ -84,12 +84,14 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--junit", help="write a JUnit XML file")
     parser.add_argument("--suite-name", default="evaluate_tests")
-    parser.add_argument("--dir", default=HERE, help="directory to discover tests in (default: here)")
     parser.add_argument("-v", "--verbose", action="store_true")
+    parser.add_argument("--start-dir", default=HERE,
+                        help="directory of the test_*.py modules (default: this one)")
     parser.add_argument("pattern", nargs="?", default="test_*.py")
     args = parser.parse_args()
 
-    suite = unittest.defaultTestLoader.discover(args.dir, pattern=args.pattern, top_level_dir=args.dir)
+    start = os.path.abspath(args.start_dir)
+    suite = unittest.defaultTestLoader.discover(start, pattern=args.pattern, top_level_dir=start)
     runner = unittest.TextTestRunner(stream=sys.stdout, verbosity=2 if args.verbose else 1,
                                      resultclass=RecordingResult)
     result = runner.run(suite)

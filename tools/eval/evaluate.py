@@ -10,7 +10,8 @@ RESULT is LABEL=PATH or PATH (the label is then the file name without extension)
           The pose columns are used by default; --pose-columns picks others
           (e.g. x0,x1,x2 for a configuration without POSE_OUT).
   *.bag   a bag with nav_msgs/Odometry on /odometry/filtered (--odom-topic), e.g. the
-          node's `--bag OUT.bag` or a `rosbag record` of the running node.
+          node's `--bag OUT.bag` or a `rosbag record` of the running node; PoseStamped
+          and PointStamped topics work too (e.g. --odom-topic vision/pose: a raw sensor).
 
 TRUTH is a bag with geometry_msgs/PoseStamped on ground_truth/pose (--truth-topic; the
 simulated bags of bags/ have it), or a CSV with the columns time,x,y[,heading] (a header
@@ -259,8 +260,17 @@ def _topic_variants(topic):
     return [bare, "/" + bare]
 
 
+class _Identity:
+    x = y = z = 0.0
+    w = 1.0
+
+
 def _pose_of(msg):
-    """(position, orientation) of a PoseStamped, Odometry or PoseWithCovarianceStamped."""
+    """(position, orientation) of a PoseStamped, Odometry or PoseWithCovarianceStamped; a
+    PointStamped (a position sensor such as the soccer robot's vision) has the identity
+    orientation."""
+    if hasattr(msg, "point"):
+        return msg.point, _Identity
     pose = msg.pose
     if hasattr(pose, "pose"):
         pose = pose.pose

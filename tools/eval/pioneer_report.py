@@ -37,15 +37,15 @@ TUNING = [("R*10", ["--scale-r", "10"]),
           ("R*10 10ms", ["--scale-r", "10", "--estimation-period", "10"])]
 
 
-def find_lib_dir():
-    """lib/sf_pkg of the first CMAKE_PREFIX_PATH entry (the sourced devel space) having it,
-    else $SF_WS/devel/lib/sf_pkg."""
+def find_lib_dir(exe_prefix="sf_nav"):
+    """lib/sf_pkg of the first CMAKE_PREFIX_PATH entry (the sourced devel space) holding an
+    executable named exe_prefix*, else the one of $SF_WS/devel."""
     prefixes = [p for p in os.environ.get("CMAKE_PREFIX_PATH", "").split(":") if p]
     if os.environ.get("SF_WS"):
         prefixes.append(os.path.join(os.environ["SF_WS"], "devel"))
     for prefix in prefixes:
         d = os.path.join(prefix, "lib", PACKAGE)
-        if os.path.isdir(d) and any(n.startswith("sf_nav") for n in os.listdir(d)):
+        if os.path.isdir(d) and any(n.startswith(exe_prefix) for n in os.listdir(d)):
             return d
     return None
 

@@ -9,7 +9,8 @@
 #                                      (bytes and message content); bags/ is not touched
 #   tools/sim/make_bags.sh --out DIR   write the bags into DIR instead of bags/
 #
-# Needs Debian's python3-rosbag, python3-std-msgs and python3-geometry-msgs (and rosbag
+# Needs Debian's python3-rosbag, python3-std-msgs, python3-geometry-msgs, python3-nav-msgs,
+# python3-sensor-msgs and python3-tf2-msgs (and rosbag
 # for `rosbag info`); it uses /usr/bin/python3 so that a pyenv/virtualenv python3 on PATH
 # does not hide the ROS modules.
 set -euo pipefail
@@ -19,7 +20,8 @@ PY=/usr/bin/python3
 SIM="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
 ROOT="$(cd "${SIM}/../.." && pwd -P)"
 
-BAGS=(pioneer_seed1.bag pioneer_seed2.bag pioneer_seed3.bag soccer_seed1.bag soccer_lost_vision.bag)
+BAGS=(pioneer_seed1.bag pioneer_seed2.bag pioneer_seed3.bag soccer_seed1.bag soccer_lost_vision.bag
+  diff_drive_seed1.bag)
 
 # generate DIR: write every shipped bag into DIR
 generate() {
@@ -34,6 +36,8 @@ generate() {
   # with soccer_seed1.bag over the first 60 s.
   "${PY}" "${SIM}/soccer_sim.py" --seed 1 --duration 70 --drop 30:80 --drop 63.5:45 \
     --out "${dir}/soccer_lost_vision.bag"
+  # generic differential-drive robot (/odom, /imu/data, IMU mounted on its side, gyro bias)
+  "${PY}" "${SIM}/diff_drive_sim.py" --seed 1 --duration 60 --out "${dir}/diff_drive_seed1.bag"
 }
 
 mode=write

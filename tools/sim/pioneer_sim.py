@@ -213,10 +213,12 @@ def random_segment(rng, state):
             (rng.uniform(0.4, V_MAX), 0.0, ceil_ticks(rng.uniform(2.0, min(8.0, 1.0 + d_home))))]
 
 
-def plan_run(seed, duration):
-    """Drive the true robot through a seeded teleoperation script of *duration* seconds."""
+def plan_run(seed, duration, robot="pioneer"):
+    """Drive the true robot through a seeded teleoperation script of *duration* seconds.
+    *robot* names the random stream, so other simulators reusing the script get their own
+    paths."""
     total_ticks = int(round(duration / TICK_S))
-    rng = simbag.rng("pioneer", seed, "path")
+    rng = simbag.rng(robot, seed, "path")
     truth = Truth()
     tele = Teleop(truth)
     tele.hold(0.0, 0.0, ceil_ticks(rng.uniform(2.0, 3.0)))   # standing at the start

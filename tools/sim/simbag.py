@@ -1,4 +1,5 @@
-"""Shared helpers of the bag simulators in tools/sim/ (pioneer_sim.py, soccer_sim.py).
+"""Shared helpers of the bag simulators in tools/sim/ (pioneer_sim.py, soccer_sim.py,
+diff_drive_sim.py).
 
 Time is kept as integer nanoseconds since the start of the run, so that sample times
 such as k/32 s are exact and a run is reproducible bit for bit. A message's bag time
@@ -56,6 +57,7 @@ class BagBuilder:
         self._items = []
         self._rank = {}
         self._seq = {}
+        self._latched = set()
 
     def stamp(self, t_ns):
         """Header stamp for the simulated time t_ns (ns since the run's start)."""
@@ -74,6 +76,11 @@ class BagBuilder:
         rank = self._rank.setdefault(topic, len(self._rank))
         self._items.append((t_ns, rank, len(self._items), topic, msg))
 
+    def latch(self, topic):
+        """Record *topic* as latched (connection header latching=1, as rosbag record stores
+        /tf_static), so that rosbag play republishes it latched."""
+        self._latched.add(topic)
+
     def counts(self):
         out = {}
         for item in self._items:
@@ -90,7 +97,11 @@ class BagBuilder:
         self._items.sort(key=lambda item: item[:3])
         with rosbag.Bag(tmp, "w", compression=compression) as bag:
             for t_ns, _, _, topic, msg in self._items:
-                bag.write(topic, msg, to_time(self.start_ns + t_ns))
+                header = None
+                if topic in self._latched:
+                    header = {"topic": topic, "type": msg._type, "md5sum": msg._md5sum,
+                              "message_definition": msg._full_text, "latching": "1"}
+                bag.write(topic, msg, to_time(self.start_ns + t_ns), connection_header=header)
         os.replace(tmp, path)
 
 

@@ -2,6 +2,8 @@
 // order through the same fusion core as the online node, and writes the estimates as CSV
 // and/or as a bag with the node's own output topics, as fast as the machine allows. The
 // recorded time plays the role of the node's clock, so the result is deterministic.
+// A node with FRAME_ALIGNED_INPUTS gets the bag's /tf_static and /tf through
+// readTransforms() (see replay_frame_aligner.hpp).
 #pragma once
 
 #include <cstdio>
@@ -19,6 +21,7 @@
 
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
@@ -80,6 +83,9 @@ class BagReplay {
   using Handler = std::function<void(const rosbag::MessageInstance&, double)>;
 
  public:
+  /// Receives the transforms of one /tf_static (isStatic) or /tf message.
+  using TransformSink = std::function<void(const tf2_msgs::TFMessage&, bool isStatic)>;
+
   BagReplay(Filter filter, double period, NodeDescription description, ReplayOptions options)
       : core_(std::move(filter), makeOptions(period)),
         description_(std::move(description)),
@@ -90,12 +96,7 @@ class BagReplay {
   void subscribe(const std::string& topic, Dispatch dispatch) {
     const std::string name = absolute(topic);
     handlers_[name] = [this, name, dispatch](const rosbag::MessageInstance& m, double now) {
-      const auto msg = m.instantiate<Message>();
-      if (!msg) {
-        throw ReplayError("topic " + name + " holds " + m.getDataType() + ", the configuration expects " +
-                          ros::message_traits::DataType<Message>::value());
-      }
-      dispatch(*msg, *this, now);
+      dispatch(*instantiate<Message>(m, name), *this, now);
     };
   }
 
@@ -109,6 +110,13 @@ class BagReplay {
     if (core_.addControl(index, value) != Rejection::None) ++summary_.dropped;
   }
 
+  /// Hands the bag's transforms to `sink`: every /tf_static message before the first message
+  /// is replayed (rosbag play latches them, so a listener has them from the start), the /tf
+  /// messages in recorded order among the inputs (they do not advance the schedule: online
+  /// the tf listener's thread does not either). A bag without these topics is not an error;
+  /// the values that then cannot be rotated are the sink's to report.
+  void readTransforms(TransformSink sink) { transformSink_ = std::move(sink); }
+
   /// Replays the whole bag. Throws ReplayError with a one-line reason on failure; outputs are
   /// then not created.
   ReplaySummary run() {
@@ -118,7 +126,13 @@ class BagReplay {
     } catch (const rosbag::BagException& e) {
       throw ReplayError("cannot read bag " + options_.inputBag + ": " + e.what());
     }
-    const std::vector<std::string> topics = recordedTopics(input);
+    const std::map<std::string, std::string> recorded = recordedNames(input);
+    std::vector<std::string> topics = recordedTopics(recorded);
+    std::string tfTopic;  // the bag's name of /tf, if read
+    if (transformSink_) {
+      if (recorded.count(kTfStatic)) readStaticTransforms(input, recorded.at(kTfStatic));
+      if (recorded.count(kTf)) topics.push_back(tfTopic = recorded.at(kTf));
+    }
 
     AtomicOutput csvFile(options_.csvPath), bagFile(options_.outputBag);
     std::ofstream csv;
@@ -144,6 +158,10 @@ class BagReplay {
     try {
       rosbag::View view(input, rosbag::TopicQuery(topics));
       for (const rosbag::MessageInstance& m : view) {
+        if (!tfTopic.empty() && m.getTopic() == tfTopic) {
+          transformSink_(*instantiate<tf2_msgs::TFMessage>(m, kTf), false);
+          continue;
+        }
         const double now = m.getTime().toSec();
         core_.advanceTo(now, write);
         handlers_.at(absolute(m.getTopic()))(m, now);
@@ -174,18 +192,46 @@ class BagReplay {
     return options;
   }
 
+  static constexpr const char* kTf = "/tf";
+  static constexpr const char* kTfStatic = "/tf_static";
+
   static std::string absolute(const std::string& topic) {
     return !topic.empty() && topic[0] == '/' ? topic : "/" + topic;
   }
 
-  /// The bag's names of the topics the configuration reads (a recorder may have stored
-  /// them without the leading slash); throws when one is missing.
-  std::vector<std::string> recordedTopics(rosbag::Bag& bag) const {
-    std::map<std::string, std::string> recorded;  // absolute name -> name in the bag
+  /// The message of `m`, which was recorded on `topic`; throws if it is of another type.
+  template <class Message>
+  static boost::shared_ptr<Message> instantiate(const rosbag::MessageInstance& m,
+                                                const std::string& topic) {
+    auto msg = m.instantiate<Message>();
+    if (!msg) {
+      throw ReplayError("topic " + topic + " holds " + m.getDataType() + ", expected " +
+                        ros::message_traits::DataType<Message>::value());
+    }
+    return msg;
+  }
+
+  /// Absolute topic name -> the bag's name for it (a recorder may have stored names without
+  /// the leading slash).
+  static std::map<std::string, std::string> recordedNames(rosbag::Bag& bag) {
+    std::map<std::string, std::string> recorded;
     rosbag::View all(bag);
     for (const rosbag::ConnectionInfo* c : all.getConnections()) {
       recorded[absolute(c->topic)] = c->topic;
     }
+    return recorded;
+  }
+
+  void readStaticTransforms(rosbag::Bag& bag, const std::string& topic) {
+    rosbag::View view(bag, rosbag::TopicQuery(topic));
+    for (const rosbag::MessageInstance& m : view) {
+      transformSink_(*instantiate<tf2_msgs::TFMessage>(m, kTfStatic), true);
+    }
+  }
+
+  /// The bag's names of the topics the configuration reads; throws when one is missing.
+  std::vector<std::string> recordedTopics(
+      const std::map<std::string, std::string>& recorded) const {
     std::vector<std::string> topics;
     for (const auto& handler : handlers_) {
       const auto it = recorded.find(handler.first);
@@ -236,6 +282,7 @@ class BagReplay {
   NodeDescription description_;
   ReplayOptions options_;
   std::map<std::string, Handler> handlers_;
+  TransformSink transformSink_;
   ReplaySummary summary_;
 };
 

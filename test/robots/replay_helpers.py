@@ -1,0 +1,34 @@
+"""Helpers of the robot replay tests: run a generated node's offline replay, read its CSV."""
+
+import csv
+import os
+import subprocess
+import sys
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
+import pioneer_report  # noqa: E402  (devel-space lookup)
+
+
+def replay_exe(exe_name, bag, csv_path, *extra):
+    """Runs `<exe> --replay BAG --csv CSV [extra]` from $SF_LIB_DIR (set by the CMake test
+    registration) or the sourced devel space; the finished process. Skips the test when the
+    executable is not built, fails it when the replay fails."""
+    lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_report.find_lib_dir(exe_name)
+    exe = os.path.join(lib_dir or "", exe_name)
+    if not os.access(exe, os.X_OK):
+        raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel space)" % exe_name)
+    proc = subprocess.run([exe, "--replay", bag, "--csv", csv_path] + list(extra),
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          universal_newlines=True, timeout=120)
+    if proc.returncode != 0:
+        raise AssertionError("replay failed (%d): %s%s" % (proc.returncode, proc.stdout, proc.stderr))
+    return proc
+
+
+def read_rows(csv_path):
+    """The replay CSV as a list of {column: float}."""
+    with open(csv_path, newline="") as f:
+        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]

@@ -1,0 +1,230 @@
+#!/usr/bin/python3
+"""Deterministic simulator of a generic differential-drive robot with wheel odometry and an
+IMU on their usual ROS topics, for config/diff_drive_odom_imu.h (doc/generic_robot.md).
+
+The robot is driven through the seeded teleoperation script of pioneer_sim.py (its own
+path per seed, stops, curves, back to the start) and records what a typical robot's
+`rosbag record /odom /imu/data /tf /tf_static` would hold, plus its true pose:
+
+  topic              type                       rate    frame                  content
+  odom               nav_msgs/Odometry          50 Hz   odom -> base_link      wheel odometry: twist
+                                                                              from the wheel speeds,
+                                                                              pose integrated from it
+  imu/data           sensor_msgs/Imu            100 Hz  imu_link               gyro with a constant
+                                                                              bias, accelerometer;
+                                                                              no orientation
+  tf                 tf2_msgs/TFMessage         50 Hz   odom -> base_link      the wheel odometry's
+  tf_static          tf2_msgs/TFMessage         once    base_link -> imu_link  the IMU's mount (latched)
+  ground_truth/pose  geometry_msgs/PoseStamped  50 Hz   odom                   the true pose
+
+The IMU is mounted on its side (roll 90 deg, yaw 90 deg: its y axis is the robot's z axis),
+so the yaw rate appears on angular_velocity.y: only the rotation by tf2 gives the filter a
+yaw rate. The gyro's bias is constant and given in the IMU's frame (--gyro-bias); the bias
+of the base-frame yaw rate is its component along the robot's z axis, printed at the end.
+
+  diff_drive_sim.py --seed 1 --duration 60 --out bags/diff_drive_seed1.bag
+"""
+
+import argparse
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from geometry_msgs.msg import PoseStamped, TransformStamped  # noqa: E402
+from nav_msgs.msg import Odometry  # noqa: E402
+from sensor_msgs.msg import Imu  # noqa: E402
+from tf2_msgs.msg import TFMessage  # noqa: E402
+
+import pioneer_sim  # noqa: E402  (teleoperation script and true motion)
+import simbag  # noqa: E402
+
+G = 9.80665
+TRACK = 0.5                                 # wheel separation [m]
+WHEEL_STD = math.sqrt(5e-5)                 # wheel speed noise per odometry message [m/s]:
+#                                             v std 0.005 m/s, yaw rate std 0.02 rad/s
+ODOM_PERIOD_MS, ODOM_PHASE_MS = 20, 10      # diff_drive_controller's default 50 Hz
+IMU_PERIOD_MS, IMU_PHASE_MS = 10, 3         # 100 Hz
+GYRO_STD = 0.005                            # [rad/s] per sample, each axis
+GYRO_RES = math.radians(1.0 / 131.0)        # 16-bit, +-250 deg/s
+ACCEL_STD = 0.05                            # [m/s^2]
+ACCEL_RES = G / 16384.0                     # 16-bit, +-2 g
+GT_PERIOD_MS = 20                           # ground truth at 50 Hz (phase 0)
+MOUNT_XYZ = (0.12, 0.0, 0.18)               # IMU position on base_link [m]
+MOUNT_RPY = (math.pi / 2, 0.0, math.pi / 2)  # IMU orientation on base_link (tf2 RPY)
+DEFAULT_GYRO_BIAS = (0.004, 0.012, -0.006)  # [rad/s] in the IMU's frame
+
+
+def rotation_rpy(roll, pitch, yaw):
+    """Rotation matrix Rz(yaw) Ry(pitch) Rx(roll) (tf2's setRPY), rows of a 3x3 list."""
+    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch),
+                              math.cos(yaw), math.sin(yaw))
+    return [[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+            [-sp, cp * sr, cp * cr]]
+
+
+def quaternion_rpy(roll, pitch, yaw):
+    """(x, y, z, w) of the same rotation."""
+    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
+    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    return (sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
+            cr * cp * sy - sr * sp * cy, cr * cp * cy + sr * sp * sy)
+
+
+def transpose_times(m, v):
+    """m^T v: a base_link vector in the IMU's frame when m rotates IMU vectors into base_link."""
+    return [sum(m[r][c] * v[r] for r in range(3)) for c in range(3)]
+
+
+def base_z_bias(gyro_bias):
+    """Bias of the base-frame yaw rate: the z row of the mount rotation times the IMU-frame
+    bias."""
+    m = rotation_rpy(*MOUNT_RPY)
+    return sum(m[2][c] * gyro_bias[c] for c in range(3))
+
+
+def transform(bag, t_ns, parent, child, xyz, quat):
+    t = TransformStamped()
+    t.header.stamp = bag.stamp(t_ns)
+    t.header.frame_id = parent
+    t.child_frame_id = child
+    t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = xyz
+    (t.transform.rotation.x, t.transform.rotation.y, t.transform.rotation.z,
+     t.transform.rotation.w) = quat
+    return t
+
+
+def build_bag(seed, truth, tele, gyro_bias, start_s):
+    bag = simbag.BagBuilder(start_s)
+    states = truth.log
+    n_ms = len(tele.cmds) * pioneer_sim.TICK_MS
+    ms = simbag.NS_PER_S // 1000
+
+    # the IMU's mount, once at the start, latched
+    bag.latch("tf_static")
+    bag.add("tf_static", TFMessage(transforms=[
+        transform(bag, 0, "base_link", "imu_link", MOUNT_XYZ, quaternion_rpy(*MOUNT_RPY))]), 0)
+
+    # wheel odometry (diff_drive_controller): twist from the wheel speeds of this message,
+    # pose integrated from the twist (midpoint heading); its tf odom -> base_link
+    rw = simbag.rng("diff_drive", seed, "wheels")
+    ox = oy = oth = 0.0
+    last_ms = None
+    odom_heading_end = 0.0
+    for k in range(ODOM_PHASE_MS, n_ms + 1, ODOM_PERIOD_MS):
+        _, _, _, v, w = states[k]
+        wheels = []
+        for true_speed in (v - 0.5 * TRACK * w, v + 0.5 * TRACK * w):
+            noise = rw.gauss(0.0, WHEEL_STD)
+            wheels.append(true_speed + noise if abs(true_speed) > 1e-6 else 0.0)
+        vm, wm = 0.5 * (wheels[0] + wheels[1]), (wheels[1] - wheels[0]) / TRACK
+        dt = (k - last_ms) * 1e-3 if last_ms is not None else 0.0
+        last_ms = k
+        mid = oth + 0.5 * wm * dt
+        ox += vm * dt * math.cos(mid)
+        oy += vm * dt * math.sin(mid)
+        oth += wm * dt
+        odom_heading_end = oth
+        msg = Odometry()
+        msg.header.seq = bag.next_seq("odom")
+        msg.header.stamp = bag.stamp(k * ms)
+        msg.header.frame_id = "odom"
+        msg.child_frame_id = "base_link"
+        msg.pose.pose.position.x, msg.pose.pose.position.y = ox, oy
+        q = pioneer_sim.quaternion_z(oth)
+        msg.pose.pose.orientation.z, msg.pose.pose.orientation.w = q
+        msg.pose.covariance = [0.0] * 36
+        for i, var in enumerate((1e-3, 1e-3, 1e6, 1e6, 1e6, 1e-2)):
+            msg.pose.covariance[7 * i] = var
+        msg.twist.twist.linear.x, msg.twist.twist.angular.z = vm, wm
+        msg.twist.covariance = [0.0] * 36
+        for i, var in enumerate((WHEEL_STD ** 2 / 2, 1e6, 1e6, 1e6, 1e6,
+                                 2 * WHEEL_STD ** 2 / TRACK ** 2)):
+            msg.twist.covariance[7 * i] = var
+        bag.add("odom", msg, k * ms)
+        bag.add("tf", TFMessage(transforms=[
+            transform(bag, k * ms, "odom", "base_link", (ox, oy, 0.0), (0.0, 0.0) + q)]), k * ms)
+
+    # IMU in imu_link: base-frame rates and accelerations rotated into the sensor's frame
+    mount = rotation_rpy(*MOUNT_RPY)
+    rg = simbag.rng("diff_drive", seed, "gyro")
+    ra = simbag.rng("diff_drive", seed, "accel")
+    for k in range(IMU_PHASE_MS, n_ms, IMU_PERIOD_MS):
+        _, _, _, v, w = states[k]
+        a_long = (states[k + 1][3] - v) / pioneer_sim.DT
+        rate = transpose_times(mount, (0.0, 0.0, w))
+        accel = transpose_times(mount, (a_long, v * w, G))
+        msg = Imu()
+        msg.header.seq = bag.next_seq("imu/data")
+        msg.header.stamp = bag.stamp(k * ms)
+        msg.header.frame_id = "imu_link"
+        msg.orientation.w = 1.0
+        msg.orientation_covariance[0] = -1.0      # no orientation (REP 145)
+        g = [simbag.quantise(rate[i] + gyro_bias[i] + rg.gauss(0.0, GYRO_STD), GYRO_RES)
+             for i in range(3)]
+        a = [simbag.quantise(accel[i] + ra.gauss(0.0, ACCEL_STD), ACCEL_RES) for i in range(3)]
+        msg.angular_velocity.x, msg.angular_velocity.y, msg.angular_velocity.z = g
+        msg.linear_acceleration.x, msg.linear_acceleration.y, msg.linear_acceleration.z = a
+        for i in range(3):
+            msg.angular_velocity_covariance[4 * i] = GYRO_STD ** 2
+            msg.linear_acceleration_covariance[4 * i] = ACCEL_STD ** 2
+        bag.add("imu/data", msg, k * ms)
+
+    for k in range(0, n_ms + 1, GT_PERIOD_MS):
+        x, y, th, _, _ = states[k]
+        pose = PoseStamped()
+        pose.header.seq = bag.next_seq("ground_truth/pose")
+        pose.header.stamp = bag.stamp(k * ms)
+        pose.header.frame_id = "odom"
+        pose.pose.position.x, pose.pose.position.y = x, y
+        pose.pose.orientation.z, pose.pose.orientation.w = pioneer_sim.quaternion_z(th)
+        bag.add("ground_truth/pose", pose, k * ms)
+    return bag, (ox, oy, odom_heading_end)
+
+
+def parse_vector(text):
+    try:
+        values = [float(v) for v in text.split(",")]
+    except ValueError:
+        values = []
+    if len(values) != 3:
+        raise argparse.ArgumentTypeError("expected X,Y,Z, e.g. 0.004,0.012,-0.006")
+    return values
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--seed", type=int, required=True, help="seed of path and noise")
+    parser.add_argument("--duration", type=float, default=60.0,
+                        help="run length in seconds, a multiple of 0.1 (default 60; at least about 40)")
+    parser.add_argument("--gyro-bias", type=parse_vector, default=list(DEFAULT_GYRO_BIAS),
+                        metavar="X,Y,Z", help="constant gyro bias in the IMU's frame [rad/s] "
+                        "(default %s)" % ",".join(str(v) for v in DEFAULT_GYRO_BIAS))
+    parser.add_argument("--out", required=True, help="bag file to write")
+    parser.add_argument("--start", type=int, default=simbag.DEFAULT_START_S,
+                        help="simulated clock at the start, in seconds (default %(default)s)")
+    parser.add_argument("--compression", choices=simbag.COMPRESSIONS, default="bz2")
+    args = parser.parse_args(argv)
+    if args.duration <= 0 or abs(args.duration * 10 - round(args.duration * 10)) > 1e-9:
+        parser.error("--duration must be positive and a multiple of 0.1 s")
+
+    truth, tele = pioneer_sim.plan_run(args.seed, args.duration, robot="diff_drive")
+    x, y, th = truth.state[:3]
+    if math.hypot(x, y) > pioneer_sim.LOOP_TOLERANCE:
+        raise SystemExit("loop not closed: final true pose (%.4f, %.4f) m" % (x, y))
+    bag, odom_end = build_bag(args.seed, truth, tele, args.gyro_bias, args.start)
+    bag.write(args.out, args.compression)
+    path_len = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(truth.log, truth.log[1:]))
+    print("diff_drive seed=%d duration=%.1fs path=%.2fm gyro_bias_imu=(%g, %g, %g)rad/s "
+          "gyro_bias_base_z=%.6frad/s wheel_odometry_final_error=%.3fm,%.2fdeg out=%s"
+          % (args.seed, len(tele.cmds) * pioneer_sim.TICK_S, path_len, *args.gyro_bias,
+             base_z_bias(args.gyro_bias), math.hypot(odom_end[0] - x, odom_end[1] - y),
+             math.degrees(pioneer_sim.wrap(odom_end[2] - th)), args.out))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
