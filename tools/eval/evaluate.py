@@ -509,19 +509,31 @@ def _draw_finals(ax, truth, results, arrow_len):
                     zorder=6)
 
 
-def plot_paths(path, truth, results, title=None):
-    """results: list of (label, Trajectory, Evaluation)."""
+def _colors(plt, n):
+    """n distinguishable colours: the default cycle, or tab20 for more than 10 lines."""
+    if n <= 10:
+        cycle = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        return [cycle[i % len(cycle)] for i in range(n)]
+    cmap = plt.get_cmap("tab20")
+    return [cmap(i % 20) for i in range(n)]
+
+
+def plot_paths(path, truth, results, title=None, limit=None, dpi=110):
+    """results: list of (label, Trajectory, Evaluation). limit [m]: the left panel shows the
+    truth's extent plus `limit` (paths further out are cut) and the zoom on the final
+    positions leaves out finals more than `limit` from the truth's (their errors stay in the
+    legend); None shows everything."""
     plt = _pyplot()
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    res = [(l, tr, ev, colors[i % len(colors)]) for i, (l, tr, ev) in enumerate(results)]
+    colors = _colors(plt, len(results))
+    res = [(l, tr, ev, colors[i]) for i, (l, tr, ev) in enumerate(results)]
     fig, (ax, az) = plt.subplots(1, 2, figsize=(14, 6.5), gridspec_kw={"width_ratios": [3, 2]})
 
     # Left: the paths.
     ax.plot(truth.x, truth.y, "-", color="black", lw=2.5, alpha=0.35, label="ground truth")
     for label, tr, ev, color in res:
         ax.plot(tr.x, tr.y, "-", color=color, lw=1.2, label=label)
-    xs = truth.x + [v for _, tr, _, _ in res for v in tr.x]
-    ys = truth.y + [v for _, tr, _, _ in res for v in tr.y]
+    xs = truth.x + ([] if limit else [v for _, tr, _, _ in res for v in tr.x])
+    ys = truth.y + ([] if limit else [v for _, tr, _, _ in res for v in tr.y])
     span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-3)
     ax.plot(truth.x[0], truth.y[0], "o", color="black", markersize=13, mfc="none", mew=1.5,
             label="start", zorder=6)
@@ -530,14 +542,18 @@ def plot_paths(path, truth, results, title=None):
     ax.plot([], [], "x", color="gray", markersize=9, mew=2, label="final estimated positions")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
+    if limit:
+        ax.set_xlim(min(xs) - limit, max(xs) + limit)
+        ax.set_ylim(min(ys) - limit, max(ys) + limit)
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="best")
-    ax.set_title("paths")
+    ax.set_title("paths" + (" (cut %g m beyond the truth)" % limit if limit else ""))
 
     # Right: the final positions, zoomed (thesis Fig. 5.7/5.9, right graphs).
-    fx = [truth.x[-1]] + [tr.x[tr.t.index(ev.final_time)] for _, tr, ev, _ in res]
-    fy = [truth.y[-1]] + [tr.y[tr.t.index(ev.final_time)] for _, tr, ev, _ in res]
+    zoomed = [r for r in res if not limit or r[2].final_pos_err <= limit]
+    fx = [truth.x[-1]] + [tr.x[tr.t.index(ev.final_time)] for _, tr, ev, _ in zoomed]
+    fy = [truth.y[-1]] + [tr.y[tr.t.index(ev.final_time)] for _, tr, ev, _ in zoomed]
     zspan = max(max(fx) - min(fx), max(fy) - min(fy), 0.02)
     cx, cy = (max(fx) + min(fx)) / 2, (max(fy) + min(fy)) / 2
     half = 0.5 * zspan * 1.6
@@ -560,12 +576,13 @@ def plot_paths(path, truth, results, title=None):
     if title:
         fig.suptitle(title)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=dpi)
     plt.close(fig)
 
 
-def plot_errors(path, truth, results, heading=False, title=None):
-    """Position (or heading) error over time since the truth's start."""
+def plot_errors(path, truth, results, heading=False, title=None, limit=None, dpi=110):
+    """Position (or heading) error over time since the truth's start; limit caps the
+    position error axis [m]."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(10, 4.5))
     t0 = truth.t[0]
@@ -578,6 +595,8 @@ def plot_errors(path, truth, results, heading=False, title=None):
         drawn += 1
     if heading:
         ax.axhline(0.0, color="black", lw=0.8)
+    if limit and not heading:
+        ax.set_ylim(0.0, limit)
     ax.set_xlabel("time since start (s)")
     ax.set_ylabel("heading error, estimate - truth (deg)" if heading else "position error (m)")
     ax.grid(True, alpha=0.3)
@@ -586,21 +605,21 @@ def plot_errors(path, truth, results, heading=False, title=None):
     ax.set_title((title + ": " if title else "") + ("heading error" if heading else
                                                       "position error"))
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=dpi)
     plt.close(fig)
     return drawn
 
 
-def write_plots(plot_dir, truth, results, title=None):
+def write_plots(plot_dir, truth, results, title=None, limit=None):
     """paths.png, position_error.png and heading_error.png (if any headings) in plot_dir;
-    returns the written paths."""
+    returns the written paths. limit: see plot_paths()."""
     os.makedirs(plot_dir, exist_ok=True)
     written = []
     p = os.path.join(plot_dir, "paths.png")
-    plot_paths(p, truth, results, title)
+    plot_paths(p, truth, results, title, limit)
     written.append(p)
     p = os.path.join(plot_dir, "position_error.png")
-    plot_errors(p, truth, results, heading=False, title=title)
+    plot_errors(p, truth, results, heading=False, title=title, limit=limit)
     written.append(p)
     if truth.heading is not None and any(ev.heading_errors_deg for _, _, ev in results):
         p = os.path.join(plot_dir, "heading_error.png")
@@ -650,6 +669,9 @@ def main(argv=None):
                         help="s an estimate may lie outside the truth's range (default %(default)g)")
     parser.add_argument("--plot-dir", help="write the PNG plots into this directory")
     parser.add_argument("--title", help="title of the plots")
+    parser.add_argument("--plot-limit", type=float, metavar="M",
+                        help="cut paths more than M metres beyond the truth's extent, and "
+                        "cap the position error axis at M (for results that run away)")
     parser.add_argument("--markdown", action="store_true", help="print a Markdown table")
     args = parser.parse_args(argv)
 
@@ -701,7 +723,7 @@ def main(argv=None):
     if rows:
         print(format_table(rows, markdown=args.markdown))
     if args.plot_dir and plotted:
-        for p in write_plots(args.plot_dir, truth, plotted, args.title):
+        for p in write_plots(args.plot_dir, truth, plotted, args.title, args.plot_limit):
             print("wrote %s" % p)
     return 1 if failed or not rows else 0
 
