@@ -425,5 +425,20 @@ class MeanSpreadTest(unittest.TestCase):
         self.assertEqual(ev.mean_spread([None]), (None, None))
 
 
+class ShiftTest(unittest.TestCase):
+    def test_a_delayed_estimate_matches_after_the_shift(self):
+        # The estimate reports at t the truth of t - 0.2 s: 0.1 m behind at 0.5 m/s; moved
+        # 0.2 s earlier it lies on the truth.
+        truth = straight_line()
+        times = [T0 + 0.5 + 0.1 * k for k in range(60)]
+        delayed = ev.make_trajectory(times, [0.5 * (t - T0 - 0.2) for t in times],
+                                     [0.0] * 60, [0.0] * 60)
+        self.assertAlmostEqual(ev.evaluate(delayed, truth).rmse_pos, 0.1, places=6)
+        shifted = ev.shift_trajectory(delayed, -0.2)
+        self.assertAlmostEqual(ev.evaluate(shifted, truth).rmse_pos, 0.0, places=6)
+        self.assertEqual(shifted.x, delayed.x)
+        self.assertAlmostEqual(shifted.t[0], delayed.t[0] - 0.2, places=6)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -292,6 +292,13 @@ def dead_reckon_columns(t, columns, form, parts, radius=0.3, start=(0.0, 0.0, 0.
     return dead_reckon(t, v, omega, start)
 
 
+def shift_trajectory(traj, dt):
+    """traj with every stamp moved by dt [s] (dt < 0: earlier). Evaluating a shifted estimate
+    measures how much of its error is a delay: the thesis's models move the pose with the
+    previous period's velocities (eqs. 5.1-5.5), so their paths trail the truth."""
+    return Trajectory([t + dt for t in traj.t], traj.x, traj.y, traj.heading)
+
+
 def mean_spread(values):
     """(mean, sample standard deviation) of values; the deviation is 0 for one value,
     (None, None) for none. None entries are left out."""

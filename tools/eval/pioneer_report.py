@@ -61,18 +61,19 @@ def parse_variant(spec):
 
 
 def paths_of(label, config, csv_path):
-    """[(row label, trajectory loader)] of one replay: the pose columns, or the path from the
-    logged velocities for a node without a pose; a particle filter gets both."""
+    """[(row label, trajectory loader, plotted)] of one replay: the pose columns, or the path
+    from the logged velocities for a node without a pose; a particle filter gets both, its
+    own pose (a random walk, thesis 5.2.4) in the table only."""
     spec = pioneer_nodes.dead_reckoning_of(config)
     if spec:
-        return [(label, lambda: evaluate.load_result_dead_reckoned(csv_path, spec))]
+        return [(label, lambda: evaluate.load_result_dead_reckoned(csv_path, spec), True)]
     own = lambda: evaluate.load_result_csv(csv_path)
     if config.endswith("_pf"):
         offline = pioneer_nodes.VELOCITIES_OF_POSE_STATE
-        return [(label + " (own pose)", own),
+        return [(label + " (own pose)", own, False),
                 (label + " (v,w offline)",
-                 lambda: evaluate.load_result_dead_reckoned(csv_path, offline))]
-    return [(label, own)]
+                 lambda: evaluate.load_result_dead_reckoned(csv_path, offline), True)]
+    return [(label, own, True)]
 
 
 def main(argv=None):
@@ -166,15 +167,15 @@ def main(argv=None):
             f.write(summary + "\n")
         print("  %-24s %s" % (label, summary.splitlines()[-1] if summary else ""))
         us = evaluate.parse_summary_timing(summary)
-        for row_label, loader in paths_of(label, config, csv_path):
+        for row_label, loader, plotted in paths_of(label, config, csv_path):
             if us is not None:
                 timing[row_label] = us
-            results.append((row_label, loader))
+            results.append((row_label, loader, plotted))
 
     truth_path = args.truth or args.bag
     truth = evaluate.load_truth(truth_path)
     rows, plotted = [], []
-    for label, loader in results:
+    for label, loader, in_plots in results:
         try:
             traj = loader()
             ev = evaluate.evaluate(traj, truth)
@@ -182,7 +183,8 @@ def main(argv=None):
             errors.append("%s: %s" % (label, exc))
             continue
         rows.append((label, ev, timing.get(label)))
-        plotted.append((label, traj, ev))
+        if in_plots:
+            plotted.append((label, traj, ev))
 
     for e in errors:
         print("error: %s" % e, file=sys.stderr)
