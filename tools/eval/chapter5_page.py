@@ -250,8 +250,11 @@ def dist(stat):
     return "%.3f ± %.3f m" % (mean, spread)
 
 
-def img(name, alt):
-    return "![%s](img/chapter5/%s)" % (alt, name)
+def add_images(sec, *images):
+    """Appends the plots (file name, alt text) to a section, one paragraph each."""
+    for name, alt in images:
+        sec.append("![%s](img/chapter5/%s)" % (alt, name))
+        sec.append("")
 
 
 def write(m, ctx, out_path, img_dir):
@@ -348,12 +351,10 @@ def write(m, ctx, out_path, img_dir):
         [("raw (period mean of the accelerometer)", "nav1_moving_average", "x1", "steps"),
          ("nav1 EKF", "nav1_ekf", "x6", "line"), ("nav1ctrl EKF", "nav1ctrl_ekf", "x6", "line")],
         (0.0, 30.0)))
-    sec.append(img("averaging_paths.png", "paths of the averaging, nav1 and nav1ctrl"))
-    sec.append("")
-    sec.append(img("averaging_zoom.png", "nav1ctrl and wheel odometry"))
-    sec.append("")
-    sec.append(img("acceleration.png", "acceleration: raw, nav1, nav1ctrl"))
-    sec.append("")
+    add_images(sec,
+               ("averaging_paths.png", "paths of the averaging, nav1 and nav1ctrl"),
+               ("averaging_zoom.png", "nav1ctrl and wheel odometry"),
+               ("acceleration.png", "acceleration: raw, nav1, nav1ctrl"))
     sec.append("As in Fig. 5.5, nav1 smooths the raw accelerometer means and nav1ctrl follows "
                "the acceleration that cmd_vel asks for; the true acceleration (black) is "
                "limited to 0.3 m/s² by the simulated robot.")
@@ -386,7 +387,10 @@ def write(m, ctx, out_path, img_dir):
                      pm(m.stat(mo + "_pf", "final"))])
     sec.append(table(header, body))
     sec.append("")
-    sec.append("(nav3red and the PF column: path computed offline from v and ω.)")
+    sec.append("(nav3red and the PF column: path computed offline from v and ω.) nav1 runs "
+               "away with every method: nothing but the biased accelerometer tells v; the "
+               "particle filter runs further, its v also random-walking with the particle "
+               "filter's process noise.")
     sec.append("")
     pairs = [("nav1", "nav1ctrl"), ("nav2", "nav2ctrl"), ("nav3", "nav3ctrl"),
              ("nav2", "nav3"), ("nav2ctrl", "nav3ctrl"), ("nav1ctrl", "nav3ctrl")]
@@ -443,8 +447,8 @@ def write(m, ctx, out_path, img_dir):
     figures.append(plot_paths(m, "models.png", img_dir, [
         (mo + " UKF", mo + "_ukf") for mo in ["nav1ctrl", "nav2", "nav2ctrl", "nav3", "nav3ctrl"]],
         "Fig. 5.7: UKFs with different models", limit=1.0))
-    sec.append(img("models.png", "paths of five UKFs"))
-    sec.append("")
+    add_images(sec,
+               ("models.png", "paths of five UKFs"))
     summary.append(("5.2.3: more information gives a smaller error",
                     "in %d of %d steps" % (len(more_info_holds), len(pairs)),
                     "smaller: %s; no clear difference in the other steps, all with the wheels" % (
@@ -579,15 +583,17 @@ def write(m, ctx, out_path, img_dir):
         ("nav3ctrl PF, own pose", "nav3ctrl_pf own pose"),
         ("nav3ctrl PF, path from v, ω", "nav3ctrl_pf")],
         "Fig. 5.8: the particle filter's own pose"))
-    sec.append(img("methods.png", "paths of KF, EKF, UKF and PF"))
-    sec.append("")
-    sec.append(img("particle_filter.png", "the particle filter's own pose"))
-    sec.append("")
+    add_images(sec,
+               ("methods.png", "paths of KF, EKF, UKF and PF"),
+               ("particle_filter.png", "the particle filter's own pose"))
     summary.append(("5.2.4: time order KF/EKF < UKF < PF, PF many times slower",
                     yes_no(order_ok), "PF %.0f × EKF (thesis %.0f ×)" % (
                         pf_factor, THESIS_TABLE_5_3["nav3ctrl_pf"] /
                         THESIS_TABLE_5_3["nav3ctrl_ekf"])))
-    summary.append(("5.2.4: the reduced state (nav3red) is faster", yes_no(red_faster), ""))
+    summary.append(("5.2.4: the reduced state (nav3red) is faster", yes_no(red_faster),
+                    "EKF %.2f → %.2f µs, UKF %.2f → %.2f µs, PF %.0f → %.0f µs" % (
+                        t["nav3ctrl_ekf"], t["nav3red_ekf"], t["nav3ctrl_ukf"],
+                        t["nav3red_ukf"], t["nav3ctrl_pf"], t["nav3red_pf"])))
     summary.append(("5.2.4: all Kalman filters equally accurate; EKF = UKF; pose in the "
                     "state makes no difference", yes_no(kfs_equal),
                     "final positions of EKF and UKF %s apart; nav3red KF and nav3ctrl EKF "
@@ -686,12 +692,10 @@ def write(m, ctx, out_path, img_dir):
         m, "velocity.png", img_dir, "Fig. 5.12: v at 10 ms", "v (m/s)", ("true v", tt, tv),
         [("Q", base + " 10ms", "x5", "line"), ("Q × 0.01", base + " Q*0.01 10ms", "x5", "line"),
          ("Q, 100 ms", base, "x5", "steps")], (0.0, 20.0)))
-    sec.append(img("velocity.png", "velocity estimates at 10 ms"))
-    sec.append("")
-    sec.append(img("tuning_r.png", "tuned UKFs"))
-    sec.append("")
-    sec.append(img("tuning_q.png", "UKFs with scaled Q"))
-    sec.append("")
+    add_images(sec,
+               ("velocity.png", "velocity estimates at 10 ms"),
+               ("tuning_r.png", "tuned UKFs"),
+               ("tuning_q.png", "UKFs with scaled Q"))
     summary.append(("5.2.5: a shorter period is better",
                     "final error: %s; RMSE: %s" % (
                         "yes" if period_word == "smaller" else "**no**",
