@@ -416,10 +416,10 @@ def write(m, ctx, out_path, img_dir):
     rivals = [mo for mo in MODELS_WITH_POSE if mo != "nav3ctrl" and
               compare(m, "nav3ctrl_ukf", mo + "_ukf")[0] != "smaller"]
     nav3ctrl_best = not rivals
-    sec.append("- nav3ctrl best: %s. Smallest mean final error (UKF): %s (%s m); nav3ctrl "
-               "%s m; %s." % (
+    sec.append("- nav3ctrl best: %s. The smallest mean final error (UKF) is %s's, %s m; "
+               "nav3ctrl %s: %s." % (
                    yes_no(nav3ctrl_best), best_ukf, pm(m.stat(best_ukf + "_ukf", "final")),
-                   pm(m.stat("nav3ctrl_ukf", "final")),
+                   "has %s m" % pm(m.stat("nav3ctrl_ukf", "final")),
                    "no clear difference to " + ", ".join(rivals) if rivals else
                    "clearly smaller than every other model"))
     sec.append("- nav1ctrl closer than nav2 and nav2ctrl: %s (%s m against %s and %s m)." % (
@@ -566,10 +566,9 @@ def write(m, ctx, out_path, img_dir):
                "thesis's R nav3's particle filter lost the track (final error over 1 m) in %d "
                "of %d bags. The shipped particle filter headers therefore weigh with all "
                "variances times 1000, which keeps several particles alive (likelihood "
-               "tempering; 300 to 3000 all kept the track). Against the thesis's R the final "
-               "error of the nav3ctrl PF is then %s and that of the nav3red PF %s, and each "
-               "step costs more: the moments are taken over many distinct particles instead of "
-               "one. The own pose stays useless for the reason the thesis gives: its process "
+               "tempering; 300 to 3000 all kept the track). Final error against the thesis's R: "
+               "nav3ctrl PF %s, nav3red PF %s; a step costs somewhat more (table above), the "
+               "moments being taken over many distinct particles instead of one. The own pose stays useless for the reason the thesis gives: its process "
                "noise of 0.1 on x, y, θ and Δs is never corrected by a measurement, so the "
                "particles' poses random-walk and resampling picks among them at random "
                "(Fig. 5.8)." % (lost, n, change_text(m, "nav3ctrl_pf", "nav3ctrl_pf thesis R"),
@@ -672,8 +671,8 @@ def write(m, ctx, out_path, img_dir):
                "one, accelerates at 0.3 m/s²); at 10 ms it demands ten times as much, and "
                "between two wheel readings (every 100 ms) nine periods pull v to the command "
                "(figure below: the 10 ms estimate jumps to cmd_vel and back at each wheel "
-               "reading). nav3, whose model does not use cmd_vel, has no such limit and "
-               "improves down to 10 ms. On the real robot the thesis saw nav3ctrl improve at "
+               "reading). nav3, whose model does not use cmd_vel, has no such limit: its "
+               "path (RMSE) improves down to 10 ms. On the real robot the thesis saw nav3ctrl improve at "
                "10 ms; its model used a hard-coded period (FILTER_T, section 5.3.1), and if that "
                "stayed at 0.1 s in the 10 ms filters, their eq. 5.14 asked for the same "
                "acceleration as at 100 ms." % (
@@ -729,7 +728,9 @@ def write(m, ctx, out_path, img_dir):
     w("")
     w("after building the nodes (`catkin_make -DCMAKE_BUILD_TYPE=Release --make-args "
       "<sf_ + each name of SF_PIONEER_CONFIGS in CMakeLists.txt>`, with the devel space "
-      "sourced). Machine: %s. Load average %.2f before and %.2f after the replays. "
+      "sourced). Machine: %s. Other jobs shared the machine (load average %.2f before and "
+      "%.2f after the replays), so the Table 5.3 times are the fastest of several replays; "
+      "the other times in the replay summaries vary by up to a few times between runs. "
       "Revision %s, %s. %d replays." % (
           ctx["machine"], ctx["load"][0][0], ctx["load"][1][0], ctx["revision"], ctx["date"],
           sum(len(m.replays[b]) for b in m.bags)))
