@@ -49,8 +49,10 @@ VARIANTS = collections.OrderedDict([
     # x 0.01 at 10 ms (Fig. 5.11), and the period alone (Fig. 5.14).
     ("nav3ctrl_ukf R*10", ("nav3ctrl_ukf", ["--scale-r", "10"])),
     ("nav3ctrl_ukf R*10 10ms", ("nav3ctrl_ukf", ["--scale-r", "10", "--estimation-period", "10"])),
-    ("nav3ctrl_ukf Q*0.1 10ms", ("nav3ctrl_ukf", ["--scale-q", "0.1", "--estimation-period", "10"])),
-    ("nav3ctrl_ukf Q*0.01 10ms", ("nav3ctrl_ukf", ["--scale-q", "0.01", "--estimation-period", "10"])),
+    ("nav3ctrl_ukf Q*0.1 10ms",
+     ("nav3ctrl_ukf", ["--scale-q", "0.1", "--estimation-period", "10"])),
+    ("nav3ctrl_ukf Q*0.01 10ms",
+     ("nav3ctrl_ukf", ["--scale-q", "0.01", "--estimation-period", "10"])),
     ("nav3ctrl_ukf 200ms", ("nav3ctrl_ukf", ["--estimation-period", "200"])),
     ("nav3ctrl_ukf 50ms", ("nav3ctrl_ukf", ["--estimation-period", "50"])),
     ("nav3ctrl_ukf 20ms", ("nav3ctrl_ukf", ["--estimation-period", "20"])),
