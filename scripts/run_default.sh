@@ -10,9 +10,9 @@ sf_prepare
 
 # The default job, after the build (SF_WS is final only after sf_prepare):
 # 1. the thesis's Pioneer 3-AT dead reckoning (chapter 5): bags/pioneer_seed1.bag replayed
-#    offline through the nav3ctrl UKF and every other sf_nav* node (plus the UKF's tuned runs
-#    of Fig. 5.10); prints the accuracy table against the bag's ground truth and writes the
-#    table, the plots and the replayed CSVs to $SF_WS/results/;
+#    offline through a default set of eight sf_nav* nodes (--all: every one) plus the nav3ctrl
+#    UKF's tuned runs of Fig. 5.10; prints the accuracy table against the bag's ground truth
+#    and writes the table, the plots and the replayed CSVs to $SF_WS/results/;
 # 2. the moving-train example (RMSE table per estimation method).
 SF_RESULTS_DIR="${SF_WS}/results"
 SF_DEFAULT_JOB=(/usr/bin/python3 "${SF_REPO_ROOT}/tools/eval/pioneer_report.py"

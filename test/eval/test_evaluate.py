@@ -289,5 +289,156 @@ class FilesAndFormatTest(unittest.TestCase):
         self.assertTrue(md.startswith("| filter |"))
 
 
+class DeadReckoningTest(unittest.TestCase):
+    """Paths from logged velocities: eqs. 5.1-5.3 and 5.5, checked against closed forms."""
+
+    def test_straight_line_with_the_models_delay(self):
+        # ds_0 = 0 and ds_k = v dt: the position trails the velocity by one sample.
+        dt, v = 0.1, 0.5
+        t = [T0 + k * dt for k in range(11)]
+        tr = ev.dead_reckon(t, [v] * 11, [0.0] * 11)
+        self.assertEqual(tr.t, t)
+        self.assertEqual(tr.x[0], 0.0)
+        self.assertEqual(tr.x[1], 0.0)
+        for k in range(1, 11):
+            self.assertAlmostEqual(tr.x[k], (k - 1) * v * dt, places=6)  # dt from 1.7e9 stamps
+            self.assertEqual(tr.y[k], 0.0)
+            self.assertEqual(tr.heading[k], 0.0)
+
+    def test_constant_turn_matches_the_closed_form(self):
+        # theta_k = k w dt; x_k = sum_{j=1}^{k-1} v dt cos(j w dt), and the sum of cos(j p)
+        # for j = 1..m is sin(m p / 2) cos((m + 1) p / 2) / sin(p / 2) (same with sin for y).
+        dt, v, w = 0.01, 0.4, 0.7
+        n = 500
+        t = [k * dt for k in range(n)]
+        tr = ev.dead_reckon(t, [v] * n, [w] * n)
+        p = w * dt
+        for k in (2, 17, 250, n - 1):
+            m = k - 1
+            common = v * dt * math.sin(m * p / 2) / math.sin(p / 2)
+            self.assertAlmostEqual(tr.x[k], common * math.cos((m + 1) * p / 2), places=9)
+            self.assertAlmostEqual(tr.y[k], common * math.sin((m + 1) * p / 2), places=9)
+            self.assertAlmostEqual(tr.heading[k], k * p, places=9)
+
+    def test_full_turn_closes_the_polygon(self):
+        # N steps of 2 pi / N: the N chords sum to zero, so sample N + 1 is the start again.
+        n, dt, v = 40, 0.1, 1.0
+        t = [k * dt for k in range(n + 2)]
+        tr = ev.dead_reckon(t, [v] * (n + 2), [2 * math.pi / (n * dt)] * (n + 2),
+                            start=(3.0, -1.0, 0.0))
+        self.assertAlmostEqual(tr.x[n + 1], 3.0, places=9)
+        self.assertAlmostEqual(tr.y[n + 1], -1.0, places=9)
+        # it went round (a circle of 4 m: 1.27 m across), it did not stand still
+        self.assertGreater(max(tr.y) - (-1.0), 1.2)
+
+    def test_start_pose_and_heading(self):
+        t = [0.0, 1.0, 2.0, 3.0]
+        tr = ev.dead_reckon(t, [2.0] * 4, [0.0] * 4, start=(1.0, 2.0, math.pi / 2))
+        self.assertAlmostEqual(tr.x[3], 1.0, places=12)
+        self.assertAlmostEqual(tr.y[3], 2.0 + 2 * 2.0, places=12)  # two intervals of ds = 2
+        self.assertEqual(tr.heading, [math.pi / 2] * 4)
+
+    def test_non_finite_values_hold(self):
+        self.assertEqual(ev.hold_finite([float("nan"), 1.0, float("nan"), float("inf"), 2.0]),
+                         [0.0, 1.0, 1.0, 1.0, 2.0])
+        t = [0.0, 1.0, 2.0, 3.0]
+        tr = ev.dead_reckon(t, [float("nan"), 1.0, float("nan"), 1.0], [0.0] * 4)
+        self.assertEqual(tr.x, [0.0, 0.0, 0.0, 1.0])  # ds_1 = 0 (nan as 0), ds_2 = 1
+
+    def test_length_mismatch(self):
+        with self.assertRaises(ValueError):
+            ev.dead_reckon([0.0, 1.0], [1.0], [0.0, 0.0])
+        with self.assertRaises(ValueError):
+            ev.dead_reckon([], [], [])
+
+    def test_integrate_acceleration(self):
+        # eq. 5.6 from rest with a = 0.3: v_k = 0.3 k dt; the last a is not used.
+        t = [k * 0.1 for k in range(6)]
+        v = ev.integrate_acceleration(t, [0.3] * 5 + [99.0])
+        for k in range(6):
+            self.assertAlmostEqual(v[k], 0.03 * k, places=12)
+
+    def test_wheel_velocities(self):
+        v, w = ev.wheel_velocities([400.0, -300.0], [600.0, 300.0], 0.3)
+        self.assertAlmostEqual(v[0], 0.5)
+        self.assertAlmostEqual(w[0], 0.2 / 0.6)  # (0.6 - 0.4) m/s over 2 R
+        self.assertAlmostEqual(v[1], 0.0)  # turning in place
+        self.assertAlmostEqual(w[1], 1.0)
+        with self.assertRaises(ValueError):
+            ev.wheel_velocities([1.0], [1.0], 0.0)
+
+    def test_parse_specs(self):
+        self.assertEqual(ev.parse_dead_reckoning("v=x5,omega=x3"),
+                         ("velocities", {"v": "x5", "omega": "x3"}))
+        self.assertEqual(ev.parse_dead_reckoning(" omega=x0 , a=x1 "),
+                         ("acceleration", {"a": "x1", "omega": "x0"}))
+        self.assertEqual(ev.parse_dead_reckoning("wheels=x0,x1"),
+                         ("wheels", {"wheels": ["x0", "x1"]}))
+        for bad in ["v=x1", "v=x1,omega=x0,a=x2", "wheels=x0", "wheels=x0,v=x1", "speed=x1",
+                    "v=x1,v=x2", "x1,x2", "v=,omega=x0"]:
+            with self.assertRaises(ValueError, msg=bad):
+                ev.parse_dead_reckoning(bad)
+
+
+class DeadReckonedCsvTest(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def write(self, text):
+        path = os.path.join(self.dir.name, "r.csv")
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def test_wheel_columns(self):
+        # Both wheels at 500 mm/s (the missing value holds): 0.5 m/s straight on; with the
+        # model's delay ds = 0, 0.5, 0.5, so x = 0, 0, 0.5, 1.0.
+        path = self.write("time,x0,x1,var0,var1,present_inputs\n"
+                          "0,500,500,0,0,2\n1,500,500,0,0,2\n2,500,500,0,0,2\n"
+                          "3,,500,0,0,1\n")
+        tr = ev.load_result_dead_reckoned(path, "wheels=x0,x1")
+        self.assertEqual(tr.x, [0.0, 0.0, 0.5, 1.0])
+        self.assertEqual(tr.heading, [0.0] * 4)
+        with self.assertRaisesRegex(ValueError, "no column x7"):
+            ev.load_result_dead_reckoned(path, "v=x7,omega=x0")
+
+    def test_acceleration_columns(self):
+        # a = 0.5 m/s^2 from rest: v = 0, 0.5, 1.0, 1.5 (eq. 5.6), ds = 0, 0, 0.5, so
+        # x = 0, 0, 0, 0.5; omega = 0.25 rad/s turns the heading by 0.25 per second.
+        path = self.write("time,x0,x1\n0,0.25,0.5\n1,0.25,0.5\n2,0.25,0.5\n3,0.25,0.5\n")
+        tr = ev.load_result_dead_reckoned(path, "a=x1,omega=x0")
+        self.assertEqual(tr.heading, [0.0, 0.25, 0.5, 0.75])
+        self.assertAlmostEqual(tr.x[3], 0.5 * math.cos(0.5), places=12)
+        self.assertAlmostEqual(tr.y[3], 0.5 * math.sin(0.5), places=12)
+        self.assertEqual(tr.x[:3], [0.0, 0.0, 0.0])
+
+
+class MeanSpreadTest(unittest.TestCase):
+    def test_values(self):
+        self.assertEqual(ev.mean_spread([1.0, 2.0, 3.0]), (2.0, 1.0))  # sample deviation
+        self.assertEqual(ev.mean_spread([4.0, None, 8.0]), (6.0, math.sqrt(8.0)))
+        self.assertEqual(ev.mean_spread([5.0]), (5.0, 0.0))
+        self.assertEqual(ev.mean_spread([]), (None, None))
+        self.assertEqual(ev.mean_spread([None]), (None, None))
+
+
+class ShiftTest(unittest.TestCase):
+    def test_a_delayed_estimate_matches_after_the_shift(self):
+        # The estimate reports at t the truth of t - 0.2 s: 0.1 m behind at 0.5 m/s; moved
+        # 0.2 s earlier it lies on the truth.
+        truth = straight_line()
+        times = [T0 + 0.5 + 0.1 * k for k in range(60)]
+        delayed = ev.make_trajectory(times, [0.5 * (t - T0 - 0.2) for t in times],
+                                     [0.0] * 60, [0.0] * 60)
+        self.assertAlmostEqual(ev.evaluate(delayed, truth).rmse_pos, 0.1, places=6)
+        shifted = ev.shift_trajectory(delayed, -0.2)
+        self.assertAlmostEqual(ev.evaluate(shifted, truth).rmse_pos, 0.0, places=6)
+        self.assertEqual(shifted.x, delayed.x)
+        self.assertAlmostEqual(shifted.t[0], delayed.t[0] - 0.2, places=6)
+
+
 if __name__ == "__main__":
     unittest.main()

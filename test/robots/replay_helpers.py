@@ -9,14 +9,14 @@ import unittest
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
-import pioneer_report  # noqa: E402  (devel-space lookup)
+import pioneer_nodes  # noqa: E402  (devel-space lookup)
 
 
 def replay_exe(exe_name, bag, csv_path, *extra):
     """Runs `<exe> --replay BAG --csv CSV [extra]` from $SF_LIB_DIR (set by the CMake test
     registration) or the sourced devel space; the finished process. Skips the test when the
     executable is not built, fails it when the replay fails."""
-    lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_report.find_lib_dir(exe_name)
+    lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_nodes.find_lib_dir(exe_name)
     exe = os.path.join(lib_dir or "", exe_name)
     if not os.access(exe, os.X_OK):
         raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel space)" % exe_name)

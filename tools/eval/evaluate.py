@@ -13,6 +13,13 @@ RESULT is LABEL=PATH or PATH (the label is then the file name without extension)
           node's `--bag OUT.bag` or a `rosbag record` of the running node; PoseStamped
           and PointStamped topics work too (e.g. --odom-topic vision/pose: a raw sensor).
 
+With --dead-reckoning the path of a CSV result is computed from logged velocities, as the
+thesis did for a state without a pose (nav3red, the particle filter, the averaging; 5.2.2
+and 5.2.4): the transition eqs. 5.1-5.3 and 5.5 applied to the logged values, from --start.
+SPEC names the columns: v=x1,omega=x0 (velocities), a=x1,omega=x0 (an acceleration,
+first integrated into v by eq. 5.6 from rest), wheels=x0,x1 (left and right wheel speeds in
+mm/s, converted by eqs. 5.17-5.18 with --radius).
+
 TRUTH is a bag with geometry_msgs/PoseStamped on ground_truth/pose (--truth-topic; the
 simulated bags of bags/ have it), or a CSV with the columns time,x,y[,heading] (a header
 line with these names, or no header and the columns in this order).
@@ -169,6 +176,142 @@ def parse_summary_timing(text):
     return float(found[-1]) if found else None
 
 
+# -----------------------------------------------------------------------------
+# Paths from logged velocities (thesis 5.2.2 and 5.2.4: "the position is calculated offline
+# from the logged state variables v and omega")
+# -----------------------------------------------------------------------------
+def dead_reckon(t, v, omega, start=(0.0, 0.0, 0.0)):
+    """Trajectory from logged velocities by the thesis's own transition eqs. 5.1-5.3 and 5.5
+    (= 5.8-5.10 and 5.12), so that a path computed offline from a filter without a pose
+    (nav3red, 5.2.4) is the path the full-state filters integrate:
+        x_k = x_{k-1} + ds_{k-1} cos(theta_{k-1}),  y likewise with sin,
+        theta_k = theta_{k-1} + omega_{k-1} dt_k,   ds_k = v_{k-1} dt_k,
+    with dt_k = t_k - t_{k-1}, ds_0 = 0 and the start pose (x, y, heading) at t_0. A value
+    that is not finite (an input not yet received) counts as 0 before the first finite one
+    and as the previous one after."""
+    n = len(t)
+    if len(v) != n or len(omega) != n:
+        raise ValueError("dead_reckon: t, v and omega differ in length")
+    if n == 0:
+        raise ValueError("dead_reckon: no samples")
+    v = hold_finite(v)
+    omega = hold_finite(omega)
+    x, y, h = [float(start[0])], [float(start[1])], [float(start[2])]
+    ds = 0.0
+    for k in range(1, n):
+        dt = t[k] - t[k - 1]
+        x.append(x[-1] + ds * math.cos(h[-1]))
+        y.append(y[-1] + ds * math.sin(h[-1]))
+        h.append(h[-1] + omega[k - 1] * dt)
+        ds = v[k - 1] * dt
+    return make_trajectory(t, x, y, h)
+
+
+def hold_finite(values):
+    """values with every non-finite entry replaced by the previous finite one (0 at first)."""
+    out, last = [], 0.0
+    for a in values:
+        a = float(a)
+        if math.isfinite(a):
+            last = a
+        out.append(last)
+    return out
+
+
+def integrate_acceleration(t, a, v0=0.0):
+    """Velocities from accelerations by eq. 5.6, forward Euler: v_k = v_{k-1} + a_{k-1} dt."""
+    if len(a) != len(t):
+        raise ValueError("integrate_acceleration: t and a differ in length")
+    a = hold_finite(a)
+    v = [float(v0)] if t else []
+    for k in range(1, len(t)):
+        v.append(v[-1] + a[k - 1] * (t[k] - t[k - 1]))
+    return v
+
+
+def wheel_velocities(left, right, radius):
+    """(v [m/s], omega [rad/s]) from the wheel speeds in mm/s: eqs. 5.17-5.18 solved,
+    v = (left + right) / 2, omega = (right - left) / (2 R)."""
+    if len(left) != len(right):
+        raise ValueError("wheel_velocities: left and right differ in length")
+    if not radius > 0:
+        raise ValueError("wheel_velocities: the radius must be > 0, got %r" % radius)
+    v = [(l + r) / 2000.0 for l, r in zip(left, right)]
+    omega = [(r - l) / (2000.0 * radius) for l, r in zip(left, right)]
+    return v, omega
+
+
+DEAD_RECKONING_FORMS = {
+    frozenset(["v", "omega"]): "velocities",
+    frozenset(["a", "omega"]): "acceleration",
+    frozenset(["wheels"]): "wheels",
+}
+
+
+def parse_dead_reckoning(spec):
+    """'v=x5,omega=x3' | 'a=x1,omega=x0' | 'wheels=x0,x1' -> (form, {name: column(s)}).
+    form is 'velocities', 'acceleration' or 'wheels'; wheels maps to [left, right]."""
+    parts = {}
+    items = [p.strip() for p in spec.split(",") if p.strip()]
+    k = 0
+    while k < len(items):
+        if "=" not in items[k]:
+            raise ValueError("--dead-reckoning: expected NAME=COLUMN, got %r in %r"
+                             % (items[k], spec))
+        name, col = [a.strip() for a in items[k].split("=", 1)]
+        if name == "wheels":  # wheels=LEFT,RIGHT: the next item is the right wheel
+            if k + 1 >= len(items) or "=" in items[k + 1]:
+                raise ValueError("--dead-reckoning: wheels needs two columns, "
+                                 "wheels=LEFT,RIGHT; got %r" % spec)
+            parts[name] = [col, items[k + 1]]
+            k += 2
+            continue
+        if name in parts:
+            raise ValueError("--dead-reckoning: %s given twice in %r" % (name, spec))
+        parts[name] = col
+        k += 1
+    form = DEAD_RECKONING_FORMS.get(frozenset(parts))
+    if form is None or any(not c for c in parts.values()):
+        raise ValueError("--dead-reckoning: expected v=COL,omega=COL or a=COL,omega=COL or "
+                         "wheels=LEFT,RIGHT; got %r" % spec)
+    return form, parts
+
+
+def dead_reckon_columns(t, columns, form, parts, radius=0.3, start=(0.0, 0.0, 0.0)):
+    """Trajectory from the named columns (dict name -> list) of a result, see
+    parse_dead_reckoning: velocities are integrated directly, an acceleration first into
+    v (eq. 5.6, starting at rest), wheel speeds are converted by wheel_velocities()."""
+    if form == "velocities":
+        v, omega = columns[parts["v"]], columns[parts["omega"]]
+    elif form == "acceleration":
+        v, omega = integrate_acceleration(t, columns[parts["a"]]), columns[parts["omega"]]
+    elif form == "wheels":
+        left, right = (hold_finite(columns[c]) for c in parts["wheels"])
+        v, omega = wheel_velocities(left, right, radius)
+    else:
+        raise ValueError("unknown dead-reckoning form %r" % form)
+    return dead_reckon(t, v, omega, start)
+
+
+def shift_trajectory(traj, dt):
+    """traj with every stamp moved by dt [s] (dt < 0: earlier). Evaluating a shifted estimate
+    measures how much of its error is a delay: the thesis's models move the pose with the
+    previous period's velocities (eqs. 5.1-5.5), so their paths trail the truth."""
+    return Trajectory([t + dt for t in traj.t], traj.x, traj.y, traj.heading)
+
+
+def mean_spread(values):
+    """(mean, sample standard deviation) of values; the deviation is 0 for one value,
+    (None, None) for none. None entries are left out."""
+    values = [float(a) for a in values if a is not None]
+    if not values:
+        return None, None
+    mean = sum(values) / len(values)
+    if len(values) == 1:
+        return mean, 0.0
+    return mean, math.sqrt(sum((a - mean) ** 2 for a in values) / (len(values) - 1))
+
+
 def format_table(rows, markdown=False):
     """Text table. rows: list of (label, Evaluation, us_per_step or None)."""
     headers = ["filter", "estimates", "RMSE pos [m]", "final pos err [m]",
@@ -228,6 +371,33 @@ def load_result_csv(path, pose_columns=None):
             if len(cols) > 2:
                 h.append(v[3])
     return make_trajectory(t, x, y, h if len(cols) > 2 else None)
+
+
+def read_csv_columns(path, names):
+    """{name: [float]} and the time column of a replay CSV, for the given column names."""
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = [h.strip() for h in next(reader)]
+        missing = [c for c in ["time"] + list(names) if c not in header]
+        if missing:
+            raise ValueError("%s: no column %s (columns: %s)" % (
+                path, ", ".join(missing), ",".join(header)))
+        idx = {c: header.index(c) for c in ["time"] + list(names)}
+        out = {c: [] for c in idx}
+        for row in reader:
+            if not row:
+                continue
+            for c, i in idx.items():
+                out[c].append(_float(row[i]))
+    return out.pop("time"), out
+
+
+def load_result_dead_reckoned(path, spec, radius=0.3, start=(0.0, 0.0, 0.0)):
+    """Trajectory dead-reckoned from the columns of a replay CSV (--dead-reckoning SPEC)."""
+    form, parts = parse_dead_reckoning(spec)
+    names = parts["wheels"] if form == "wheels" else list(parts.values())
+    t, columns = read_csv_columns(path, names)
+    return dead_reckon_columns(t, columns, form, parts, radius, start)
 
 
 def load_truth_csv(path):
@@ -356,19 +526,31 @@ def _draw_finals(ax, truth, results, arrow_len):
                     zorder=6)
 
 
-def plot_paths(path, truth, results, title=None):
-    """results: list of (label, Trajectory, Evaluation)."""
+def _colors(plt, n):
+    """n distinguishable colours: the default cycle, or tab20 for more than 10 lines."""
+    if n <= 10:
+        cycle = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        return [cycle[i % len(cycle)] for i in range(n)]
+    cmap = plt.get_cmap("tab20")
+    return [cmap(i % 20) for i in range(n)]
+
+
+def plot_paths(path, truth, results, title=None, limit=None, dpi=110):
+    """results: list of (label, Trajectory, Evaluation). limit [m]: the left panel shows the
+    truth's extent plus `limit` (paths further out are cut) and the zoom on the final
+    positions leaves out finals more than `limit` from the truth's (their errors stay in the
+    legend); None shows everything."""
     plt = _pyplot()
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    res = [(l, tr, ev, colors[i % len(colors)]) for i, (l, tr, ev) in enumerate(results)]
+    colors = _colors(plt, len(results))
+    res = [(l, tr, ev, colors[i]) for i, (l, tr, ev) in enumerate(results)]
     fig, (ax, az) = plt.subplots(1, 2, figsize=(14, 6.5), gridspec_kw={"width_ratios": [3, 2]})
 
     # Left: the paths.
     ax.plot(truth.x, truth.y, "-", color="black", lw=2.5, alpha=0.35, label="ground truth")
     for label, tr, ev, color in res:
         ax.plot(tr.x, tr.y, "-", color=color, lw=1.2, label=label)
-    xs = truth.x + [v for _, tr, _, _ in res for v in tr.x]
-    ys = truth.y + [v for _, tr, _, _ in res for v in tr.y]
+    xs = truth.x + ([] if limit else [v for _, tr, _, _ in res for v in tr.x])
+    ys = truth.y + ([] if limit else [v for _, tr, _, _ in res for v in tr.y])
     span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-3)
     ax.plot(truth.x[0], truth.y[0], "o", color="black", markersize=13, mfc="none", mew=1.5,
             label="start", zorder=6)
@@ -377,14 +559,18 @@ def plot_paths(path, truth, results, title=None):
     ax.plot([], [], "x", color="gray", markersize=9, mew=2, label="final estimated positions")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
+    if limit:
+        ax.set_xlim(min(xs) - limit, max(xs) + limit)
+        ax.set_ylim(min(ys) - limit, max(ys) + limit)
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="best")
-    ax.set_title("paths")
+    ax.set_title("paths" + (" (cut %g m beyond the truth)" % limit if limit else ""))
 
     # Right: the final positions, zoomed (thesis Fig. 5.7/5.9, right graphs).
-    fx = [truth.x[-1]] + [tr.x[tr.t.index(ev.final_time)] for _, tr, ev, _ in res]
-    fy = [truth.y[-1]] + [tr.y[tr.t.index(ev.final_time)] for _, tr, ev, _ in res]
+    zoomed = [r for r in res if not limit or r[2].final_pos_err <= limit]
+    fx = [truth.x[-1]] + [tr.x[tr.t.index(ev.final_time)] for _, tr, ev, _ in zoomed]
+    fy = [truth.y[-1]] + [tr.y[tr.t.index(ev.final_time)] for _, tr, ev, _ in zoomed]
     zspan = max(max(fx) - min(fx), max(fy) - min(fy), 0.02)
     cx, cy = (max(fx) + min(fx)) / 2, (max(fy) + min(fy)) / 2
     half = 0.5 * zspan * 1.6
@@ -407,12 +593,13 @@ def plot_paths(path, truth, results, title=None):
     if title:
         fig.suptitle(title)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=dpi)
     plt.close(fig)
 
 
-def plot_errors(path, truth, results, heading=False, title=None):
-    """Position (or heading) error over time since the truth's start."""
+def plot_errors(path, truth, results, heading=False, title=None, limit=None, dpi=110):
+    """Position (or heading) error over time since the truth's start; limit caps the
+    position error axis [m]."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(10, 4.5))
     t0 = truth.t[0]
@@ -425,6 +612,8 @@ def plot_errors(path, truth, results, heading=False, title=None):
         drawn += 1
     if heading:
         ax.axhline(0.0, color="black", lw=0.8)
+    if limit and not heading:
+        ax.set_ylim(0.0, limit)
     ax.set_xlabel("time since start (s)")
     ax.set_ylabel("heading error, estimate - truth (deg)" if heading else "position error (m)")
     ax.grid(True, alpha=0.3)
@@ -433,21 +622,21 @@ def plot_errors(path, truth, results, heading=False, title=None):
     ax.set_title((title + ": " if title else "") + ("heading error" if heading else
                                                       "position error"))
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=dpi)
     plt.close(fig)
     return drawn
 
 
-def write_plots(plot_dir, truth, results, title=None):
+def write_plots(plot_dir, truth, results, title=None, limit=None):
     """paths.png, position_error.png and heading_error.png (if any headings) in plot_dir;
-    returns the written paths."""
+    returns the written paths. limit: see plot_paths()."""
     os.makedirs(plot_dir, exist_ok=True)
     written = []
     p = os.path.join(plot_dir, "paths.png")
-    plot_paths(p, truth, results, title)
+    plot_paths(p, truth, results, title, limit)
     written.append(p)
     p = os.path.join(plot_dir, "position_error.png")
-    plot_errors(p, truth, results, heading=False, title=title)
+    plot_errors(p, truth, results, heading=False, title=title, limit=limit)
     written.append(p)
     if truth.heading is not None and any(ev.heading_errors_deg for _, _, ev in results):
         p = os.path.join(plot_dir, "heading_error.png")
@@ -481,6 +670,14 @@ def main(argv=None):
                         help="topic of the results in bags (default %(default)s)")
     parser.add_argument("--pose-columns", help="CSV columns X,Y[,HEADING] "
                         "(default pose_x,pose_y,pose_heading)")
+    parser.add_argument("--dead-reckoning", metavar="SPEC",
+                        help="compute the path of CSV results from logged velocities instead "
+                        "of pose columns: v=COL,omega=COL | a=COL,omega=COL | "
+                        "wheels=LEFT,RIGHT (mm/s; --radius)")
+    parser.add_argument("--radius", type=float, default=0.3,
+                        help="effective skid-steer radius for wheels= [m] (default %(default)g)")
+    parser.add_argument("--start", default="0,0,0", metavar="X,Y,HEADING",
+                        help="start pose of --dead-reckoning [m, m, rad] (default %(default)s)")
     parser.add_argument("--timing", action="append", metavar="LABEL=US",
                         help="mean time per estimation step of a result [us] (repeatable)")
     parser.add_argument("--summary", action="append", metavar="LABEL=FILE",
@@ -489,12 +686,23 @@ def main(argv=None):
                         help="s an estimate may lie outside the truth's range (default %(default)g)")
     parser.add_argument("--plot-dir", help="write the PNG plots into this directory")
     parser.add_argument("--title", help="title of the plots")
+    parser.add_argument("--plot-limit", type=float, metavar="M",
+                        help="cut paths more than M metres beyond the truth's extent, and "
+                        "cap the position error axis at M (for results that run away)")
     parser.add_argument("--markdown", action="store_true", help="print a Markdown table")
     args = parser.parse_args(argv)
 
     pose_columns = [c.strip() for c in args.pose_columns.split(",")] if args.pose_columns else None
     if pose_columns is not None and len(pose_columns) not in (2, 3):
         parser.error("--pose-columns needs 2 or 3 names")
+    try:
+        if args.dead_reckoning:
+            parse_dead_reckoning(args.dead_reckoning)
+        start = tuple(float(a) for a in args.start.split(","))
+        if len(start) != 3:
+            raise ValueError("--start: expected X,Y,HEADING, got %r" % args.start)
+    except ValueError as exc:
+        parser.error(str(exc))
     timing = {k: float(v) for k, v in parse_label_values(args.timing, "--timing").items()}
     for label, fname in parse_label_values(args.summary, "--summary").items():
         with open(fname) as f:
@@ -518,7 +726,10 @@ def main(argv=None):
         if seen[label] > 1:  # the same label twice: keep both, told apart
             label = "%s (%d)" % (label, seen[label])
         try:
-            traj = load_result(path, pose_columns, args.odom_topic)
+            if args.dead_reckoning and not path.endswith(".bag"):
+                traj = load_result_dead_reckoned(path, args.dead_reckoning, args.radius, start)
+            else:
+                traj = load_result(path, pose_columns, args.odom_topic)
             ev = evaluate(traj, truth, args.time_tolerance)
         except (ValueError, OSError) as exc:
             print("error: %s: %s" % (label, exc), file=sys.stderr)
@@ -529,7 +740,7 @@ def main(argv=None):
     if rows:
         print(format_table(rows, markdown=args.markdown))
     if args.plot_dir and plotted:
-        for p in write_plots(args.plot_dir, truth, plotted, args.title):
+        for p in write_plots(args.plot_dir, truth, plotted, args.title, args.plot_limit):
             print("wrote %s" % p)
     return 1 if failed or not rows else 0
 

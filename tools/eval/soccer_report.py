@@ -33,7 +33,7 @@ REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import evaluate  # noqa: E402
-import pioneer_report  # noqa: E402  (replay runner and devel-space lookup)
+import pioneer_nodes  # noqa: E402  (replay runner and devel-space lookup)
 
 DEFAULT_BAGS = [os.path.join(REPO, "bags", b) for b in ("soccer_seed1.bag", "soccer_lost_vision.bag")]
 VISION_TOPIC = "vision/pose"
@@ -112,7 +112,7 @@ def report_bag(bag, exe, replay_dir, out_dir, timeout):
     """Replays and evaluates one bag; returns (text lines, markdown lines)."""
     name = os.path.splitext(os.path.basename(bag))[0]
     csv_path = os.path.join(replay_dir, name + ".csv")
-    summary = pioneer_report.replay(exe, bag, csv_path, [], timeout)
+    summary = pioneer_nodes.replay(exe, bag, csv_path, [], timeout)
     with open(os.path.join(replay_dir, name + ".txt"), "w") as f:
         f.write(" ".join([exe, "--replay", bag, "--csv", csv_path]) + "\n" + summary + "\n")
     print("  %-20s %s" % (name, summary.splitlines()[-1] if summary else ""))
@@ -173,7 +173,7 @@ def main(argv=None):
     args = parser.parse_args(argv)
 
     t_start = time.monotonic()
-    lib_dir = args.lib_dir or pioneer_report.find_lib_dir(args.exe)
+    lib_dir = args.lib_dir or pioneer_nodes.find_lib_dir(args.exe)
     exe = args.exe if os.sep in args.exe else os.path.join(lib_dir or "", args.exe)
     if not os.access(exe, os.X_OK):
         print("error: %s not found: build it and source devel/setup.bash, or give --lib-dir"

@@ -1,0 +1,6 @@
+// Pioneer 3-AT dead reckoning, model nav3ctrl (all sensors and cmd_vel; thesis section 5.2.1),
+// with the PARTICLE_FILTER_SIR: transition eqs. 5.8-5.14, observation eqs. 5.15-5.18; the
+// particle filter's Q of section 5.1.2, R of section 5.1.2 times 1000 (see pioneer/common.h),
+// known start pose. The equations are in pioneer/nav3ctrl_model.h.
+#define METHOD PARTICLE_FILTER_SIR
+#include "pioneer/nav3ctrl_model.h"
