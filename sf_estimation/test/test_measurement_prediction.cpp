@@ -167,8 +167,7 @@ struct SquareObservation {
 TEST(MeasurementPrediction, ExtendedKalmanFilterLinearisesAtThePrediction) {
   // x0 = 3, P0 = 0.2, Q = 0.05: x- = 3, P- = 0.25; z^ = 9, H = 2 x- = 6, H P- H^T = 9.
   ExtendedKalmanFilter<SquareObservation> ekf(SquareObservation{}, Matrix<1, 1>(0.05),
-                                              Matrix<1, 1>(1.0), Vector<1>(3.0),
-                                              Matrix<1, 1>(0.2));
+                                              Matrix<1, 1>(1.0), Vector<1>(3.0), Matrix<1, 1>(0.2));
   MeasurementPrediction<1> p;
   ekf.predictMeasurement(p);
   EXPECT_DOUBLE_EQ(p.mean(0), 9.0);

@@ -73,8 +73,8 @@ double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction,
 template <int M>
 double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction, Index entry,
                                   double value, std::optional<double> variance = std::nullopt) {
-  const double s = prediction.covariance(entry, entry) +
-                   (variance ? *variance : prediction.noise(entry, entry));
+  const double s =
+      prediction.covariance(entry, entry) + (variance ? *variance : prediction.noise(entry, entry));
   if (!(s > 0.0)) {
     throw NumericalError("innovation variance of measurement " + std::to_string(entry) +
                          " is not positive; no Mahalanobis distance");
