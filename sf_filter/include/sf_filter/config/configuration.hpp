@@ -211,4 +211,5 @@
 #include "sf_filter/config/detail/model.hpp"
 #include "sf_filter/config/detail/parameters.hpp"
 #include "sf_filter/config/detail/topics.hpp"
+#include "sf_filter/config/detail/input_alignment.hpp"
 #endif
