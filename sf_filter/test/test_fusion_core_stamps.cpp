@@ -147,12 +147,24 @@ TEST(FusionCoreStamps, ControlsApplyFromThePeriodTheyArriveIn) {
 }
 
 TEST(FusionCoreStamps, AStampBeyondTheOpenPeriodsIsUsedInTheNewestAndCounted) {
-  // floor(0.05 / 0.1) + 3 = 3 open periods: 1, 2 and 3 ([1.2, 1.3)).
+  // floor(0.05 / 0.1) + 3 = 3 slots, rounded up to 4: open periods 1 to 4 ([1.3, 1.4)).
   Collector out;
   Core core = makeStartedCore(out);
   core.advanceTo(1.12, out);
   EXPECT_EQ(core.addMeasurement(0, 1.12, 3.0, std::nullopt, 7.0), Rejection::None);
   EXPECT_EQ(core.counters(0).aheadOfClock, 1u);
+  core.advanceTo(1.45, out);
+  ASSERT_EQ(out.estimates.size(), 4u);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(out.estimates[k].presentInputs, 0) << k;
+  EXPECT_EQ(out.estimates[3].presentInputs, 1);
+}
+
+TEST(FusionCoreStamps, AStampAheadOfTheClockWithinTheOpenPeriodsKeepsItsPeriod) {
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.12, out);
+  EXPECT_EQ(core.addMeasurement(0, 1.12, 3.0, std::nullopt, 1.27), Rejection::None);  // period 3
+  EXPECT_EQ(core.counters(0).aheadOfClock, 0u);
   core.advanceTo(1.35, out);
   ASSERT_EQ(out.estimates.size(), 3u);
   EXPECT_EQ(out.estimates[1].presentInputs, 0);

@@ -13,10 +13,10 @@
 // period it was measured in. To wait for such values, period k is estimated only once the
 // clock reaches its end plus the maximum measurement lag (Options::maxMeasurementLag; 0 by
 // default, which is the thesis's node: estimate at the period's end). Until then it stays
-// open; the open periods live in a ring of floor(lag / T) + 3 slots allocated at
-// construction. A stamped value whose period has already been estimated is dropped and
-// counted (InputCounters::late). The estimate of period k still carries the time of its end,
-// so with a lag the estimates come out `lag` late but refer to the right instants. Controls
+// open; the open periods live in a ring of at least floor(lag / T) + 3 slots (a power of
+// two) allocated at construction. A stamped value whose period has already been estimated is
+// dropped and counted (InputCounters::late). The estimate of period k still carries the time of its
+// end, so with a lag the estimates come out `lag` late but refer to the right instants. Controls
 // are taken by arrival: period k uses the latest control received before its end.
 #pragma once
 
@@ -85,8 +85,11 @@ class FusionCore {
         control_(estimation::Vector<L>::Zero(filter_.controlSize())) {
     const Index m = filter_.measurementSize();
     for (Index i = 0; i < m; ++i) aligners_.emplace_back(inputOptions(i).alignment);
-    const auto slots = static_cast<std::size_t>(
+    // A power of two, so that the slot of a period is a bit mask away.
+    const auto needed = static_cast<std::size_t>(
         std::floor(options_.maxMeasurementLag / options_.period + 1e-9) + 3);
+    std::size_t slots = 1;
+    while (slots < needed) slots *= 2;
     OpenPeriod empty;
     empty.control = estimation::Vector<L>::Zero(filter_.controlSize());
     empty.controlSet = estimation::Mask<L>::Constant(filter_.controlSize(), false);
@@ -156,20 +159,15 @@ class FusionCore {
       c.lastStamp = stamp;
     }
     const bool byStamp = inputOptions(input).alignByStamp && !std::isnan(stamp);
-    std::uint64_t k = schedule_.index();
-    if (schedule_.started()) {
-      const std::int64_t containing = schedule_.indexOf(byStamp ? stamp : now);
-      if (byStamp && containing < static_cast<std::int64_t>(k)) {
-        ++c.late;
-        return Rejection::TooLate;
-      }
-      if (containing > static_cast<std::int64_t>(k)) k = static_cast<std::uint64_t>(containing);
-      if (k > newestOpenPeriod()) {
-        if (byStamp) ++c.aheadOfClock;
-        k = newestOpenPeriod();
-      }
+    const double time = byStamp ? stamp : now;
+    bool estimated = false, beyond = false;
+    const std::uint64_t k = openPeriodOf(time, estimated, beyond);
+    if (byStamp && estimated) {
+      ++c.late;
+      return Rejection::TooLate;
     }
-    slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, byStamp ? stamp : now);
+    if (byStamp && beyond) ++c.aheadOfClock;
+    slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time);
     return Rejection::None;
   }
 
@@ -181,13 +179,8 @@ class FusionCore {
       ++controlNonFinite_;
       return Rejection::NonFinite;
     }
-    std::uint64_t k = schedule_.index();
-    if (schedule_.started()) {
-      const std::int64_t containing = schedule_.indexOf(clock_);
-      if (containing > static_cast<std::int64_t>(k)) k = static_cast<std::uint64_t>(containing);
-      if (k > newestOpenPeriod()) k = newestOpenPeriod();
-    }
-    OpenPeriod& slot = slotOf(k);
+    bool estimated = false, beyond = false;
+    OpenPeriod& slot = slotOf(openPeriodOf(clock_, estimated, beyond));
     slot.control(control) = value;
     slot.controlSet(control) = true;
     return Rejection::None;
@@ -278,7 +271,25 @@ class FusionCore {
 
   std::uint64_t newestOpenPeriod() const { return schedule_.index() + open_.size() - 1; }
 
-  OpenPeriod& slotOf(std::uint64_t k) { return open_[k % open_.size()]; }
+  OpenPeriod& slotOf(std::uint64_t k) { return open_[k & (open_.size() - 1)]; }
+
+  /// The open period time t belongs to. A time in a period already estimated gives the
+  /// current period and sets `estimated`; one beyond the newest open period gives that one
+  /// and sets `beyond`. Before the schedule starts every time gives the first period.
+  std::uint64_t openPeriodOf(double t, bool& estimated, bool& beyond) const {
+    const std::uint64_t current = schedule_.index();
+    if (!schedule_.started() || schedule_.inCurrent(t)) return current;  // the usual case
+    const std::int64_t k = schedule_.indexOf(t);
+    if (k < static_cast<std::int64_t>(current)) {
+      estimated = true;
+      return current;
+    }
+    if (k > static_cast<std::int64_t>(newestOpenPeriod())) {
+      beyond = true;
+      return newestOpenPeriod();
+    }
+    return static_cast<std::uint64_t>(k);
+  }
 
   /// Assigns the slots to the open periods from the current one on. A slot still holding an
   /// older period (skipped by a gap or a restart) is emptied; its controls are kept.

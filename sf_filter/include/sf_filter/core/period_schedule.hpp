@@ -42,6 +42,11 @@ class PeriodSchedule {
   }
   double currentStart() const { return currentEnd() - period_; }
   bool due(double now) const { return started_ && now + kTolerance >= currentEnd(); }
+  /// Whether time t lies in the current period (by the convention of indexOf()).
+  bool inCurrent(double t) const {
+    const double end = currentEnd();
+    return t + kTolerance < end && t + kTolerance >= end - period_;
+  }
   void advance() { ++index_; }
 
   /// Number of whole periods between the current end and `now` (0 when not due).
