@@ -227,8 +227,8 @@
 #define SF_CONFIG_OK 1
 #include "sf_filter/config/detail/checks.hpp"
 #include "sf_filter/config/detail/constants.hpp"
+#include "sf_filter/config/detail/input_alignment.hpp"
 #include "sf_filter/config/detail/model.hpp"
 #include "sf_filter/config/detail/parameters.hpp"
 #include "sf_filter/config/detail/topics.hpp"
-#include "sf_filter/config/detail/input_alignment.hpp"
 #endif
