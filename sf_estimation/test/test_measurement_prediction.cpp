@@ -147,27 +147,11 @@ TEST(MeasurementPrediction, UnscentedEqualsKalmanOnALinearModel) {
   }
 }
 
-/// x' = x (random walk), z = x^2: a nonlinear observation with a hand-computable Jacobian.
-struct SquareObservation {
-  static constexpr int StateSize = 1, MeasurementSize = 1, ControlSize = 0;
-  estimation::Index stateSize() const { return 1; }
-  estimation::Index measurementSize() const { return 1; }
-  estimation::Index controlSize() const { return 0; }
-  template <class S>
-  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
-                  Eigen::Matrix<S, 1, 1>& next) const {
-    next = x;
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
-    z(0) = x(0) * x(0);
-  }
-};
-
 TEST(MeasurementPrediction, ExtendedKalmanFilterLinearisesAtThePrediction) {
   // x0 = 3, P0 = 0.2, Q = 0.05: x- = 3, P- = 0.25; z^ = 9, H = 2 x- = 6, H P- H^T = 9.
-  ExtendedKalmanFilter<SquareObservation> ekf(SquareObservation{}, Matrix<1, 1>(0.05),
-                                              Matrix<1, 1>(1.0), Vector<1>(3.0), Matrix<1, 1>(0.2));
+  ExtendedKalmanFilter<sftest::SquareModel> ekf(sftest::SquareModel{}, Matrix<1, 1>(0.05),
+                                                Matrix<1, 1>(1.0), Vector<1>(3.0),
+                                                Matrix<1, 1>(0.2));
   MeasurementPrediction<1> p;
   ekf.predictMeasurement(p);
   EXPECT_DOUBLE_EQ(p.mean(0), 9.0);

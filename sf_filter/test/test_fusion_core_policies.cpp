@@ -33,22 +33,6 @@ InputOptions aligned(const AlignmentPolicy& policy, double gate = INFINITY) {
   return o;
 }
 
-/// A measurement of the train with only the speed (input 0) present.
-Measurement<2> speed(double v, double variance = NAN) {
-  Measurement<2> z;
-  z.value << v, 0.0;
-  z.available << true, false;
-  z.varianceGiven << !std::isnan(variance), false;
-  z.variance << (std::isnan(variance) ? 0.0 : variance), 0.0;
-  return z;
-}
-
-void expectSameBelief(const Core::Estimate& e, const Train& reference) {
-  EXPECT_TRUE(e.state.isApprox(reference.state(), 1e-13))
-      << e.state.transpose() << " vs " << reference.state().transpose();
-  EXPECT_TRUE(e.covariance.isApprox(reference.covariance(), 1e-13));
-}
-
 TEST(FusionCorePolicies, LastUsesTheNewestValueOfThePeriod) {
   Core core = makeCore({aligned(AlignmentPolicy::last()), {}});
   Collector out;
@@ -80,7 +64,7 @@ TEST(FusionCorePolicies, SampledUsesTheSampleWithItsOwnVarianceAndIsMissingWitho
   core.advanceTo(0.1, out);
   core.advanceTo(0.2, out);  // nothing sampled: time update only
   Train reference = makeTrain();
-  reference.estimate(speed(6.0, 0.04));
+  reference.estimate(speedOnly(6.0, 0.04));
   expectSameBelief(out.estimates.at(0), reference);
   reference.estimate(Measurement<2>::missing());
   expectSameBelief(out.estimates.at(1), reference);
@@ -101,9 +85,9 @@ TEST(FusionCorePolicies, HoldExtrapolatesTheHistoryInAPeriodWithoutValue) {
   core.advanceTo(0.3, out);
   ASSERT_EQ(out.estimates.size(), 3u);
   Train reference = makeTrain();
-  reference.estimate(speed(1.0));
-  reference.estimate(speed(2.0));
-  reference.estimate(speed(3.5, 0.8));
+  reference.estimate(speedOnly(1.0));
+  reference.estimate(speedOnly(2.0));
+  reference.estimate(speedOnly(3.5, 0.8));
   expectSameBelief(out.estimates[2], reference);
   EXPECT_EQ(out.estimates[2].presentInputs, 0);
   EXPECT_EQ(out.estimates[2].substitutedInputs, 1);
@@ -133,10 +117,10 @@ TEST(FusionCorePolicies, FillCombinesTheFilterPredictionWithTheStoredSample) {
   core.advanceTo(0.1, out);
   core.advanceTo(0.2, out);
   Train reference = makeTrain();
-  reference.estimate(speed(1.0));
+  reference.estimate(speedOnly(1.0));
   estimation::MeasurementPrediction<2> p;
   reference.predictMeasurement(p);  // z^ of the second period
-  reference.estimate(speed(0.75 * p.mean(0) + 0.25 * 1.0, 0.3));
+  reference.estimate(speedOnly(0.75 * p.mean(0) + 0.25 * 1.0, 0.3));
   expectSameBelief(out.estimates.at(1), reference);
   EXPECT_EQ(out.estimates[1].substitutedInputs, 1);
 }
@@ -153,7 +137,7 @@ TEST(FusionCorePolicies, GateTreatsAnImprobableValueAsMissing) {
     core.advanceTo(0.1, out);
     Train reference = makeTrain();
     const bool accepted = threshold > 9.0 / 1.52;
-    reference.estimate(accepted ? speed(3.0) : Measurement<2>::missing());
+    reference.estimate(accepted ? speedOnly(3.0) : Measurement<2>::missing());
     expectSameBelief(out.estimates.at(0), reference);
     EXPECT_EQ(core.counters(0).gated, accepted ? 0u : 2u) << threshold;
     EXPECT_EQ(core.counters(0).used, accepted ? 2u : 0u) << threshold;
@@ -171,7 +155,7 @@ TEST(FusionCorePolicies, GateUsesTheMessageVariance) {
   core.advanceTo(0.1, out);
   EXPECT_EQ(core.counters(0).gated, 0u);
   Train reference = makeTrain();
-  reference.estimate(speed(3.0, 4.0));
+  reference.estimate(speedOnly(3.0, 4.0));
   expectSameBelief(out.estimates.at(0), reference);
 }
 
@@ -186,8 +170,8 @@ TEST(FusionCorePolicies, AGatedValueStaysOutOfTheHoldHistory) {
   core.addMeasurement(0, 0.15, 100.0);
   core.advanceTo(0.2, out);
   Train reference = makeTrain();
-  reference.estimate(speed(1.0));
-  reference.estimate(speed(1.0));
+  reference.estimate(speedOnly(1.0));
+  reference.estimate(speedOnly(1.0));
   expectSameBelief(out.estimates.at(1), reference);
   EXPECT_EQ(core.counters(0).gated, 1u);
   EXPECT_EQ(core.counters(0).substituted, 1u);

@@ -32,26 +32,6 @@ Core makeStartedCore(Collector& out, bool speedByStamp = true) {
   return core;
 }
 
-Measurement<2> speed(double v) {
-  Measurement<2> z;
-  z.value << v, 0.0;
-  z.available << true, false;
-  return z;
-}
-
-Measurement<2> acceleration(double a) {
-  Measurement<2> z;
-  z.value << 0.0, a;
-  z.available << false, true;
-  return z;
-}
-
-void expectSameBelief(const Core::Estimate& e, const Train& reference) {
-  EXPECT_TRUE(e.state.isApprox(reference.state(), 1e-13))
-      << e.state.transpose() << " vs " << reference.state().transpose();
-  EXPECT_TRUE(e.covariance.isApprox(reference.covariance(), 1e-13));
-}
-
 TEST(FusionCoreStamps, APeriodIsEstimatedOnlyAfterItsEndPlusTheLag) {
   Collector out;
   Core core = makeStartedCore(out);
@@ -72,7 +52,7 @@ TEST(FusionCoreStamps, ADelayedValueCountsForThePeriodOfItsStamp) {
   EXPECT_EQ(core.addMeasurement(0, 1.12, 3.0, std::nullopt, 1.08), Rejection::None);
   core.advanceTo(1.15, out);
   Train reference = makeTrain();
-  reference.estimate(speed(3.0));
+  reference.estimate(speedOnly(3.0));
   expectSameBelief(out.estimates.at(0), reference);
   EXPECT_EQ(out.estimates[0].presentInputs, 1);
 }
@@ -86,7 +66,7 @@ TEST(FusionCoreStamps, ByArrivalTheSameValueCountsForTheNextPeriod) {
   Train reference = makeTrain();
   reference.estimate(Measurement<2>::missing());
   expectSameBelief(out.estimates.at(0), reference);
-  reference.estimate(speed(3.0));
+  reference.estimate(speedOnly(3.0));
   expectSameBelief(out.estimates.at(1), reference);
 }
 
@@ -124,7 +104,7 @@ TEST(FusionCoreStamps, InputsByArrivalUseThePeriodTheyArriveIn) {
   Train reference = makeTrain();
   reference.estimate(Measurement<2>::missing());
   expectSameBelief(out.estimates.at(0), reference);
-  reference.estimate(acceleration(0.7));
+  reference.estimate(accelerationOnly(0.7));
   expectSameBelief(out.estimates.at(1), reference);
 }
 

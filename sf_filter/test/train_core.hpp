@@ -3,8 +3,10 @@
 // Kalman filter, and a collector of the core's estimates.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <sf_estimation/kalman_filter.hpp>
 
 #include "sf_filter/core/fusion_core.hpp"
@@ -40,5 +42,30 @@ struct Collector {
   std::vector<Core::Estimate> estimates;
   void operator()(const Core::Estimate& e) { estimates.push_back(e); }
 };
+
+/// A measurement with only the speed (input 0), with its own variance unless NaN.
+inline Measurement<2> speedOnly(double v, double variance = NAN) {
+  Measurement<2> z;
+  z.value << v, 0.0;
+  z.available << true, false;
+  z.varianceGiven << !std::isnan(variance), false;
+  z.variance << (std::isnan(variance) ? 0.0 : variance), 0.0;
+  return z;
+}
+
+/// A measurement with only the acceleration (input 1).
+inline Measurement<2> accelerationOnly(double a) {
+  Measurement<2> z;
+  z.value << 0.0, a;
+  z.available << false, true;
+  return z;
+}
+
+/// The core's estimate equals the reference filter's belief.
+inline void expectSameBelief(const Core::Estimate& e, const Train& reference) {
+  EXPECT_TRUE(e.state.isApprox(reference.state(), 1e-13))
+      << e.state.transpose() << " vs " << reference.state().transpose();
+  EXPECT_TRUE(e.covariance.isApprox(reference.covariance(), 1e-13));
+}
 
 }  // namespace train_core

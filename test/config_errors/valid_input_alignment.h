@@ -1,19 +1,7 @@
 // EXPECT: OK
 // Every policy, gates, stamps and a lag on a model-based filter
-#include "fake_msgs.h"
+#include "alignment_base_ekf.h"
 
-#define METHOD EXTENDED_KALMAN_FILTER
-#define STATE_TRANSITION_MODEL (x[0] + x[1] * T)(x[1])
-#define OBSERVATION_MODEL (x[0])(x[1])(x[1])(x[0])
-#define PROCESS_NOISE_COVARIANCE ((0.01)(0))((0)(0.1))
-#define MEASUREMENT_NOISE_COVARIANCE \
-  ((0.5)(0)(0)(0))((0)(0.2)(0)(0))((0)(0)(0.3)(0))((0)(0)(0)(0.4))
-#define TOPICS_IN \
-  ((position)(geometry_msgs::Vector3Stamped)(vector.x)) \
-  ((wheel)(std_msgs::Float32)(data)) \
-  ((imu)(sensor_msgs::Imu)(linear_acceleration.x)) \
-  ((odom)(nav_msgs::Odometry)(pose.pose.position.x))
-#define TOPICS_OUT ((position)(0))((speed)(1))
 #define INPUT_ALIGNMENT \
   ((0)(FILL)(0.001)(5)(0.1)) ((1)(HOLD)(TAYLOR)(2)) ((2)(LAST)) ((3)(SAMPLED))
 #define INPUT_GATE ((0)(9.0))((3)(6.63))
