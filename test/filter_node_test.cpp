@@ -2,7 +2,9 @@
 // test owns /clock: per period it publishes a speedometer at twice the estimation rate, an
 // accelerometer at a third of it and a command, then moves the clock to the period's end and
 // compares the published estimate with the library's Kalman filter stepped offline on the
-// same aligned data (the mean of the period's values, missing when none arrived).
+// same aligned data (the mean of the period's values, missing when none arrived). A second
+// node has R overridden, a third the alignment policies (~input_alignment): the newest speed
+// of the period, and the accelerometer held (zero-order hold, variance 0.5) while it is silent.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -57,14 +59,17 @@ class FilterNodeTest : public ::testing::Test {
                               &Latest<sf_pkg::OutputEntityStamped>::callback, &speed_);
     override_ = nh_.subscribe("/override/train/estimate/velocity", 100,
                               &Latest<sf_pkg::OutputEntityStamped>::callback, &overrideSpeed_);
+    policies_ = nh_.subscribe("/policies/train/estimate/velocity", 100,
+                              &Latest<sf_pkg::OutputEntityStamped>::callback, &policiesSpeed_);
     state_ = nh_.subscribe("/train_kf/state", 100,
                            &Latest<sf_pkg::StateEstimateStamped>::callback, &state_msg_);
     // Wait until both nodes are connected to every topic of the test.
     const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(30.0);
     while (ros::ok() && ros::WallTime::now() < deadline &&
-           (velocity_.getNumSubscribers() < 2 || acceleration_.getNumSubscribers() < 2 ||
-            command_.getNumSubscribers() < 2 || estimate_.getNumPublishers() < 1 ||
-            override_.getNumPublishers() < 1 || state_.getNumPublishers() < 1)) {
+           (velocity_.getNumSubscribers() < 3 || acceleration_.getNumSubscribers() < 3 ||
+            command_.getNumSubscribers() < 3 || estimate_.getNumPublishers() < 1 ||
+            override_.getNumPublishers() < 1 || policies_.getNumPublishers() < 1 ||
+            state_.getNumPublishers() < 1)) {
       ros::WallDuration(0.05).sleep();
       ros::spinOnce();
     }
@@ -86,7 +91,10 @@ class FilterNodeTest : public ::testing::Test {
     };
     while (ros::ok() && ros::WallTime::now() < deadline) {
       ros::spinOnce();
-      if (stampedAt(speed_) && stampedAt(overrideSpeed_) && stampedAt(state_msg_)) return true;
+      if (stampedAt(speed_) && stampedAt(overrideSpeed_) && stampedAt(policiesSpeed_) &&
+          stampedAt(state_msg_)) {
+        return true;
+      }
       ros::WallDuration(0.005).sleep();
     }
     return false;
@@ -94,20 +102,22 @@ class FilterNodeTest : public ::testing::Test {
 
   ros::NodeHandle nh_;
   ros::Publisher clock_, velocity_, acceleration_, command_;
-  ros::Subscriber estimate_, override_, state_;
-  Latest<sf_pkg::OutputEntityStamped> speed_, overrideSpeed_;
+  ros::Subscriber estimate_, override_, policies_, state_;
+  Latest<sf_pkg::OutputEntityStamped> speed_, overrideSpeed_, policiesSpeed_;
   Latest<sf_pkg::StateEstimateStamped> state_msg_;
 };
 
 TEST_F(FilterNodeTest, EstimatesMatchTheLibraryOnTheAlignedInputs) {
   Train reference = referenceFilter(0.25);
   Train overridden = referenceFilter(1.0);  // ~measurement_noise_covariance set at launch
+  Train policies = referenceFilter(0.25);   // ~input_alignment set at launch
+  std::optional<double> heldAcceleration;
   constexpr int kPeriods = 30;
   for (int k = 1; k <= kPeriods; ++k) {
     const double begin = kStart + (k - 1) * kPeriod;
     const double trueAcceleration = 0.5 * std::sin(0.3 * k);
     const double command = trueAcceleration;
-    Measurement<2> z;
+    Measurement<2> z, newest;
     z.available.setConstant(false);
 
     setClock(begin + 0.02);
@@ -120,6 +130,8 @@ TEST_F(FilterNodeTest, EstimatesMatchTheLibraryOnTheAlignedInputs) {
     }
     z.value(0) = 0.5 * (v1 + v2);
     z.available(0) = true;
+    newest = z;
+    newest.value(0) = v2;
     // Accelerometer at 3.3 Hz: missing in two periods out of three.
     if (k % 3 == 0) {
       geometry_msgs::Vector3Stamped a;
@@ -128,6 +140,14 @@ TEST_F(FilterNodeTest, EstimatesMatchTheLibraryOnTheAlignedInputs) {
       acceleration_.publish(a);
       z.value(1) = a.vector.x;
       z.available(1) = true;
+      newest.value(1) = a.vector.x;
+      newest.available(1) = true;
+      heldAcceleration = a.vector.x;
+    } else if (heldAcceleration) {
+      newest.value(1) = *heldAcceleration;
+      newest.available(1) = true;
+      newest.varianceGiven(1) = true;
+      newest.variance(1) = 0.5;
     }
     std_msgs::Float64 u;
     u.data = command;
@@ -141,10 +161,14 @@ TEST_F(FilterNodeTest, EstimatesMatchTheLibraryOnTheAlignedInputs) {
     reference.estimate(z);
     overridden.setControl(Vector<1>(command));
     overridden.estimate(z);
+    policies.setControl(Vector<1>(command));
+    policies.estimate(newest);
     EXPECT_NEAR(speed_.message->value, reference.state()(0), 1e-9) << "period " << k;
     EXPECT_NEAR(speed_.message->variance, reference.covariance()(0, 0), 1e-9);
     EXPECT_NEAR(overrideSpeed_.message->value, overridden.state()(0), 1e-9) << "period " << k;
     EXPECT_NEAR(overrideSpeed_.message->variance, overridden.covariance()(0, 0), 1e-9);
+    EXPECT_NEAR(policiesSpeed_.message->value, policies.state()(0), 1e-9) << "period " << k;
+    EXPECT_NEAR(policiesSpeed_.message->variance, policies.covariance()(0, 0), 1e-9);
     ASSERT_EQ(state_msg_.message->state.size(), 2u);
     ASSERT_EQ(state_msg_.message->covariance.size(), 4u);
     EXPECT_NEAR(state_msg_.message->state[1], reference.state()(1), 1e-9);

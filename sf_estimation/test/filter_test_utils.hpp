@@ -260,4 +260,24 @@ inline Matrix<4, 4> correlatedNav3MeasurementNoise() {
   return L * L.transpose();
 }
 
+/// x' = x (scalar random walk), z = x^2: the simplest nonlinear observation, with the
+/// Jacobian 2x and closed-form unscented moments.
+struct SquareModel {
+  static constexpr int StateSize = 1;
+  static constexpr int MeasurementSize = 1;
+  static constexpr int ControlSize = 0;
+  Index stateSize() const { return 1; }
+  Index measurementSize() const { return 1; }
+  Index controlSize() const { return 0; }
+  template <class S>
+  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
+                  Eigen::Matrix<S, 1, 1>& next) const {
+    next = x;
+  }
+  template <class S>
+  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
+    z(0) = x(0) * x(0);
+  }
+};
+
 }  // namespace sftest

@@ -32,24 +32,9 @@ using estimation::UnscentedParameters;
 using estimation::Vector;
 using estimation::models::Nav3Ctrl;
 
-/// x' = x (scalar), z = x^2: with a negative beta the unscented Pzz is negative (see below).
-struct SquareModel {
-  static constexpr int StateSize = 1;
-  static constexpr int MeasurementSize = 1;
-  static constexpr int ControlSize = 0;
-  Index stateSize() const { return 1; }
-  Index measurementSize() const { return 1; }
-  Index controlSize() const { return 0; }
-  template <class S>
-  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
-                  Eigen::Matrix<S, 1, 1>& next) const {
-    next = x;
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
-    z(0) = x(0) * x(0);
-  }
-};
+// x' = x, z = x^2 (sftest::SquareModel): with a negative beta the unscented Pzz is
+// negative (see below).
+using sftest::SquareModel;
 
 /// x' = exp(x), z = x (scalar): overflows for x > 709.
 struct ExponentialModel {

@@ -14,9 +14,9 @@
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
-#include <stdexcept>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -99,6 +99,25 @@ sf_filter::NodeDescription describe(const Aligner* aligner) {
   return d;
 }
 
+/// What the configured inputs and method can do, for checking run-time policy overrides.
+sf_filter::InputCapabilities inputCapabilities() {
+  sf_filter::InputCapabilities can;
+  can.canPredict = estimation::HasMeasurementPrediction<sf_filter::generated::Filter>::value;
+  can.hasStamp.assign(sf_config::kInputHasStamp.begin(), sf_config::kInputHasStamp.end());
+  can.names = inputNames();
+  return can;
+}
+
+/// The fusion core's options: the period and the per-input options with the lag [ms].
+sf_filter::FusionCore<sf_filter::generated::Filter>::Options coreOptions(
+    double periodMs, std::vector<sf_filter::InputOptions> inputs, double lagMs) {
+  sf_filter::FusionCore<sf_filter::generated::Filter>::Options options;
+  options.period = periodMs / 1000.0;
+  options.inputs = std::move(inputs);
+  options.maxMeasurementLag = lagMs / 1000.0;
+  return options;
+}
+
 /// Component Align::axis of the aligned input's vector in the base frame; nullopt if it cannot
 /// be rotated (the aligner has counted and reported it).
 template <class Align, class Aligner, class Message>
@@ -119,41 +138,58 @@ void subscribeInputs(Sink& node, Aligner* aligner) {
     using Owner = decltype(owner);
     if constexpr (Owner::owns_subscription) {
       using Message = typename Owner::Message;
-      node.template subscribe<Message>(std::string(Owner::topic), [aligner](const Message& msg, auto& n,
-                                                                   double now) {
-        sf_config::forEachInput([&](auto in) {
-          using In = decltype(in);
-          using Align = sf_config::FrameAlignment<In::index>;
-          if constexpr (In::first_same_topic == Owner::index) {
-            std::optional<double> variance;
-            if constexpr (In::has_variance) variance = In::variance(msg);
-            double value = 0.0;
-            if constexpr (Align::aligned) {
-              const std::optional<double> rotated = alignedValue<Align>(*aligner, msg);
-              if (!rotated) return;  // dropped and counted by the aligner
-              value = *rotated;
-            } else {
-              static_cast<void>(aligner);
-              value = In::value(msg);
-            }
-            n.measurement(In::index, now, value, variance, stampOf(msg));
-          }
-        });
-      });
+      node.template subscribe<Message>(
+          std::string(Owner::topic), [aligner](const Message& msg, auto& n, double now) {
+            sf_config::forEachInput([&](auto in) {
+              using In = decltype(in);
+              using Align = sf_config::FrameAlignment<In::index>;
+              if constexpr (In::first_same_topic == Owner::index) {
+                std::optional<double> variance;
+                if constexpr (In::has_variance) variance = In::variance(msg);
+                double value = 0.0;
+                if constexpr (Align::aligned) {
+                  const std::optional<double> rotated = alignedValue<Align>(*aligner, msg);
+                  if (!rotated) return;  // dropped and counted by the aligner
+                  value = *rotated;
+                } else {
+                  static_cast<void>(aligner);
+                  value = In::value(msg);
+                }
+                n.measurement(In::index, now, value, variance, stampOf(msg));
+              }
+            });
+          });
     }
   });
   sf_config::forEachControl([&](auto owner) {
     using Owner = decltype(owner);
     if constexpr (Owner::owns_subscription) {
       using Message = typename Owner::Message;
-      node.template subscribe<Message>(std::string(Owner::topic), [](const Message& msg, auto& n, double) {
-        sf_config::forEachControl([&](auto in) {
-          using In = decltype(in);
-          if constexpr (In::first_same_topic == Owner::index) n.control(In::index, In::value(msg));
-        });
-      });
+      node.template subscribe<Message>(std::string(Owner::topic),
+                                       [](const Message& msg, auto& n, double) {
+                                         sf_config::forEachControl([&](auto in) {
+                                           using In = decltype(in);
+                                           if constexpr (In::first_same_topic == Owner::index)
+                                             n.control(In::index, In::value(msg));
+                                         });
+                                       });
     }
   });
+}
+
+/// The input index of a replay option: an integer (its range is checked by the override).
+long inputIndex(const std::string& text) {
+  std::size_t used = 0;
+  long index = -1;
+  try {
+    index = std::stol(text, &used);
+  } catch (const std::logic_error&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size()) {
+    throw std::invalid_argument("input index '" + text + "' is not an integer");
+  }
+  return index;
 }
 
 /// Offline replay: `<node> --replay in.bag [--csv out.csv] [--bag out.bag] [options]`.
@@ -164,17 +200,24 @@ int replayMain(int argc, char** argv) {
       " --replay INPUT.bag [--csv OUT.csv] [--bag OUT.bag] [--name NODE]\n"
       "       [--estimation-period MS] [--scale-q FACTOR] [--scale-r FACTOR] [--seed N]\n"
       "       [--frame-id FRAME] [--child-frame-id FRAME] [--base-frame FRAME]\n"
+      "       [--align INPUT=POLICY]... [--gate INPUT=THRESHOLD]... [--align-by-stamp INPUT]...\n"
+      "       [--align-by-arrival INPUT]... [--max-lag MS]\n"
       "Replays the bag through this node's filter without a ROS master, in recorded-time\n"
       "order, and writes the estimates. Without --csv and --bag only a summary is printed.\n"
       "--frame-id, --child-frame-id: frames of the output bag's odometry (default odom,\n"
       "base_link, like the node's ~frame_id, ~child_frame_id); --base-frame: the frame\n"
       "FRAME_ALIGNED_INPUTS are rotated into (default BASE_FRAME, like ~base_frame), with\n"
-      "the bag's /tf_static and /tf.";
+      "the bag's /tf_static and /tf.\n"
+      "POLICY: AVERAGE, LAST, SAMPLED, 'HOLD LAGRANGE|BEZIER|TAYLOR ORDER [VARIANCE]' or\n"
+      "'FILL OMEGA N [VARIANCE]'; THRESHOLD 0 removes a gate (doc/alignment_policies.md).";
   sf_filter::ReplayOptions options;
   options.nodeName = program.substr(program.find_last_of('/') + 1);
   double periodMs = sf_config::kEstimationPeriodMs, scaleQ = 1.0, scaleR = 1.0;
+  double lagMs = sf_config::kMaxMeasurementLagMs;
   std::optional<long> seed;
   std::string baseFrame(sf_config::kBaseFrame);
+  std::vector<sf_filter::InputOptions> inputs = sf_config::defaultInputOptions();
+  const sf_filter::InputCapabilities can = inputCapabilities();
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -207,12 +250,40 @@ int replayMain(int argc, char** argv) {
         options.childFrameId = value();
       } else if (arg == "--base-frame") {
         baseFrame = value();
+      } else if (arg == "--align" || arg == "--gate") {
+        const std::string given = value();
+        const std::size_t equals = given.find('=');
+        if (equals == std::string::npos) {
+          throw std::invalid_argument(arg + " " + given + ": expected INPUT=" +
+                                      (arg == "--align" ? "POLICY" : "THRESHOLD"));
+        }
+        try {
+          const long input = inputIndex(given.substr(0, equals));
+          if (arg == "--align") {
+            sf_filter::overrideAlignment(inputs, input, given.substr(equals + 1), can);
+          } else {
+            sf_filter::overrideGate(inputs, input, std::stod(given.substr(equals + 1)), can);
+          }
+        } catch (const std::logic_error& e) {  // invalid_argument and stod's out_of_range
+          throw std::invalid_argument(arg + " " + given + ": " + e.what());
+        }
+      } else if (arg == "--align-by-stamp" || arg == "--align-by-arrival") {
+        const std::string given = value();
+        try {
+          sf_filter::overrideAlignByStamp(inputs, inputIndex(given), arg == "--align-by-stamp",
+                                          can);
+        } catch (const std::invalid_argument& e) {
+          throw std::invalid_argument(arg + " " + given + ": " + e.what());
+        }
+      } else if (arg == "--max-lag") {
+        lagMs = sf_filter::checkedLagMs(std::stod(value()));
       } else {
         throw std::invalid_argument("unknown option " + arg);
       }
     }
     if (!(periodMs > 0.0)) throw std::invalid_argument("--estimation-period must be positive");
-    if (!(scaleQ > 0.0) || !(scaleR > 0.0)) throw std::invalid_argument("scale factors must be positive");
+    if (!(scaleQ > 0.0) || !(scaleR > 0.0))
+      throw std::invalid_argument("scale factors must be positive");
     if (seed && *seed < 0) throw std::invalid_argument("--seed must not be negative");
     if (sf_config::kHasFrameAlignment && (baseFrame.empty() || baseFrame.front() == '/')) {
       throw std::invalid_argument("--base-frame '" + baseFrame +
@@ -232,8 +303,8 @@ int replayMain(int argc, char** argv) {
     if constexpr (sf_config::kHasFrameAlignment) aligner.emplace(baseFrame, inputNames());
     sf_filter::ReplayFrameAligner* const alignerPtr = aligner ? &*aligner : nullptr;
     sf_filter::BagReplay<sf_filter::generated::Filter> replay(
-        sf_filter::generated::makeFilter(parameters), periodMs / 1000.0, describe(alignerPtr),
-        options);
+        sf_filter::generated::makeFilter(parameters), coreOptions(periodMs, inputs, lagMs),
+        describe(alignerPtr), options);
     if (aligner) {
       replay.readTransforms([alignerPtr](const tf2_msgs::TFMessage& msg, bool isStatic) {
         alignerPtr->addTransforms(msg, isStatic);
@@ -244,8 +315,15 @@ int replayMain(int argc, char** argv) {
     const sf_filter::ReplaySummary s = replay.run();
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::uint64_t gated = 0, late = 0, substituted = 0;
+    for (sf_filter::Index i = 0; i < replay.core().inputCount(); ++i) {
+      gated += replay.core().counters(i).gated;
+      late += replay.core().counters(i).late;
+      substituted += replay.core().counters(i).substituted;
+    }
     std::cout << options.nodeName << ": " << s.messages << " messages, " << s.estimates
-              << " estimates, " << s.dropped << " dropped values, "
+              << " estimates, " << s.dropped << " dropped values (" << late << " late), " << gated
+              << " gated, " << substituted << " substitutes, "
               << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
               << " us per estimation step, " << wall << " s in all" << std::endl;
     if (aligner) {
@@ -282,8 +360,12 @@ int main(int argc, char** argv) {
     const auto parameters = sf_filter::loadParameters<sf_config::Parameters>(
         pnh, [](double periodMs) { return sf_config::defaultParameters(periodMs); },
         sf_config::kEstimationPeriodMs);
+    std::vector<sf_filter::InputOptions> inputs = sf_config::defaultInputOptions();
+    double lagMs = sf_config::kMaxMeasurementLagMs;
+    sf_filter::loadInputParameters(pnh, inputs, lagMs, inputCapabilities());
     node.emplace(nh, pnh, sf_filter::generated::makeFilter(parameters),
-                 parameters.estimation_period_ms / 1000.0, describe(aligner ? &*aligner : nullptr));
+                 coreOptions(parameters.estimation_period_ms, inputs, lagMs),
+                 describe(aligner ? &*aligner : nullptr));
   } catch (const std::exception& e) {
     ROS_FATAL("%s: refusing to start: %s", ros::this_node::getName().c_str(), e.what());
     return EXIT_FAILURE;

@@ -7,43 +7,11 @@
 #include <limits>
 #include <vector>
 
-#include <sf_estimation/kalman_filter.hpp>
-
-#include "sf_filter/core/fusion_core.hpp"
+#include "train_core.hpp"
 
 namespace {
 
-using estimation::Matrix;
-using estimation::Measurement;
-using estimation::Vector;
-
-// Moving train (thesis 2.2.1) with one control: v' = v + a T + u, a' = a; sensors v and a.
-using Train = estimation::KalmanFilter<2, 2, 1>;
-constexpr double kPeriod = 0.1;
-
-Train makeTrain() {
-  Matrix<2, 2> A;
-  A << 1, kPeriod, 0, 1;
-  Matrix<2, 1> B(1, 0);
-  const Matrix<2, 2> H = Matrix<2, 2>::Identity();
-  const Matrix<2, 2> Q = Matrix<2, 2>::Identity() * 0.01;
-  Matrix<2, 2> R;
-  R << 0.5, 0, 0, 0.2;
-  return Train(A, B, H, Q, R, Vector<2>(0, 0), Matrix<2, 2>::Identity());
-}
-
-using Core = sf_filter::FusionCore<Train>;
-
-Core makeCore() {
-  Core::Options options;
-  options.period = kPeriod;
-  return Core(makeTrain(), options);
-}
-
-struct Collector {
-  std::vector<Core::Estimate> estimates;
-  void operator()(const Core::Estimate& e) { estimates.push_back(e); }
-};
+using namespace train_core;
 
 TEST(FusionCore, AveragesTheValuesOfAPeriodAndMarksSilentInputsMissing) {
   Core core = makeCore();

@@ -52,6 +52,7 @@ void exerciseModel() {
     static_cast<void>(In::value(typename In::Message{}));
   });
   sf_config::forEachOutput([](auto out) { static_cast<void>(decltype(out)::state_index); });
+  static_cast<void>(sf_config::defaultInputOptions());
 #if METHOD == KALMAN_FILTER || METHOD == EXTENDED_KALMAN_FILTER || \
     METHOD == UNSCENTED_KALMAN_FILTER || METHOD == PARTICLE_FILTER_SIR
   exerciseModel<sf_config::Model>();

@@ -7,6 +7,7 @@
 #include "sf_estimation/abstract_kalman_filter.hpp"
 #include "sf_estimation/jacobian.hpp"
 #include "sf_estimation/kalman_correction.hpp"
+#include "sf_estimation/measurement_prediction.hpp"
 
 namespace estimation {
 
@@ -32,11 +33,9 @@ class ExtendedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model
   void estimate(const Measurement<M>& z) {
     z.validate(this->measurementSize());
     const Index n = this->stateSize();
-    Matrix<N, N> A(n, n);
-    transitionJacobian(model_, this->x_, this->u_, A);
     Vector<N> x(n);
-    model_.transition(this->x_, this->u_, x);
-    Matrix<N, N> P = A * this->P_ * A.transpose() + this->Q_;
+    Matrix<N, N> P(n, n);
+    predict(x, P);
     if (z.anyAvailable()) {
       const Index m = this->measurementSize();
       Matrix<M, N> H(m, n);
@@ -52,10 +51,34 @@ class ExtendedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model
     this->commit(x, P);
   }
 
+  /// z^ = h(x(k|k-1)) and H P(k|k-1) H^T (H the observation Jacobian at x(k|k-1)) for the
+  /// next step with the current control; the filter is unchanged.
+  void predictMeasurement(MeasurementPrediction<M>& out) const {
+    const Index n = this->stateSize(), m = this->measurementSize();
+    Vector<N> x(n);
+    Matrix<N, N> P(n, n);
+    predict(x, P);
+    Matrix<M, N> H(m, n);
+    observationJacobian(model_, x, H);
+    model_.observation(x, out.mean);
+    out.covariance = H * P * H.transpose();
+    out.noise = this->R_;
+  }
+
   const Model& model() const { return model_; }
   Model& model() { return model_; }
 
  private:
+  /// Time update of the current belief: x(k|k-1) = f(x, u), P(k|k-1) = A P A^T + Q with A
+  /// the transition Jacobian at the current state.
+  void predict(Vector<N>& x, Matrix<N, N>& P) const {
+    const Index n = this->stateSize();
+    Matrix<N, N> A(n, n);
+    transitionJacobian(model_, this->x_, this->u_, A);
+    model_.transition(this->x_, this->u_, x);
+    P = A * this->P_ * A.transpose() + this->Q_;
+  }
+
   Model model_;
 };
 

@@ -3,6 +3,7 @@
 
 #include "sf_estimation/abstract_kalman_filter.hpp"
 #include "sf_estimation/kalman_correction.hpp"
+#include "sf_estimation/measurement_prediction.hpp"
 
 namespace estimation {
 
@@ -29,8 +30,9 @@ class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
   /// Time update with the last control, then correction with the present entries of z.
   void estimate(const Measurement<M>& z) {
     z.validate(this->measurementSize());
-    Vector<N> x = A_ * this->x_ + B_ * this->u_;
-    Matrix<N, N> P = A_ * this->P_ * A_.transpose() + this->Q_;
+    Vector<N> x(this->stateSize());
+    Matrix<N, N> P(this->stateSize(), this->stateSize());
+    predict(x, P);
     if (z.anyAvailable()) {
       Vector<M> y = z.value - H_ * x;
       Matrix<M, N> H = H_;
@@ -42,11 +44,28 @@ class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
     this->commit(x, P);
   }
 
+  /// z^ = H x(k|k-1) and H P(k|k-1) H^T for the next step with the current control; the
+  /// filter is unchanged.
+  void predictMeasurement(MeasurementPrediction<M>& out) const {
+    Vector<N> x(this->stateSize());
+    Matrix<N, N> P(this->stateSize(), this->stateSize());
+    predict(x, P);
+    out.mean = H_ * x;
+    out.covariance = H_ * P * H_.transpose();
+    out.noise = this->R_;
+  }
+
   const Matrix<N, N>& transitionMatrix() const { return A_; }
   const Matrix<N, L>& controlMatrix() const { return B_; }
   const Matrix<M, N>& observationMatrix() const { return H_; }
 
  private:
+  /// Time update of the current belief: x(k|k-1) = A x + B u, P(k|k-1) = A P A^T + Q.
+  void predict(Vector<N>& x, Matrix<N, N>& P) const {
+    x = A_ * this->x_ + B_ * this->u_;
+    P = A_ * this->P_ * A_.transpose() + this->Q_;
+  }
+
   Matrix<N, N> A_;
   Matrix<N, L> B_;
   Matrix<M, N> H_;

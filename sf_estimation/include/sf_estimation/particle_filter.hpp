@@ -15,6 +15,7 @@
 
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/measurement_noise.hpp"
+#include "sf_estimation/measurement_prediction.hpp"
 #include "sf_estimation/model.hpp"
 #include "sf_estimation/parameter_checks.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
@@ -128,6 +129,34 @@ class ParticleFilterSIR {
            ", particles=" + std::to_string(particleCount()) + ")";
   }
 
+  /// z^ and the covariance of h over the particles the next step will draw (the same random
+  /// numbers, from a copy of the engine, with the current control and weights); the filter is
+  /// unchanged. The moments are accumulated in one pass (West's weighted update), so no
+  /// buffer of p predicted particles is needed.
+  void predictMeasurement(MeasurementPrediction<M>& out) const {
+    const Index n = stateSize(), m = measurementSize(), p = particleCount();
+    probability::RandomEngine engine = engine_;
+    Vector<N> in(n), transitioned(n), noise(n), sample(n);
+    Vector<M> expected(m), deviation(m);
+    out.mean.setZero();
+    out.covariance.setZero();
+    double weightSum = 0.0;
+    for (Index i = 0; i < p; ++i) {
+      in = particles_.col(i);
+      sampleTransition(in, engine, transitioned, noise, sample);
+      const double w = weights_(i);
+      if (w == 0.0) continue;
+      model_.observation(sample, expected);
+      weightSum += w;
+      deviation = expected - out.mean;
+      out.mean += (w / weightSum) * deviation;
+      out.covariance.noalias() += w * deviation * (expected - out.mean).transpose();
+    }
+    out.covariance /= weightSum;
+    symmetrize(out.covariance);
+    out.noise = R_;
+  }
+
   const Model& model() const { return model_; }
   Model& model() { return model_; }
 
@@ -137,21 +166,11 @@ class ParticleFilterSIR {
     // Sample: x_i' = f(x_i, u) + w_i, w_i ~ N(0, Q). One particle at a time, so that its
     // values stay in registers; the normals are drawn in the same order as when filling a
     // whole n x p matrix column by column.
-    Vector<N> in(n), out(n), noise(n);
+    Vector<N> in(n), out(n), noise(n), sample(n);
     for (Index i = 0; i < p; ++i) {
       in = particles_.col(i);
-      model_.transition(in, u_, out);
-      probability::fillStandardNormal(engine_, noise);
-      if (noisePerRow_) {
-        for (Index r = 0; r < n; ++r) scratch_(r, i) = noiseScale_(r) * noise(noiseSource_(r));
-      } else {
-        scratch_.col(i).noalias() = noiseRoot_ * noise;
-      }
-      scratch_.col(i) += out;
-      if (!scratch_.col(i).allFinite()) {
-        throw NumericalError("ParticleFilterSIR: the state transition produced a non-finite "
-                             "particle; step rejected");
-      }
+      sampleTransition(in, engine_, out, noise, sample);
+      scratch_.col(i) = sample;
     }
     // Weight: log w_i += log N(z; h(x_i), R) over the present entries.
     newLogWeights_ = logWeights_;
@@ -164,6 +183,25 @@ class ParticleFilterSIR {
     resampled_ = effectiveSampleSize_ < params_.resamplingThreshold * static_cast<double>(p);
     if (resampled_) resample();
     updateMoments();
+  }
+
+  /// sample = f(in, u) + w with w ~ N(0, Q) drawn from `engine`; `out` and `noise` are
+  /// scratch. Throws NumericalError for a non-finite sample.
+  void sampleTransition(const Vector<N>& in, probability::RandomEngine& engine, Vector<N>& out,
+                        Vector<N>& noise, Vector<N>& sample) const {
+    const Index n = stateSize();
+    model_.transition(in, u_, out);
+    probability::fillStandardNormal(engine, noise);
+    if (noisePerRow_) {
+      for (Index r = 0; r < n; ++r) sample(r) = noiseScale_(r) * noise(noiseSource_(r));
+    } else {
+      sample.noalias() = noiseRoot_ * noise;
+    }
+    sample += out;
+    if (!sample.allFinite()) {
+      throw NumericalError("ParticleFilterSIR: the state transition produced a non-finite "
+                           "particle; step rejected");
+    }
   }
 
   void weigh(const Measurement<M>& z) {

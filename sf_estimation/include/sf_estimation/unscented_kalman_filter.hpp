@@ -9,6 +9,7 @@
 
 #include "sf_estimation/abstract_kalman_filter.hpp"
 #include "sf_estimation/kalman_correction.hpp"
+#include "sf_estimation/measurement_prediction.hpp"
 #include "sf_estimation/model.hpp"
 #include "sf_estimation/unscented_transform.hpp"
 
@@ -38,37 +39,17 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
     z.validate(this->measurementSize());
     const Index n = this->stateSize();
     const Index count = transform_.pointCount();
-
-    // Time update: propagate sigma points of the previous belief through f.
-    Matrix<N, S> points(n, count), propagated(n, count);
-    transform_.sigmaPoints(this->x_, this->P_, points);
-    Vector<N> in(n), out(n);
-    for (Index i = 0; i < count; ++i) {
-      in = points.col(i);
-      model_.transition(in, this->u_, out);
-      propagated.col(i) = out;
-    }
     Vector<N> x(n);
-    transform_.mean(propagated, x);
     Matrix<N, N> P(n, n);
-    transform_.crossCovariance(propagated, x, propagated, x, P);
-    P += this->Q_;
+    predict(x, P);
 
     if (z.anyAvailable()) {
-      // Measurement update from fresh sigma points of the predicted belief.
       const Index m = this->measurementSize();
-      transform_.sigmaPoints(x, P, points);
+      Matrix<N, S> points(n, count);
       Matrix<M, S> expected(m, count);
-      Vector<M> zi(m);
-      for (Index i = 0; i < count; ++i) {
-        in = points.col(i);
-        model_.observation(in, zi);
-        expected.col(i) = zi;
-      }
       Vector<M> zMean(m);
-      transform_.mean(expected, zMean);
       Matrix<M, M> Pzz(m, m);
-      transform_.crossCovariance(expected, zMean, expected, zMean, Pzz);
+      predictMeasurementPoints(x, P, points, expected, zMean, Pzz);
       Matrix<N, M> Pxz(n, m);
       transform_.crossCovariance(points, x, expected, zMean, Pxz);
 
@@ -94,11 +75,60 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
     this->commit(x, P);
   }
 
+  /// z^ and Pzz of the unscented transform of the predicted belief for the next step with
+  /// the current control; the filter is unchanged.
+  void predictMeasurement(MeasurementPrediction<M>& out) const {
+    const Index n = this->stateSize(), m = this->measurementSize();
+    const Index count = transform_.pointCount();
+    Vector<N> x(n);
+    Matrix<N, N> P(n, n);
+    predict(x, P);
+    Matrix<N, S> points(n, count);
+    Matrix<M, S> expected(m, count);
+    predictMeasurementPoints(x, P, points, expected, out.mean, out.covariance);
+    out.noise = this->R_;
+  }
+
   const Model& model() const { return model_; }
   Model& model() { return model_; }
   const UnscentedParameters& parameters() const { return params_; }
 
  private:
+  /// Time update: sigma points of the current belief propagated through f; P includes Q.
+  void predict(Vector<N>& x, Matrix<N, N>& P) const {
+    const Index n = this->stateSize();
+    const Index count = transform_.pointCount();
+    Matrix<N, S> points(n, count), propagated(n, count);
+    transform_.sigmaPoints(this->x_, this->P_, points);
+    Vector<N> in(n), out(n);
+    for (Index i = 0; i < count; ++i) {
+      in = points.col(i);
+      model_.transition(in, this->u_, out);
+      propagated.col(i) = out;
+    }
+    transform_.mean(propagated, x);
+    transform_.crossCovariance(propagated, x, propagated, x, P);
+    P += this->Q_;
+  }
+
+  /// Fresh sigma points of the predicted belief (x, P), their images under h, and the
+  /// images' mean and covariance (without R).
+  void predictMeasurementPoints(const Vector<N>& x, const Matrix<N, N>& P, Matrix<N, S>& points,
+                                Matrix<M, S>& expected, Vector<M>& zMean,
+                                Matrix<M, M>& Pzz) const {
+    const Index n = this->stateSize(), m = this->measurementSize();
+    transform_.sigmaPoints(x, P, points);
+    Vector<N> in(n);
+    Vector<M> zi(m);
+    for (Index i = 0; i < transform_.pointCount(); ++i) {
+      in = points.col(i);
+      model_.observation(in, zi);
+      expected.col(i) = zi;
+    }
+    transform_.mean(expected, zMean);
+    transform_.crossCovariance(expected, zMean, expected, zMean, Pzz);
+  }
+
   Model model_;
   UnscentedTransform<N> transform_;
   UnscentedParameters params_;

@@ -52,6 +52,9 @@
 //   RANDOM_SEED, RESAMPLING_THRESHOLD        -    -    -    o    -    -    -
 //   WINDOW_SIZE                              -    -    -    -    R    R    o
 //   WEIGHTING_COEFFICIENTS                   x    x    x    x    o    x    x
+//   INPUT_ALIGNMENT                          o    o    o    o    o    o    o
+//   INPUT_GATE                               o    o    o    o    x    x    x
+//   ALIGN_BY_STAMP, MAX_MEASUREMENT_LAG      o    o    o    o    o    o    o
 //   R required (#error if missing), o optional, c required if TOPICS_IN_CTRL is defined,
 //   x not allowed (#error), - not used (a "#pragma GCC warning" says it is ignored).
 //   T, x and u must not be macros (#error): the expressions use them.
@@ -91,6 +94,16 @@
 //   WINDOW_SIZE                 integer >= 1: measurements per input averaged. CWA default 1.
 //   WEIGHTING_COEFFICIENTS      WINDOW_SIZE weights, one per measurement of the window.
 //                               Default: none (equal weights).
+//   INPUT_ALIGNMENT             per input i that is not averaged (doc/alignment_policies.md):
+//                               ((i)(AVERAGE)), ((i)(LAST)), ((i)(SAMPLED)),
+//                               ((i)(HOLD)(LAGRANGE|BEZIER|TAYLOR)(order)[(variance)]) with
+//                               0 <= order <= 15, ((i)(FILL)(omega)(N)[(variance)]) with
+//                               omega > 0 [s], 1 <= N <= 16 (not for MA, MM, CWA).
+//                                                                          Default AVERAGE.
+//   INPUT_GATE                  ((i)(threshold)) per gated input: chi-square threshold > 0 on
+//                               the squared Mahalanobis distance.          Default no gate.
+//   ALIGN_BY_STAMP              (i)(j)...: inputs aligned by header.stamp (stamped types).
+//   MAX_MEASUREMENT_LAG         ms >= 0 a period waits for stamped values.  Default 0.
 //
 // STATE SIZE n: rows of STATE_TRANSITION_MATRIX (KF); entries of STATE_TRANSITION_MODEL
 //   (EKF, UKF, PF); m (MA, MM: one averaged output per input); 1 (CWA: one fused value).
@@ -153,6 +166,12 @@
 //     static constexpr std::string_view topic; using Outputs; forEachOutput(visitor);
 //     kOutputTopics[kOutputCount].
 //
+//   Alignment (detail/input_alignment.hpp): constexpr bool kHasInputAlignment,
+//     kHasInputGate, kHasAlignByStamp; inline constexpr std::array<..., m>
+//     kInputAlignment (sf_filter::AlignmentPolicy), kGateThresholds (infinity: none),
+//     kAlignByStamp, kInputHasStamp; constexpr double kMaxMeasurementLagMs;
+//     std::vector<sf_filter::InputOptions> defaultInputOptions();
+//
 //   One subscription per distinct topic: subscribe for every input with owns_subscription and,
 //   in its callback, read every input J with J::first_same_topic == owner index:
 //     sf_config::forEachInput([&](auto in) {
@@ -208,6 +227,7 @@
 #define SF_CONFIG_OK 1
 #include "sf_filter/config/detail/checks.hpp"
 #include "sf_filter/config/detail/constants.hpp"
+#include "sf_filter/config/detail/input_alignment.hpp"
 #include "sf_filter/config/detail/model.hpp"
 #include "sf_filter/config/detail/parameters.hpp"
 #include "sf_filter/config/detail/topics.hpp"

@@ -2,6 +2,22 @@
 // and the passing of time, aligns the inputs per estimation period, runs the estimator and
 // hands out one estimate per period. The ROS node and the offline bag replay are thin
 // adapters around it, so both behave identically and it is unit-tested without a master.
+//
+// Per input (Options::inputs, doc/alignment_policies.md): the alignment policy (AVERAGE by
+// default, LAST, SAMPLED, HOLD, FILL), an optional Mahalanobis gate, and alignment by header
+// stamp instead of arrival time.
+//
+// Periods and the measurement lag. Period k covers [start + (k-1) T, start + k T). A value
+// aligned by arrival time belongs to the period containing its arrival, one aligned by stamp
+// to the period containing its stamp, so a value delayed in transport still counts for the
+// period it was measured in. To wait for such values, period k is estimated only once the
+// clock reaches its end plus the maximum measurement lag (Options::maxMeasurementLag; 0 by
+// default, which is the thesis's node: estimate at the period's end). Until then it stays
+// open; the open periods live in a ring of at least floor(lag / T) + 3 slots (a power of
+// two) allocated at construction. A stamped value whose period has already been estimated is
+// dropped and counted (InputCounters::late). The estimate of period k still carries the time of its
+// end, so with a lag the estimates come out `lag` late but refer to the right instants. Controls
+// are taken by arrival: period k uses the latest control received before its end.
 #pragma once
 
 #include <chrono>
@@ -15,9 +31,12 @@
 
 #include <sf_estimation/errors.hpp>
 #include <sf_estimation/measurement.hpp>
+#include <sf_estimation/measurement_prediction.hpp>
 
+#include "sf_filter/core/alignment/input_aligner.hpp"
+#include "sf_filter/core/alignment/input_period.hpp"
 #include "sf_filter/core/input_counters.hpp"
-#include "sf_filter/core/period_average.hpp"
+#include "sf_filter/core/input_options.hpp"
 #include "sf_filter/core/period_schedule.hpp"
 
 namespace sf_filter {
@@ -33,12 +52,15 @@ class FusionCore {
   static constexpr int N = Filter::StateSize;
   static constexpr int M = Filter::MeasurementSize;
   static constexpr int L = Filter::ControlSize;
+  /// The filter gives its predicted measurement (KF, EKF, UKF, PF): gates and FILL possible.
+  static constexpr bool kCanPredict = estimation::HasMeasurementPrediction<Filter>::value;
 
   struct Estimate {
     double time = 0.0;  ///< end of the estimated period
     estimation::Vector<N> state;
     estimation::Matrix<N, N> covariance;
-    Index presentInputs = 0;  ///< inputs that had at least one value in the period
+    Index presentInputs = 0;      ///< inputs with a measured value (not gated) in the period
+    Index substitutedInputs = 0;  ///< inputs given a HOLD or FILL substitute
   };
 
   struct Options {
@@ -46,59 +68,78 @@ class FusionCore {
     /// A forward clock jump longer than this many periods is skipped (one estimate) instead
     /// of estimating every missed period, so a stalled clock never floods the output.
     std::uint64_t maxCatchUpPeriods = 100;
+    /// One entry per input, or none: every input AVERAGE, by arrival time, without gate.
+    std::vector<InputOptions> inputs;
+    /// How long after its end a period stays open for stamped values [s] (see above).
+    double maxMeasurementLag = 0.0;
   };
 
   FusionCore(Filter filter, const Options& options)
       : filter_(std::move(filter)),
         initial_(filter_),
-        options_(options),
+        options_(checked(options, filter_.measurementSize())),
         schedule_(options.period),
-        inputs_(static_cast<std::size_t>(filter_.measurementSize())),
-        counters_(inputs_.size()),
+        counters_(static_cast<std::size_t>(filter_.measurementSize())),
         measurement_(filter_.measurementSize()),
+        prediction_(filter_.measurementSize()),
         control_(estimation::Vector<L>::Zero(filter_.controlSize())) {
-    if (!(options.period > 0.0) || !std::isfinite(options.period)) {
-      throw estimation::ParameterError("estimation period must be positive and finite");
+    const Index m = filter_.measurementSize();
+    for (Index i = 0; i < m; ++i) aligners_.emplace_back(inputOptions(i).alignment);
+    // A power of two, so that the slot of a period is a bit mask away.
+    const auto needed = static_cast<std::size_t>(
+        std::floor(options_.maxMeasurementLag / options_.period + 1e-9) + 3);
+    std::size_t slots = 1;
+    while (slots < needed) slots *= 2;
+    OpenPeriod empty;
+    empty.control = estimation::Vector<L>::Zero(filter_.controlSize());
+    empty.controlSet = estimation::Mask<L>::Constant(filter_.controlSize(), false);
+    for (Index i = 0; i < m; ++i) {
+      empty.inputs.emplace_back(inputOptions(i).alignment.historyLength());
     }
-    fillEstimate(0.0, 0);
+    open_.assign(slots, empty);
+    openWindow();
+    fillEstimate(0.0, 0, 0);
   }
 
-  /// Runs every period that ended at or before `now`, calling onEstimate(const Estimate&)
-  /// for each. Time running backwards (a restarted bag, a reset simulation clock) resets
-  /// the filter and restarts the schedule at `now`.
+  /// Runs every period that ended at or before `now` - lag, calling
+  /// onEstimate(const Estimate&) for each. Time running backwards (a restarted bag, a reset
+  /// simulation clock) resets the filter and restarts the schedule at `now`.
   template <class OnEstimate>
   ClockEvent advanceTo(double now, OnEstimate&& onEstimate) {
+    clock_ = now;
+    const double lag = options_.maxMeasurementLag;
     if (!schedule_.started()) {
-      schedule_.start(now);
+      restartSchedule(now);
       return ClockEvent::Started;
     }
-    if (now < schedule_.currentStart()) {
+    if (now < schedule_.currentStart() + lag) {
       reset();
-      schedule_.start(now);
+      restartSchedule(now);
       ++clockResets_;
       return ClockEvent::JumpedBackwards;
     }
-    const std::uint64_t due = schedule_.periodsDue(now);
+    const std::uint64_t due = schedule_.periodsDue(now - lag);
     if (due > options_.maxCatchUpPeriods) {
-      estimatePeriod(schedule_.currentEnd());
+      estimatePeriod();
       onEstimate(last_);
-      schedule_.skipTo(now);
+      schedule_.skipTo(now - lag);
+      openWindow();
       return ClockEvent::SkippedGap;
     }
     for (std::uint64_t k = 0; k < due; ++k) {
-      estimatePeriod(schedule_.currentEnd());
-      schedule_.advance();
+      estimatePeriod();
       onEstimate(last_);
     }
     return ClockEvent::Normal;
   }
 
   /// A measurement of input `input` received at `now`, with the variance the message carried
-  /// (if any). `stamp` (NaN when the message has no header) must not run backwards per input.
+  /// (if any). `stamp` (NaN when the message has no header) must not run backwards per input;
+  /// it places the value in its period if the input is aligned by stamp.
   Rejection addMeasurement(Index input, double now, double value,
                            std::optional<double> variance = std::nullopt,
                            double stamp = std::numeric_limits<double>::quiet_NaN()) {
-    if (input < 0 || input >= static_cast<Index>(inputs_.size())) return Rejection::UnknownInput;
+    if (input < 0 || input >= inputCount()) return Rejection::UnknownInput;
     InputCounters& c = counters_[static_cast<std::size_t>(input)];
     ++c.received;
     c.lastArrival = now;
@@ -117,28 +158,43 @@ class FusionCore {
       }
       c.lastStamp = stamp;
     }
-    inputs_[static_cast<std::size_t>(input)].add(value, variance);
+    const bool byStamp = inputOptions(input).alignByStamp && !std::isnan(stamp);
+    const double time = byStamp ? stamp : now;
+    bool estimated = false, beyond = false;
+    const std::uint64_t k = openPeriodOf(time, estimated, beyond);
+    if (byStamp && estimated) {
+      ++c.late;
+      return Rejection::TooLate;
+    }
+    if (byStamp && beyond) ++c.aheadOfClock;
+    slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time);
     return Rejection::None;
   }
 
-  /// A control value; the latest one of each control is used by the next estimate.
+  /// A control value, received at the clock's last reading; a period uses the latest value of
+  /// each control received before its end.
   Rejection addControl(Index control, double value) {
     if (control < 0 || control >= control_.size()) return Rejection::UnknownInput;
     if (!std::isfinite(value)) {
       ++controlNonFinite_;
       return Rejection::NonFinite;
     }
-    control_(control) = value;
+    bool estimated = false, beyond = false;
+    OpenPeriod& slot = slotOf(openPeriodOf(clock_, estimated, beyond));
+    slot.control(control) = value;
+    slot.controlSet(control) = true;
     return Rejection::None;
   }
 
-  /// Back to the initial belief; pending values and the control are discarded.
+  /// Back to the initial belief; pending values, the alignment histories and the control
+  /// are discarded.
   void reset() {
     filter_ = initial_;
-    for (auto& input : inputs_) input.clear();
+    for (OpenPeriod& slot : open_) slot.clear();
+    for (auto& aligner : aligners_) aligner.reset();
     for (auto& c : counters_) c.lastStamp = -std::numeric_limits<double>::infinity();
     control_.setZero();
-    fillEstimate(last_.time, 0);
+    fillEstimate(last_.time, 0, 0);
   }
 
   const Estimate& lastEstimate() const { return last_; }
@@ -146,36 +202,164 @@ class FusionCore {
   const InputCounters& counters(Index input) const {
     return counters_[static_cast<std::size_t>(input)];
   }
-  Index inputCount() const { return static_cast<Index>(inputs_.size()); }
+  /// The input's options (the defaults when Options::inputs is empty).
+  const InputOptions& inputOptions(Index input) const {
+    return options_.inputs.empty() ? kDefaultInput
+                                   : options_.inputs[static_cast<std::size_t>(input)];
+  }
+  Index inputCount() const { return static_cast<Index>(counters_.size()); }
   std::uint64_t clockResets() const { return clockResets_; }
   std::uint64_t estimationFailures() const { return estimationFailures_; }
   const std::string& lastFailure() const { return lastFailure_; }
   std::uint64_t controlNonFinite() const { return controlNonFinite_; }
   double period() const { return options_.period; }
+  double maxMeasurementLag() const { return options_.maxMeasurementLag; }
   /// Wall time spent in the estimator's steps, and their number (failed steps excluded).
   double estimatorSeconds() const { return estimatorSeconds_; }
   std::uint64_t estimateCount() const { return estimateCount_; }
 
  private:
-  void estimatePeriod(double end) {
-    Index present = 0;
-    for (Index i = 0; i < measurement_.size(); ++i) {
-      PeriodAverage& in = inputs_[static_cast<std::size_t>(i)];
-      measurement_.available(i) = !in.empty();
-      measurement_.varianceGiven(i) = in.hasVariance();
-      if (!in.empty()) {
-        ++present;
-        measurement_.value(i) = in.mean();
-        measurement_.variance(i) = in.hasVariance() ? in.meanVariance() : 0.0;
-        counters_[static_cast<std::size_t>(i)].used += in.count();
-      }
-      in.clear();
+  /// What arrived for one not yet estimated period.
+  struct OpenPeriod {
+    std::uint64_t index = 0;  ///< the period the slot holds
+    std::vector<InputPeriod> inputs;
+    estimation::Vector<L> control;
+    estimation::Mask<L> controlSet;  ///< controls received in the period
+
+    void clear() {
+      for (InputPeriod& in : inputs) in.clear();
+      controlSet.setConstant(false);
     }
-    const auto begin = std::chrono::steady_clock::now();
+  };
+
+  static inline const InputOptions kDefaultInput{};
+
+  static const Options& checked(const Options& o, Index inputs) {
+    if (!(o.period > 0.0) || !std::isfinite(o.period)) {
+      throw estimation::ParameterError("estimation period must be positive and finite");
+    }
+    if (!(o.maxMeasurementLag >= 0.0) || !std::isfinite(o.maxMeasurementLag)) {
+      throw estimation::ParameterError("maximum measurement lag must be finite and >= 0");
+    }
+    if (o.maxMeasurementLag / o.period > 10000.0) {
+      throw estimation::ParameterError("maximum measurement lag is more than 10000 periods");
+    }
+    if (!o.inputs.empty() && static_cast<Index>(o.inputs.size()) != inputs) {
+      throw estimation::ParameterError("input options: expected " + std::to_string(inputs) +
+                                       " entries (one per input), found " +
+                                       std::to_string(o.inputs.size()));
+    }
+    for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+      const std::string problem = inputOptionsProblem(o.inputs[i]);
+      if (!problem.empty()) {
+        throw estimation::ParameterError("input " + std::to_string(i) + ": " + problem);
+      }
+      if (!kCanPredict && (o.inputs[i].gated() || o.inputs[i].alignment.needsPrediction())) {
+        throw estimation::ParameterError(
+            "input " + std::to_string(i) + ": " +
+            (o.inputs[i].gated() ? "a Mahalanobis gate" : "FILL") +
+            " needs the filter's predicted measurement, which this method does not give");
+      }
+    }
+    return o;
+  }
+
+  void restartSchedule(double now) {
+    schedule_.start(now - options_.maxMeasurementLag);
+    openWindow();
+  }
+
+  std::uint64_t newestOpenPeriod() const { return schedule_.index() + open_.size() - 1; }
+
+  OpenPeriod& slotOf(std::uint64_t k) { return open_[k & (open_.size() - 1)]; }
+
+  /// The open period time t belongs to. A time in a period already estimated gives the
+  /// current period and sets `estimated`; one beyond the newest open period gives that one
+  /// and sets `beyond`. Before the schedule starts every time gives the first period.
+  std::uint64_t openPeriodOf(double t, bool& estimated, bool& beyond) const {
+    const std::uint64_t current = schedule_.index();
+    if (!schedule_.started() || schedule_.inCurrent(t)) return current;  // the usual case
+    const std::int64_t k = schedule_.indexOf(t);
+    if (k < static_cast<std::int64_t>(current)) {
+      estimated = true;
+      return current;
+    }
+    if (k > static_cast<std::int64_t>(newestOpenPeriod())) {
+      beyond = true;
+      return newestOpenPeriod();
+    }
+    return static_cast<std::uint64_t>(k);
+  }
+
+  /// Assigns the slots to the open periods from the current one on. A slot still holding an
+  /// older period (skipped by a gap or a restart) is emptied; its controls are kept.
+  void openWindow() {
+    for (std::uint64_t k = schedule_.index(); k <= newestOpenPeriod(); ++k) {
+      OpenPeriod& slot = slotOf(k);
+      if (slot.index == k) continue;
+      takeControls(slot);
+      slot.clear();
+      slot.index = k;
+    }
+  }
+
+  void takeControls(const OpenPeriod& slot) {
+    for (Index j = 0; j < control_.size(); ++j) {
+      if (slot.controlSet(j)) control_(j) = slot.control(j);
+    }
+  }
+
+  /// Aligns the current period's inputs, estimates, and moves the schedule on.
+  void estimatePeriod() {
+    const std::uint64_t k = schedule_.index();
+    const double end = schedule_.currentEnd();
+    OpenPeriod& slot = slotOf(k);
+    takeControls(slot);
+    Index present = 0, substituted = 0;
     try {
       filter_.setControl(control_);
+      bool predicted = false;
+      const auto prediction = [&]() -> const estimation::MeasurementPrediction<M>& {
+        if constexpr (kCanPredict) {
+          if (!predicted) filter_.predictMeasurement(prediction_);
+          predicted = true;
+        }
+        return prediction_;
+      };
+      for (Index i = 0; i < inputCount(); ++i) {
+        const auto ii = static_cast<std::size_t>(i);
+        const InputPeriod& in = slot.inputs[ii];
+        InputAligner& aligner = aligners_[ii];
+        InputCounters& c = counters_[ii];
+        std::optional<AlignedValue> v = aligner.measured(in);
+        if (v && inputOptions(i).gated() &&
+            estimation::squaredMahalanobisDistance(prediction(), i, v->value, v->variance) >
+                inputOptions(i).gateThreshold) {
+          c.gated += in.count();
+          v.reset();
+        }
+        if (v) {
+          ++present;
+          const std::uint32_t superseded = aligner.superseded(in);
+          c.superseded += superseded;
+          c.used += in.count() - superseded;
+          aligner.accept(in);
+        } else if (aligner.canSubstitute()) {
+          const double predictedValue =
+              aligner.policy().needsPrediction() ? prediction().mean(i) : 0.0;
+          v = aligner.substitute(end, predictedValue);
+          ++substituted;
+          ++c.substituted;
+        }
+        measurement_.available(i) = v.has_value();
+        measurement_.varianceGiven(i) = v && v->variance.has_value();
+        measurement_.value(i) = v ? v->value : 0.0;
+        measurement_.variance(i) = v && v->variance ? *v->variance : 0.0;
+      }
+      const auto begin = std::chrono::steady_clock::now();
       filter_.estimate(measurement_);
-      estimatorSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+      estimatorSeconds_ +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
       ++estimateCount_;
     } catch (const estimation::EstimationError& e) {
       // The filter rejected the step and kept its belief; a numerical failure is not
@@ -184,25 +368,32 @@ class FusionCore {
       lastFailure_ = e.what();
       filter_ = initial_;
     }
-    fillEstimate(end, present);
+    slot.clear();
+    slot.index = k + open_.size();
+    fillEstimate(end, present, substituted);
+    schedule_.advance();
   }
 
-  void fillEstimate(double time, Index present) {
+  void fillEstimate(double time, Index present, Index substituted) {
     last_.time = time;
     last_.state = filter_.state();
     last_.covariance = filter_.covariance();
     last_.presentInputs = present;
+    last_.substitutedInputs = substituted;
   }
 
   Filter filter_;
   Filter initial_;
   Options options_;
   PeriodSchedule schedule_;
-  std::vector<PeriodAverage> inputs_;
   std::vector<InputCounters> counters_;
+  std::vector<InputAligner> aligners_;
+  std::vector<OpenPeriod> open_;  ///< ring of the open periods, slot k % size for period k
   estimation::Measurement<M> measurement_;
-  estimation::Vector<L> control_;
+  estimation::MeasurementPrediction<M> prediction_;
+  estimation::Vector<L> control_;  ///< the controls in force (of the last estimated period)
   Estimate last_;
+  double clock_ = 0.0;  ///< last reading passed to advanceTo
   double estimatorSeconds_ = 0.0;
   std::uint64_t estimateCount_ = 0;
   std::uint64_t clockResets_ = 0;

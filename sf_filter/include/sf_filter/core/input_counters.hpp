@@ -7,29 +7,43 @@
 namespace sf_filter {
 
 /// Why a value was refused by the fusion core (None: accepted).
-enum class Rejection { None, NonFinite, BadVariance, OutOfOrder, UnknownInput };
+enum class Rejection { None, NonFinite, BadVariance, OutOfOrder, TooLate, UnknownInput };
 
 inline const char* toString(Rejection r) {
   switch (r) {
-    case Rejection::None: return "accepted";
-    case Rejection::NonFinite: return "value is not finite";
-    case Rejection::BadVariance: return "variance is not finite and positive";
-    case Rejection::OutOfOrder: return "timestamp runs backwards";
-    case Rejection::UnknownInput: return "unknown input index";
+    case Rejection::None:
+      return "accepted";
+    case Rejection::NonFinite:
+      return "value is not finite";
+    case Rejection::BadVariance:
+      return "variance is not finite and positive";
+    case Rejection::OutOfOrder:
+      return "timestamp runs backwards";
+    case Rejection::TooLate:
+      return "stamped in a period already estimated (later than the maximum measurement lag)";
+    case Rejection::UnknownInput:
+      return "unknown input index";
   }
   return "?";
 }
 
 struct InputCounters {
-  std::uint64_t received = 0;     ///< values handed to the core
-  std::uint64_t used = 0;         ///< values that entered an estimate
-  std::uint64_t nonFinite = 0;    ///< dropped: NaN or infinite value
-  std::uint64_t badVariance = 0;  ///< dropped: variance field zero, negative or non-finite
-  std::uint64_t outOfOrder = 0;   ///< dropped: stamp older than the previous one of this input
+  std::uint64_t received = 0;      ///< values handed to the core
+  std::uint64_t used = 0;          ///< values that entered an estimate
+  std::uint64_t nonFinite = 0;     ///< dropped: NaN or infinite value
+  std::uint64_t badVariance = 0;   ///< dropped: variance field zero, negative or non-finite
+  std::uint64_t outOfOrder = 0;    ///< dropped: stamp older than the previous one of this input
+  std::uint64_t late = 0;          ///< dropped: stamp in a period already estimated
+  std::uint64_t gated = 0;         ///< values of periods whose value failed the gate
+  std::uint64_t superseded = 0;    ///< LAST, SAMPLED: values replaced by a newer one in a period
+  std::uint64_t substituted = 0;   ///< periods given a HOLD or FILL substitute (not values)
+  std::uint64_t aheadOfClock = 0;  ///< stamps beyond the open periods, used in the newest one
   double lastArrival = std::numeric_limits<double>::quiet_NaN();
   double lastStamp = -std::numeric_limits<double>::infinity();
 
-  std::uint64_t dropped() const { return nonFinite + badVariance + outOfOrder; }
+  /// Values refused on arrival. received = used + superseded + gated + dropped() + the
+  /// values waiting in periods not yet estimated.
+  std::uint64_t dropped() const { return nonFinite + badVariance + outOfOrder + late; }
 };
 
 }  // namespace sf_filter

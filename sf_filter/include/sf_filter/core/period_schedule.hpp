@@ -23,10 +23,30 @@ class PeriodSchedule {
   }
   void stop() { started_ = false; }
 
+  /// Index of the current (not yet estimated) period; the first period is 1.
+  std::uint64_t index() const { return index_; }
+  /// End time of period k: start + k * period.
+  double endOf(std::uint64_t k) const { return start_ + static_cast<double>(k) * period_; }
   /// End time of the current (not yet estimated) period.
-  double currentEnd() const { return start_ + static_cast<double>(index_) * period_; }
+  double currentEnd() const { return endOf(index_); }
+
+  /// Index of the period containing time t, by the convention of due(): a time within the
+  /// tolerance of a period's end belongs to the next period. Times before the start give
+  /// indices below 1.
+  std::int64_t indexOf(double t) const {
+    auto k = static_cast<std::int64_t>(std::floor((t + kTolerance - start_) / period_)) + 1;
+    // Correct the floor's rounding against the end times the schedule itself uses.
+    while (start_ + static_cast<double>(k) * period_ <= t + kTolerance) ++k;
+    while (start_ + static_cast<double>(k - 1) * period_ > t + kTolerance) --k;
+    return k;
+  }
   double currentStart() const { return currentEnd() - period_; }
   bool due(double now) const { return started_ && now + kTolerance >= currentEnd(); }
+  /// Whether time t lies in the current period (by the convention of indexOf()).
+  bool inCurrent(double t) const {
+    const double end = currentEnd();
+    return t + kTolerance < end && t + kTolerance >= end - period_;
+  }
   void advance() { ++index_; }
 
   /// Number of whole periods between the current end and `now` (0 when not due).

@@ -97,7 +97,7 @@ SF_PP_CHECK_LIST("FRAME_ALIGNED_INPUTS", 3, 3, SF_FA_FORMAT, FRAME_ALIGNED_INPUT
   struct BOOST_PP_CAT(FrameAligned, k) {                                                       \
     static constexpr bool aligned = true;                                                      \
     static constexpr int input_index = SF_FA_INDEX(entry);                                     \
-    using Message = typename alignment_detail::InputMessage<input_index>::type;                \
+    using Message = typename ::sf_config::detail::InputMessageOf<input_index>::type;                \
     static constexpr std::string_view member = SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry));         \
     static constexpr std::string_view axis_name = SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry));      \
     static constexpr int axis = alignment_detail::axisIndex(axis_name);                        \
@@ -176,16 +176,6 @@ struct HasStampedHeader<MessageT,
                                     decltype(std::declval<const MessageT&>().header.stamp)>>
     : std::is_convertible<decltype(std::declval<const MessageT&>().header.frame_id),
                           std::string_view> {};
-
-/// The message type of input I; UnknownMessage (no checks) when I is out of range.
-template <int I, bool InRange = (I >= 0 && I < kMeasurementSize)>
-struct InputMessage {
-  using type = detail::UnknownMessage;
-};
-template <int I>
-struct InputMessage<I, true> {
-  using type = typename std::tuple_element_t<I, Inputs>::Message;
-};
 
 #if SF_FA_OK
 /// Input index of each FRAME_ALIGNED_INPUTS entry, in order.

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,7 +15,6 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
-
 
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
@@ -29,8 +29,15 @@ class FusionNode {
  public:
   FusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, Filter filter, double period,
              NodeDescription description)
-      : nh_(nh), pnh_(pnh), description_(std::move(description)),
-        core_(std::move(filter), makeOptions(period)) {
+      : FusionNode(nh, pnh, std::move(filter), makeOptions(period), std::move(description)) {}
+
+  /// With the fusion core's options: period, per-input alignment, gates, measurement lag.
+  FusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, Filter filter,
+             const typename Core::Options& options, NodeDescription description)
+      : nh_(nh),
+        pnh_(pnh),
+        description_(std::move(description)),
+        core_(std::move(filter), options) {
     pnh_.param<std::string>("frame_id", frameId_, "odom");
     pnh_.param<std::string>("child_frame_id", childFrameId_, "base_link");
     pnh_.param("publish_tf", publishTf_, true);
@@ -39,14 +46,14 @@ class FusionNode {
     }
     state_ = pnh_.advertise<sf_pkg::StateEstimateStamped>("state", 10);
     if (description_.pose) odometry_ = nh_.advertise<nav_msgs::Odometry>("odometry/filtered", 10);
-    logConfiguration(period);
+    logConfiguration();
   }
 
   /// Subscribes `topic`; `dispatch(msg, node, now)` hands each used field to measurement().
   template <class Message, class Dispatch>
   void subscribe(const std::string& topic, Dispatch dispatch) {
-    subscribers_.push_back(nh_.subscribe<Message>(
-        topic, 100, [this, dispatch](const typename Message::ConstPtr& msg) {
+    subscribers_.push_back(
+        nh_.subscribe<Message>(topic, 100, [this, dispatch](const typename Message::ConstPtr& msg) {
           const double now = ros::Time::now().toSec();
           advance(now);
           dispatch(*msg, *this, now);
@@ -100,6 +107,15 @@ class FusionNode {
     if (core_.estimationFailures() != failures) {
       ROS_ERROR_THROTTLE(5.0, "estimation failed, filter reset: %s", core_.lastFailure().c_str());
     }
+    std::uint64_t gated = 0;
+    for (Index i = 0; i < core_.inputCount(); ++i) gated += core_.counters(i).gated;
+    if (gated != gatedReported_) {
+      ROS_WARN_THROTTLE(10.0,
+                        "%llu values failed their input's Mahalanobis gate so far (used as "
+                        "missing)",
+                        static_cast<unsigned long long>(gated));
+      gatedReported_ = gated;
+    }
   }
 
   void publish(const typename Core::Estimate& e) {
@@ -121,14 +137,27 @@ class FusionNode {
     }
   }
 
-  void logConfiguration(double period) const {
+  void logConfiguration() const {
     const auto& f = core_.filter();
     ROS_INFO("%s: n=%ld states, m=%ld measurements, l=%ld controls, period %.1f ms",
              f.description().c_str(), static_cast<long>(f.stateSize()),
              static_cast<long>(f.measurementSize()), static_cast<long>(f.controlSize()),
-             period * 1000.0);
+             core_.period() * 1000.0);
+    bool byStamp = false;
     for (std::size_t i = 0; i < description_.inputs.size(); ++i) {
-      ROS_INFO("  input %zu: %s", i, description_.inputs[i].c_str());
+      const InputOptions& o = core_.inputOptions(static_cast<Index>(i));
+      byStamp = byStamp || o.alignByStamp;
+      std::string alignment = toString(o.alignment);
+      if (o.gated()) {
+        char gate[32];
+        std::snprintf(gate, sizeof gate, ", gate %g", o.gateThreshold);
+        alignment += gate;
+      }
+      if (o.alignByStamp) alignment += ", by stamp";
+      ROS_INFO("  input %zu: %s (%s)", i, description_.inputs[i].c_str(), alignment.c_str());
+    }
+    if (byStamp) {
+      ROS_INFO("  periods wait %.1f ms for stamped values", core_.maxMeasurementLag() * 1000.0);
     }
     for (std::size_t i = 0; i < description_.controls.size(); ++i) {
       ROS_INFO("  control %zu: %s", i, description_.controls[i].c_str());
@@ -153,6 +182,7 @@ class FusionNode {
   tf2_ros::TransformBroadcaster broadcaster_;
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
+  std::uint64_t gatedReported_ = 0;
 };
 
 }  // namespace sf_filter

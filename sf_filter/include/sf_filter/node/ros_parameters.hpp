@@ -3,12 +3,17 @@
 // is refused at start with a message naming it.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
-#include <Eigen/Core>
 #include <ros/node_handle.h>
 #include <xmlrpcpp/XmlRpcValue.h>
+#include <Eigen/Core>
+
+#include "sf_filter/core/input_options.hpp"
+#include "sf_filter/core/input_overrides.hpp"
 
 namespace sf_filter {
 
@@ -23,7 +28,8 @@ namespace detail {
 inline double toDouble(const XmlRpc::XmlRpcValue& v, const std::string& name) {
   if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
   if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
-  throw ParameterOverrideError("parameter ~" + name + ": expected numbers, found a non-numeric entry");
+  throw ParameterOverrideError("parameter ~" + name +
+                               ": expected numbers, found a non-numeric entry");
 }
 
 }  // namespace detail
@@ -86,6 +92,73 @@ bool readScalarParameter(const ros::NodeHandle& pnh, const std::string& name, T&
     out = static_cast<T>(v);
   }
   return true;
+}
+
+namespace detail {
+
+/// Calls apply(k, entry) for each entry of the list parameter ~name if it is set; it must have
+/// one entry per input. A std::invalid_argument of apply is reported with the entry named.
+inline void forEachInputEntry(const ros::NodeHandle& pnh, const std::string& name,
+                              std::size_t inputs,
+                              const std::function<void(long, XmlRpc::XmlRpcValue&)>& apply) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam(name, value)) return;
+  const std::string expected = std::to_string(inputs) + " entries (one per TOPICS_IN entry)";
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
+    throw ParameterOverrideError("parameter ~" + name + ": expected a list of " + expected);
+  }
+  if (static_cast<std::size_t>(value.size()) != inputs) {
+    throw ParameterOverrideError("parameter ~" + name + ": expected " + expected + ", found " +
+                                 std::to_string(value.size()));
+  }
+  for (int k = 0; k < value.size(); ++k) {
+    try {
+      apply(k, value[k]);
+    } catch (const std::invalid_argument& e) {
+      throw ParameterOverrideError("parameter ~" + name + " entry " + std::to_string(k) + ": " +
+                                   e.what());
+    }
+  }
+}
+
+}  // namespace detail
+
+/// The configuration header's per-input options and maximum measurement lag [ms] with the
+/// private parameters applied (doc/configuration.md):
+///   ~input_alignment      one policy per input, e.g. ["AVERAGE", "HOLD LAGRANGE 1", "FILL 0.001
+///   5"] ~input_gate           one chi-square threshold per input, 0 for no gate ~align_by_stamp
+///   one boolean per input ~max_measurement_lag  ms >= 0
+inline void loadInputParameters(const ros::NodeHandle& pnh, std::vector<InputOptions>& inputs,
+                                double& maxMeasurementLagMs, const InputCapabilities& can) {
+  const std::size_t m = inputs.size();
+  detail::forEachInputEntry(pnh, "input_alignment", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+    if (v.getType() != XmlRpc::XmlRpcValue::TypeString) {
+      throw std::invalid_argument("expected a policy string such as \"HOLD LAGRANGE 1\"");
+    }
+    overrideAlignment(inputs, k, static_cast<std::string>(v), can);
+  });
+  detail::forEachInputEntry(pnh, "input_gate", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+    double threshold = 0.0;
+    try {
+      threshold = detail::toDouble(v, "input_gate");
+    } catch (const ParameterOverrideError&) {
+      throw std::invalid_argument("expected a number (0: no gate)");
+    }
+    overrideGate(inputs, k, threshold, can);
+  });
+  detail::forEachInputEntry(pnh, "align_by_stamp", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+    if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
+      throw std::invalid_argument("expected true or false");
+    }
+    overrideAlignByStamp(inputs, k, static_cast<bool>(v), can);
+  });
+  if (readScalarParameter(pnh, "max_measurement_lag", maxMeasurementLagMs)) {
+    try {
+      checkedLagMs(maxMeasurementLagMs);
+    } catch (const std::invalid_argument& e) {
+      throw ParameterOverrideError(std::string("parameter ~max_measurement_lag: ") + e.what());
+    }
+  }
 }
 
 /// The header's parameters with the private ROS parameters applied. `Parameters` is the

@@ -87,7 +87,13 @@ class BagReplay {
   using TransformSink = std::function<void(const tf2_msgs::TFMessage&, bool isStatic)>;
 
   BagReplay(Filter filter, double period, NodeDescription description, ReplayOptions options)
-      : core_(std::move(filter), makeOptions(period)),
+      : BagReplay(std::move(filter), makeOptions(period), std::move(description),
+                  std::move(options)) {}
+
+  /// With the fusion core's options (alignment policies, gates, measurement lag).
+  BagReplay(Filter filter, const typename Core::Options& coreOptions, NodeDescription description,
+            ReplayOptions options)
+      : core_(std::move(filter), coreOptions),
         description_(std::move(description)),
         options_(std::move(options)) {}
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -121,6 +122,13 @@ struct DescriptorBase {
 struct OutputDescriptorBase {
   static constexpr int configured_state_index = 0;
 };
+
+/// True if the message type has header.stamp (std_msgs/Header): it can be aligned by stamp.
+template <class MessageT, class = void>
+struct HasHeaderStamp : std::false_type {};
+template <class MessageT>
+struct HasHeaderStamp<MessageT, std::void_t<decltype(std::declval<const MessageT&>().header.stamp)>>
+    : std::true_type {};
 
 template <class Message>
 constexpr bool isUnknownMessage() {

@@ -182,6 +182,19 @@ void forEachInput(Visitor&& visitor) {
   BOOST_PP_REPEAT(SF_CFG_M, SF_CFG_CALL_VISITOR, Input)
 }
 
+namespace detail {
+/// The message type of input I; UnknownMessage (no checks) when I is out of range, so that an
+/// index mistake is reported once, by the check of the index.
+template <int I, bool InRange = (I >= 0 && I < kMeasurementSize)>
+struct InputMessageOf {
+  using type = UnknownMessage;
+};
+template <int I>
+struct InputMessageOf<I, true> {
+  using type = typename std::tuple_element_t<I, Inputs>::Message;
+};
+}  // namespace detail
+
 // --------------------------------------------------------------------------------- control inputs
 #if SF_CFG_L > 0
 /// Topic names of the TOPICS_IN_CTRL entries, in order.

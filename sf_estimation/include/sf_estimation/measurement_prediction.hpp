@@ -1,0 +1,95 @@
+// What a filter expects its next measurement to be: the predicted measurement
+// z^ = E[h(x(k|k-1))] and the covariance of h(x(k|k-1)), from the time update of the
+// current belief with the current control, plus the configured R. A measurement gate needs
+// them for the squared Mahalanobis distance of the innovation (vision/radar paper's gating),
+// the gap-filling alignment for z^ as its newest control point (Wang et al., eq. 6).
+//
+// Filters that can predict (KF, EKF, UKF, SIR PF) provide
+//   void predictMeasurement(MeasurementPrediction<M>& out) const;
+// which leaves the filter unchanged. The averaging methods have no model and do not.
+#pragma once
+
+#include <optional>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Cholesky>
+
+#include "sf_estimation/errors.hpp"
+#include "sf_estimation/measurement.hpp"
+#include "sf_estimation/measurement_noise.hpp"
+#include "sf_estimation/types.hpp"
+
+namespace estimation {
+
+template <int M>
+struct MeasurementPrediction {
+  Vector<M> mean;           ///< z^, the predicted measurement
+  Matrix<M, M> covariance;  ///< covariance of h(x(k|k-1)): H P(k|k-1) H^T for a Kalman filter
+  Matrix<M, M> noise;       ///< R, the configured measurement noise
+
+  explicit MeasurementPrediction(Index size = (M == Dynamic ? 0 : M))
+      : mean(Vector<M>::Zero(size)),
+        covariance(Matrix<M, M>::Zero(size, size)),
+        noise(Matrix<M, M>::Zero(size, size)) {}
+
+  Index size() const { return mean.size(); }
+
+  /// S = covariance + R, as the filter's correction with z would use it: z's own variances
+  /// replace the diagonal of R, missing entries are decoupled (identity row and column).
+  void innovationCovariance(const Measurement<M>& z, Matrix<M, M>& S) const {
+    effectiveMeasurementNoise(noise, z, S);
+    for (Index i = 0; i < size(); ++i) {
+      if (!z.available(i)) continue;
+      for (Index j = 0; j < size(); ++j) {
+        if (z.available(j)) S(i, j) += covariance(i, j);
+      }
+    }
+  }
+};
+
+/// y^T S^-1 y with y = z - z^ over the present entries of z (the missing ones take no part):
+/// chi-square distributed with as many degrees of freedom as entries are present, if the
+/// filter's model is right. Throws NumericalError when S is not positive definite.
+template <int M>
+double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction,
+                                  const Measurement<M>& z) {
+  const Index m = prediction.size();
+  Matrix<M, M> S(m, m);
+  prediction.innovationCovariance(z, S);
+  Vector<M> y = z.value - prediction.mean;
+  for (Index i = 0; i < m; ++i) {
+    if (!z.available(i)) y(i) = 0.0;
+  }
+  const Eigen::LLT<Matrix<M, M>> factor(S);
+  if (factor.info() != Eigen::Success) {
+    throw NumericalError("innovation covariance is not positive definite; no Mahalanobis distance");
+  }
+  return factor.matrixL().solve(y).squaredNorm();
+}
+
+/// (value - z^_i)^2 / S_ii for entry i alone, with S_ii = covariance(i, i) + `variance`
+/// (R(i, i) when no variance is given): the one-dimensional case used by a per-input gate.
+template <int M>
+double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction, Index entry,
+                                  double value, std::optional<double> variance = std::nullopt) {
+  const double s =
+      prediction.covariance(entry, entry) + (variance ? *variance : prediction.noise(entry, entry));
+  if (!(s > 0.0)) {
+    throw NumericalError("innovation variance of measurement " + std::to_string(entry) +
+                         " is not positive; no Mahalanobis distance");
+  }
+  const double y = value - prediction.mean(entry);
+  return y * y / s;
+}
+
+/// True if Filter has predictMeasurement(MeasurementPrediction<MeasurementSize>&) const.
+template <class Filter, class = void>
+struct HasMeasurementPrediction : std::false_type {};
+template <class Filter>
+struct HasMeasurementPrediction<
+    Filter, std::void_t<decltype(std::declval<const Filter&>().predictMeasurement(
+                std::declval<MeasurementPrediction<Filter::MeasurementSize>&>()))>>
+    : std::true_type {};
+
+}  // namespace estimation

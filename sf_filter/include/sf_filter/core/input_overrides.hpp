@@ -1,0 +1,95 @@
+// Run-time changes of the per-input options that the configuration header set: the node's
+// private parameters (~input_alignment, ~input_gate, ~align_by_stamp) and the replay's options
+// (--align, --gate, --align-by-stamp) go through these checks, so both refuse the same
+// mistakes. Each throws std::invalid_argument saying what is wrong with the value; the caller
+// adds which parameter or option it came from.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sf_filter/core/alignment/alignment_policy.hpp"
+#include "sf_filter/core/input_options.hpp"
+
+namespace sf_filter {
+
+/// What the inputs can do, from the configuration.
+struct InputCapabilities {
+  bool canPredict = false;         ///< the method predicts its measurement (gates, FILL)
+  std::vector<bool> hasStamp;      ///< per input: its message type has header.stamp
+  std::vector<std::string> names;  ///< per input, for messages, e.g. "wheel data"
+
+  std::string describe(std::size_t input) const {
+    return "input " + std::to_string(input) +
+           (input < names.size() ? " (" + names[input] + ")" : std::string());
+  }
+};
+
+namespace override_detail {
+inline void checkIndex(const std::vector<InputOptions>& inputs, long input) {
+  if (input < 0 || input >= static_cast<long>(inputs.size())) {
+    throw std::invalid_argument("input index " + std::to_string(input) +
+                                " is out of range, expected 0 to " +
+                                std::to_string(static_cast<long>(inputs.size()) - 1));
+  }
+}
+}  // namespace override_detail
+
+/// Sets input `input`'s policy from its text form (alignment_policy.hpp).
+inline void overrideAlignment(std::vector<InputOptions>& inputs, long input,
+                              const std::string& text, const InputCapabilities& can) {
+  override_detail::checkIndex(inputs, input);
+  const AlignmentPolicy policy = parseAlignmentPolicy(text);
+  if (policy.needsPrediction() && !can.canPredict) {
+    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
+                                ": FILL needs the predicted measurement of the filter, which "
+                                "this method does not give");
+  }
+  inputs[static_cast<std::size_t>(input)].alignment = policy;
+}
+
+/// Sets input `input`'s gate: a chi-square threshold > 0, or 0 for no gate.
+inline void overrideGate(std::vector<InputOptions>& inputs, long input, double threshold,
+                         const InputCapabilities& can) {
+  override_detail::checkIndex(inputs, input);
+  if (!(threshold >= 0.0) || !std::isfinite(threshold)) {
+    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
+                                ": gate threshold must be a finite number > 0, or 0 for no "
+                                "gate, got " +
+                                std::to_string(threshold));
+  }
+  if (threshold > 0.0 && !can.canPredict) {
+    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
+                                ": a gate needs the predicted measurement of the filter, which "
+                                "this method does not give (0: no gate)");
+  }
+  inputs[static_cast<std::size_t>(input)].gateThreshold =
+      threshold > 0.0 ? threshold : std::numeric_limits<double>::infinity();
+}
+
+/// Aligns input `input` by header stamp (true) or arrival time (false).
+inline void overrideAlignByStamp(std::vector<InputOptions>& inputs, long input, bool byStamp,
+                                 const InputCapabilities& can) {
+  override_detail::checkIndex(inputs, input);
+  const auto i = static_cast<std::size_t>(input);
+  if (byStamp && !(i < can.hasStamp.size() && can.hasStamp[i])) {
+    throw std::invalid_argument(can.describe(i) +
+                                ": its message type has no header.stamp to align by");
+  }
+  inputs[i].alignByStamp = byStamp;
+}
+
+/// A maximum measurement lag in ms: finite and >= 0.
+inline double checkedLagMs(double lagMs) {
+  if (!(lagMs >= 0.0) || !std::isfinite(lagMs)) {
+    throw std::invalid_argument("maximum measurement lag must be a number of ms >= 0, got " +
+                                std::to_string(lagMs));
+  }
+  return lagMs;
+}
+
+}  // namespace sf_filter

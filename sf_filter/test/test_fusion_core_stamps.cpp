@@ -1,0 +1,188 @@
+// Unit tests of alignment by header stamp and of the maximum measurement lag in the fusion
+// core: a delayed value counts for the period it was stamped in, a period is estimated only
+// once the clock passed its end plus the lag, values stamped in estimated periods are dropped
+// and counted, inputs aligned by arrival and controls keep using arrival time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "train_core.hpp"
+
+namespace {
+
+using namespace train_core;
+using sf_filter::InputOptions;
+using sf_filter::Rejection;
+
+constexpr double kLag = 0.05;
+
+/// Input 0 (speed) by stamp or by arrival, input 1 by arrival; lag 50 ms. Started at 1.05 s,
+/// so that the periods are [1.0, 1.1), [1.1, 1.2), ... (the schedule starts one lag before
+/// the first clock reading) and period k is estimated at its end + 50 ms.
+Core makeStartedCore(Collector& out, bool speedByStamp = true) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.maxMeasurementLag = kLag;
+  options.inputs.resize(2);
+  options.inputs[0].alignByStamp = speedByStamp;
+  Core core(makeTrain(), options);
+  core.advanceTo(1.05, out);
+  return core;
+}
+
+TEST(FusionCoreStamps, APeriodIsEstimatedOnlyAfterItsEndPlusTheLag) {
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.12, out);
+  EXPECT_TRUE(out.estimates.empty());  // period 1 ended at 1.1 but waits until 1.15
+  core.advanceTo(1.15, out);
+  ASSERT_EQ(out.estimates.size(), 1u);
+  EXPECT_NEAR(out.estimates[0].time, 1.1, 1e-12);  // the estimate refers to the period's end
+  core.advanceTo(1.25, out);
+  ASSERT_EQ(out.estimates.size(), 2u);
+  EXPECT_NEAR(out.estimates[1].time, 1.2, 1e-12);
+}
+
+TEST(FusionCoreStamps, ADelayedValueCountsForThePeriodOfItsStamp) {
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.12, out);
+  EXPECT_EQ(core.addMeasurement(0, 1.12, 3.0, std::nullopt, 1.08), Rejection::None);
+  core.advanceTo(1.15, out);
+  Train reference = makeTrain();
+  reference.estimate(speedOnly(3.0));
+  expectSameBelief(out.estimates.at(0), reference);
+  EXPECT_EQ(out.estimates[0].presentInputs, 1);
+}
+
+TEST(FusionCoreStamps, ByArrivalTheSameValueCountsForTheNextPeriod) {
+  Collector out;
+  Core core = makeStartedCore(out, false);
+  core.advanceTo(1.12, out);
+  core.addMeasurement(0, 1.12, 3.0, std::nullopt, 1.08);
+  core.advanceTo(1.25, out);
+  Train reference = makeTrain();
+  reference.estimate(Measurement<2>::missing());
+  expectSameBelief(out.estimates.at(0), reference);
+  reference.estimate(speedOnly(3.0));
+  expectSameBelief(out.estimates.at(1), reference);
+}
+
+TEST(FusionCoreStamps, AValueStampedInAnEstimatedPeriodIsDroppedAndCounted) {
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.16, out);  // period 1 ([1.0, 1.1)) is estimated
+  EXPECT_EQ(core.addMeasurement(0, 1.16, 3.0, std::nullopt, 1.09), Rejection::TooLate);
+  EXPECT_EQ(core.counters(0).late, 1u);
+  EXPECT_EQ(core.counters(0).dropped(), 1u);
+  // Stamped in the open period 2: accepted.
+  EXPECT_EQ(core.addMeasurement(0, 1.16, 3.0, std::nullopt, 1.11), Rejection::None);
+  core.advanceTo(1.25, out);
+  EXPECT_EQ(core.counters(0).used, 1u);
+}
+
+TEST(FusionCoreStamps, WithoutLagAValueStampedBeforeTheBoundaryIsLate) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.inputs.resize(2);
+  options.inputs[0].alignByStamp = true;
+  Core core(makeTrain(), options);
+  Collector out;
+  core.advanceTo(1.0, out);
+  core.advanceTo(1.101, out);
+  EXPECT_EQ(core.addMeasurement(0, 1.101, 3.0, std::nullopt, 1.099), Rejection::TooLate);
+}
+
+TEST(FusionCoreStamps, InputsByArrivalUseThePeriodTheyArriveIn) {
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.12, out);
+  core.addMeasurement(1, 1.12, 0.7, std::nullopt, 1.05);  // input 1 is aligned by arrival
+  core.advanceTo(1.25, out);
+  Train reference = makeTrain();
+  reference.estimate(Measurement<2>::missing());
+  expectSameBelief(out.estimates.at(0), reference);
+  reference.estimate(accelerationOnly(0.7));
+  expectSameBelief(out.estimates.at(1), reference);
+}
+
+TEST(FusionCoreStamps, ControlsApplyFromThePeriodTheyArriveIn) {
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.08, out);
+  core.addControl(0, 1.0);  // period 1
+  core.advanceTo(1.12, out);
+  core.addControl(0, 5.0);  // period 2: period 1, estimated at 1.15, still uses 1
+  core.advanceTo(1.25, out);
+  ASSERT_EQ(out.estimates.size(), 2u);
+  Train reference = makeTrain();
+  reference.setControl(Vector<1>(1.0));
+  reference.estimate(Measurement<2>::missing());
+  expectSameBelief(out.estimates[0], reference);
+  reference.setControl(Vector<1>(5.0));
+  reference.estimate(Measurement<2>::missing());
+  expectSameBelief(out.estimates[1], reference);
+}
+
+TEST(FusionCoreStamps, AStampBeyondTheOpenPeriodsIsUsedInTheNewestAndCounted) {
+  // floor(0.05 / 0.1) + 3 = 3 slots, rounded up to 4: open periods 1 to 4 ([1.3, 1.4)).
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.12, out);
+  EXPECT_EQ(core.addMeasurement(0, 1.12, 3.0, std::nullopt, 7.0), Rejection::None);
+  EXPECT_EQ(core.counters(0).aheadOfClock, 1u);
+  core.advanceTo(1.45, out);
+  ASSERT_EQ(out.estimates.size(), 4u);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(out.estimates[k].presentInputs, 0) << k;
+  EXPECT_EQ(out.estimates[3].presentInputs, 1);
+}
+
+TEST(FusionCoreStamps, AStampAheadOfTheClockWithinTheOpenPeriodsKeepsItsPeriod) {
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.12, out);
+  EXPECT_EQ(core.addMeasurement(0, 1.12, 3.0, std::nullopt, 1.27), Rejection::None);  // period 3
+  EXPECT_EQ(core.counters(0).aheadOfClock, 0u);
+  core.advanceTo(1.35, out);
+  ASSERT_EQ(out.estimates.size(), 3u);
+  EXPECT_EQ(out.estimates[1].presentInputs, 0);
+  EXPECT_EQ(out.estimates[2].presentInputs, 1);
+}
+
+TEST(FusionCoreStamps, AMessageWithoutStampFallsBackToItsArrival) {
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.12, out);
+  core.addMeasurement(0, 1.12, 3.0);  // NaN stamp: period 2 by arrival
+  core.advanceTo(1.25, out);
+  EXPECT_EQ(out.estimates.at(0).presentInputs, 0);
+  EXPECT_EQ(out.estimates.at(1).presentInputs, 1);
+}
+
+TEST(FusionCoreStamps, TimeRunningBackwardsRestartsOneLagBeforeTheNewTime) {
+  Collector out;
+  Core core = makeStartedCore(out);
+  core.advanceTo(1.12, out);
+  core.addMeasurement(0, 1.12, 3.0, std::nullopt, 1.11);
+  core.advanceTo(1.5, out);
+  EXPECT_EQ(core.advanceTo(0.35, out), sf_filter::ClockEvent::JumpedBackwards);
+  out.estimates.clear();
+  core.advanceTo(0.45, out);
+  ASSERT_EQ(out.estimates.size(), 1u);
+  EXPECT_NEAR(out.estimates[0].time, 0.4, 1e-12);
+  // Stamps restart too: an older stamp than before the jump is accepted.
+  EXPECT_EQ(core.addMeasurement(0, 0.46, 1.0, std::nullopt, 0.41), Rejection::None);
+}
+
+TEST(FusionCoreStamps, RefusesANegativeOrNonFiniteLag) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.maxMeasurementLag = -0.01;
+  EXPECT_THROW(Core(makeTrain(), options), estimation::ParameterError);
+  options.maxMeasurementLag = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(Core(makeTrain(), options), estimation::ParameterError);
+}
+
+}  // namespace

@@ -1,0 +1,90 @@
+// Tests of the run-time overrides of the per-input options (node parameters, replay options):
+// what they change and what they refuse.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sf_filter/core/input_overrides.hpp"
+
+namespace {
+
+using sf_filter::AlignmentPolicy;
+using sf_filter::InputCapabilities;
+using sf_filter::InputOptions;
+
+InputCapabilities predictingFilter() {
+  InputCapabilities can;
+  can.canPredict = true;
+  can.hasStamp = {true, false};
+  can.names = {"vision x", "wheel data"};
+  return can;
+}
+
+template <class F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(InputOverrides, ChangeTheNamedInputOnly) {
+  std::vector<InputOptions> inputs(2);
+  const InputCapabilities can = predictingFilter();
+  sf_filter::overrideAlignment(inputs, 1, "FILL 0.001 5 0.2", can);
+  sf_filter::overrideGate(inputs, 0, 6.63, can);
+  sf_filter::overrideAlignByStamp(inputs, 0, true, can);
+  EXPECT_EQ(inputs[0].alignment, AlignmentPolicy::average());
+  EXPECT_EQ(inputs[1].alignment, AlignmentPolicy::fill(0.001, 5, 0.2));
+  EXPECT_DOUBLE_EQ(inputs[0].gateThreshold, 6.63);
+  EXPECT_FALSE(inputs[1].gated());
+  EXPECT_TRUE(inputs[0].alignByStamp);
+  EXPECT_FALSE(inputs[1].alignByStamp);
+  sf_filter::overrideGate(inputs, 0, 0.0, can);  // 0 removes the gate
+  EXPECT_FALSE(inputs[0].gated());
+}
+
+TEST(InputOverrides, RefuseWhatTheInputOrMethodCannotDo) {
+  std::vector<InputOptions> inputs(2);
+  InputCapabilities can = predictingFilter();
+  EXPECT_EQ(errorOf([&] { sf_filter::overrideAlignment(inputs, 2, "LAST", can); }),
+            "input index 2 is out of range, expected 0 to 1");
+  EXPECT_EQ(errorOf([&] { sf_filter::overrideAlignByStamp(inputs, 1, true, can); }),
+            "input 1 (wheel data): its message type has no header.stamp to align by");
+  EXPECT_NE(errorOf([&] {
+              sf_filter::overrideGate(inputs, 0, -1.0, can);
+            }).find("gate threshold must be a finite number > 0, or 0 for no gate"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] {
+              sf_filter::overrideAlignment(inputs, 0, "HOLD CUBIC 1", can);
+            }).find("unknown hold primitive 'CUBIC'"),
+            std::string::npos);
+  can.canPredict = false;  // an averaging method
+  EXPECT_NE(errorOf([&] {
+              sf_filter::overrideGate(inputs, 0, 9.0, can);
+            }).find("input 0 (vision x): a gate needs the predicted measurement"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] {
+              sf_filter::overrideAlignment(inputs, 1, "FILL 0.001 5", can);
+            }).find("input 1 (wheel data): FILL needs the predicted measurement"),
+            std::string::npos);
+  EXPECT_NO_THROW(sf_filter::overrideGate(inputs, 0, 0.0, can));
+  EXPECT_NO_THROW(sf_filter::overrideAlignment(inputs, 1, "HOLD TAYLOR 1", can));
+  // Nothing refused was applied.
+  EXPECT_EQ(inputs[0].alignment, AlignmentPolicy::average());
+  EXPECT_FALSE(inputs[0].gated());
+}
+
+TEST(InputOverrides, LagMustBeFiniteAndNotNegative) {
+  EXPECT_DOUBLE_EQ(sf_filter::checkedLagMs(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(sf_filter::checkedLagMs(25.0), 25.0);
+  EXPECT_THROW(sf_filter::checkedLagMs(-1.0), std::invalid_argument);
+  EXPECT_THROW(sf_filter::checkedLagMs(NAN), std::invalid_argument);
+}
+
+}  // namespace
