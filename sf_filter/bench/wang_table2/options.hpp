@@ -19,7 +19,7 @@
 namespace wang_table2 {
 
 struct Options {
-  int runs = 200;
+  int runs = 100;
   std::uint64_t seed = 1;
   Parameters parameters;
   bool help = false;
@@ -28,7 +28,7 @@ struct Options {
 inline const char* usage() {
   return "usage: sf_wang_table2 [options]\n"
          "Monte Carlo reproduction of Wang et al.'s Table II (doc/wang_table2.md).\n"
-         "  --runs N            Monte Carlo runs, at least 2 (default 200)\n"
+         "  --runs N            Monte Carlo runs, at least 2 (default 100)\n"
          "  --seed N            seed of the first run; run r uses seed + r (default 1)\n"
          "  --duration S        simulated seconds per run (default 30)\n"
          "  --warmup S          seconds at the start of a run left out of the figures "

@@ -25,7 +25,7 @@ std::string errorOf(const std::vector<std::string>& args) {
 
 TEST(Options, DefaultsAreThePapersParameters) {
   const Options o = parseOptions({});
-  EXPECT_EQ(o.runs, 200);
+  EXPECT_EQ(o.runs, 100);
   EXPECT_EQ(o.seed, 1u);
   EXPECT_EQ(o.parameters.omega, 0.001);
   EXPECT_EQ(o.parameters.fillSamples, 5);
