@@ -100,6 +100,33 @@ TEST(FusionCore, TimeRunningBackwardsResetsTheFilter) {
   EXPECT_NEAR(out.estimates[0].time, 0.15, 1e-12);
 }
 
+TEST(FusionCore, TwoMessagesAtAPeriodEndAreNoJumpBackwards) {
+  // ROS times near 1.7e9 s resolve to 2.4e-7 s. With a 1 ms period starting at 1.7e9 s the
+  // start of period 51, computed as its end minus the period, rounds above the end of period
+  // 50: (t0 + 51 p) - p > t0 + 50 p. A second message at that end (two sensors sampled at the
+  // same instant, or one message and the replay's bag clock) must not reset the filter.
+  Core::Options options;
+  options.period = 0.001;
+  Core core(makeTrain(), options);
+  Collector out;
+  const double t0 = 1.7e9;
+  const double end50 = t0 + 50 * 0.001;
+  ASSERT_GT((t0 + 51 * 0.001) - 0.001, end50) << "the rounding this test is about";
+  core.advanceTo(t0, out);
+  EXPECT_EQ(core.advanceTo(end50, out), sf_filter::ClockEvent::Normal);
+  core.addMeasurement(0, end50, 4.0);
+  EXPECT_EQ(core.advanceTo(end50, out), sf_filter::ClockEvent::Normal);
+  core.addMeasurement(1, end50, 1.0);
+  EXPECT_EQ(core.clockResets(), 0u);
+  ASSERT_EQ(out.estimates.size(), 50u);
+  // Both values belong to period 51.
+  core.advanceTo(t0 + 51 * 0.001, out);
+  ASSERT_EQ(out.estimates.size(), 51u);
+  EXPECT_EQ(out.estimates.back().presentInputs, 2);
+  // A real jump back, by more than the tolerance, still resets.
+  EXPECT_EQ(core.advanceTo(end50 - 1e-5, out), sf_filter::ClockEvent::JumpedBackwards);
+}
+
 TEST(FusionCore, DropsAndCountsNonFiniteValuesAndBadVariances) {
   Core core = makeCore();
   Collector out;

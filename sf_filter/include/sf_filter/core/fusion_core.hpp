@@ -112,7 +112,7 @@ class FusionCore {
       restartSchedule(now);
       return ClockEvent::Started;
     }
-    if (now < schedule_.currentStart() + lag) {
+    if (schedule_.before(now - lag)) {
       reset();
       restartSchedule(now);
       ++clockResets_;

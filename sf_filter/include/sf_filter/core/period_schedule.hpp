@@ -47,6 +47,11 @@ class PeriodSchedule {
     const double end = currentEnd();
     return t + kTolerance < end && t + kTolerance >= end - period_;
   }
+  /// Whether `time` lies before the current period by more than the tolerance: the clock ran
+  /// backwards. Within the tolerance it does not: a second message at the time of a period's
+  /// end that the first one made due belongs to the next period, although currentStart(),
+  /// computed as end - period, can round above that time (by 2.4e-7 s at 1.7e9 s).
+  bool before(double time) const { return started_ && time + kTolerance < currentStart(); }
   void advance() { ++index_; }
 
   /// Number of whole periods between the current end and `now` (0 when not due).
