@@ -257,6 +257,8 @@ class FusionCore {
   bool timedOut(Index input) const { return timedOut(input, clock_); }
   /// The last clock reading passed to advanceTo().
   double clock() const { return clock_; }
+  /// The clock reading the schedule (re)started at.
+  double startTime() const { return startTime_; }
   /// The NIS of the recent periods (empty unless Options::nisWindow > 0 and the filter
   /// predicts its measurement).
   const NisWindow& nis() const { return nis_; }

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <utility>
 
 namespace sf_filter {
 
@@ -70,5 +72,22 @@ struct InputCounters {
     return nonFinite + badVariance + outOfRange + outOfOrder + duplicate + future + late;
   }
 };
+
+/// The non-zero drop counts by reason, e.g. "2 not finite, 1 out of range" ("none" if none).
+inline std::string dropReasons(const InputCounters& c) {
+  const std::pair<const char*, std::uint64_t> reasons[] = {{"not finite", c.nonFinite},
+                                                           {"bad variance", c.badVariance},
+                                                           {"out of range", c.outOfRange},
+                                                           {"out of order", c.outOfOrder},
+                                                           {"duplicate stamp", c.duplicate},
+                                                           {"future stamp", c.future},
+                                                           {"late", c.late}};
+  std::string text;
+  for (const auto& r : reasons) {
+    if (r.second == 0) continue;
+    text += (text.empty() ? "" : ", ") + std::to_string(r.second) + " " + r.first;
+  }
+  return text.empty() ? "none" : text;
+}
 
 }  // namespace sf_filter

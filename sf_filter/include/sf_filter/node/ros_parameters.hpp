@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -159,6 +160,71 @@ inline void loadInputParameters(const ros::NodeHandle& pnh, std::vector<InputOpt
       throw ParameterOverrideError(std::string("parameter ~max_measurement_lag: ") + e.what());
     }
   }
+}
+
+/// The node's settings for faults and diagnostics beyond the per-input options.
+struct FaultSettings {
+  double maxFutureStampMs = kDefaultMaxFutureStampMs;  ///< ~max_future_stamp
+  int nisWindow = 100;                                 ///< ~nis_window [periods], 0: off
+  double diagnosticPeriod = 1.0;                       ///< ~diagnostic_period [s]
+};
+
+/// Applies the fault parameters (doc/filter_node.md, "Diagnostics"):
+///   ~input_timeout      one timeout per input in ms, 0 for none
+///   ~input_range        one [minimum, maximum] per input, [] for none
+///   ~max_future_stamp   ms >= 0 a stamp may be ahead of the clock
+///   ~nis_window         periods >= 0 the NIS is averaged over (0: not computed)
+///   ~diagnostic_period  s > 0 between diagnostic messages
+inline FaultSettings loadFaultParameters(const ros::NodeHandle& pnh,
+                                         std::vector<InputOptions>& inputs,
+                                         const InputCapabilities& can) {
+  const std::size_t m = inputs.size();
+  detail::forEachInputEntry(pnh, "input_timeout", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+    double ms = 0.0;
+    try {
+      ms = detail::toDouble(v, "input_timeout");
+    } catch (const ParameterOverrideError&) {
+      throw std::invalid_argument("expected a number of ms (0: no timeout)");
+    }
+    overrideTimeout(inputs, k, ms, can);
+  });
+  detail::forEachInputEntry(pnh, "input_range", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+    const char* expected = "expected [minimum, maximum] or [] for no range";
+    if (v.getType() != XmlRpc::XmlRpcValue::TypeArray || (v.size() != 0 && v.size() != 2)) {
+      throw std::invalid_argument(expected);
+    }
+    if (v.size() == 0) {
+      overrideRange(inputs, k, -std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity(), can);
+      return;
+    }
+    try {
+      overrideRange(inputs, k, detail::toDouble(v[0], "input_range"),
+                    detail::toDouble(v[1], "input_range"), can);
+    } catch (const ParameterOverrideError&) {
+      throw std::invalid_argument(expected);
+    }
+  });
+  FaultSettings settings;
+  const auto refuse = [](const std::string& name, const std::string& why) {
+    throw ParameterOverrideError("parameter ~" + name + ": " + why);
+  };
+  if (readScalarParameter(pnh, "max_future_stamp", settings.maxFutureStampMs)) {
+    try {
+      checkedFutureStampMs(settings.maxFutureStampMs);
+    } catch (const std::invalid_argument& e) {
+      refuse("max_future_stamp", e.what());
+    }
+  }
+  if (readScalarParameter(pnh, "nis_window", settings.nisWindow) &&
+      !(settings.nisWindow >= 0 && settings.nisWindow <= 1000000)) {
+    refuse("nis_window", "expected a number of periods from 0 (off) to 1000000");
+  }
+  if (readScalarParameter(pnh, "diagnostic_period", settings.diagnosticPeriod) &&
+      !(settings.diagnosticPeriod > 0.0 && settings.diagnosticPeriod <= 3600.0)) {
+    refuse("diagnostic_period", "expected a number of seconds > 0 (at most 3600)");
+  }
+  return settings;
 }
 
 /// The header's parameters with the private ROS parameters applied. `Parameters` is the
