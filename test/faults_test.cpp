@@ -386,6 +386,20 @@ TEST(Faults, AClockJumpBackResetsTheFilterAndEstimatesGoOn) {
   EXPECT_EQ(valueOf(*warn, "estimation failures"), "0");
 }
 
+TEST(Faults, APausedClockIsReportedAndEstimatesResumeWithIt) {
+  Harness& h = *harness;
+  h.run(3, [&](double t) { h.healthy(t); });
+  h.mark();  // the clock stands still from here while the reports keep coming
+  const auto warn = h.find(kEstimationStatus, [](const DiagnosticStatus& s) {
+    return s.level == DiagnosticStatus::WARN &&
+           s.message.find("clock stopped at") != std::string::npos;
+  });
+  ASSERT_TRUE(warn) << "the stopped clock was not reported";
+  h.run(3, [&](double t) { h.healthy(t); });
+  EXPECT_TRUE(
+      h.waitFor([&] { return h.lastEstimate().header.stamp.toSec() > h.now() - kPeriod; }, 5.0));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

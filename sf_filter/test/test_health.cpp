@@ -137,13 +137,15 @@ TEST(EstimationHealth, WarnsOnAClockResetAndOnAStoppedClock) {
   EXPECT_EQ(h.level, HealthLevel::Warn);
   EXPECT_EQ(h.message, "clock jumped backwards: filter reset");
   EXPECT_EQ(h.value("clock resets"), "1");
-  // One second of clock without an estimate (the schedule cannot have stalled, so fake the
-  // totals): WARN.
+  // ROS time stood still between two reports (a paused bag): WARN.
   before.clockResets = 1;
-  before.estimates = core.estimateCount();
-  h = sf_filter::estimationHealth(estimationOf(core, before, 1.0), core.nis());
+  auto e = estimationOf(core, before, 0.0);
+  EXPECT_EQ(sf_filter::estimationHealth(e, core.nis()).level, HealthLevel::Ok);
+  e.clockStopped = true;
+  e.clock = 0.5;
+  h = sf_filter::estimationHealth(e, core.nis());
   EXPECT_EQ(h.level, HealthLevel::Warn);
-  EXPECT_EQ(h.message, "no estimate for 1 s");
+  EXPECT_EQ(h.message, "clock stopped at 0.5 s: no estimates");
 }
 
 TEST(EstimationHealth, FlagsAnInconsistentNisAndErrsOnAFailure) {

@@ -12,8 +12,8 @@
 //   ERROR  an estimation step failed (the filter was reset), or the covariance is not finite
 //   WARN   the clock jumped backwards (filter reset); the NIS window is full and its mean
 //          lies outside the chi-square bounds (filter inconsistent: Q or R mistuned); the mean
-//          estimation step took longer than the period; the clock advanced by more than two
-//          periods without an estimate
+//          estimation step took longer than the period; ROS time did not advance since the
+//          previous report (a paused bag or simulation: no estimates)
 //   OK     otherwise
 #pragma once
 
@@ -133,6 +133,8 @@ struct EstimationInterval {
   double maxStepSeconds = 0.0;
   double covarianceTrace = 0.0;
   std::string lastFailure;
+  bool clockStopped = false;  ///< ROS time did not advance since the previous report
+  double clock = 0.0;         ///< ROS time at the report
 };
 
 inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindow& nis) {
@@ -158,8 +160,9 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
   if (steps > 0 && stepSeconds > e.period) {
     s.raise(HealthLevel::Warn, "estimation step takes longer than the period");
   }
-  if (steps == 0 && c.failures == b.failures && e.interval > 2.0 * e.period) {
-    s.raise(HealthLevel::Warn, "no estimate for " + health_detail::format(e.interval) + " s");
+  if (e.clockStopped) {
+    s.raise(HealthLevel::Warn,
+            "clock stopped at " + health_detail::format(e.clock) + " s: no estimates");
   }
   if (s.message.empty()) s.message = "ok";
   s.add("estimates", c.estimates);

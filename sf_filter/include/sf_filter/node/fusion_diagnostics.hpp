@@ -47,6 +47,7 @@ class FusionDiagnostics {
     }
     beforeEstimation_ = totals();
     previousClock_ = core_.clock();
+    previousRosTime_ = ros::Time::now().toSec();
     previousResets_ = core_.clockResets();
   }
 
@@ -98,6 +99,8 @@ class FusionDiagnostics {
     e.maxStepSeconds = core_.maxStepSeconds();
     e.covarianceTrace = core_.lastEstimate().covariance.trace();
     e.lastFailure = core_.lastFailure();
+    e.clock = ros::Time::now().toSec();
+    e.clockStopped = !std::isnan(previousRosTime_) && e.clock == previousRosTime_;
     fill(estimationHealth(e, core_.nis()), s);
   }
 
@@ -106,6 +109,7 @@ class FusionDiagnostics {
   std::vector<InputCounters> before_;
   EstimationTotals beforeEstimation_;
   double previousClock_ = std::numeric_limits<double>::quiet_NaN();  ///< NaN: no report yet
+  double previousRosTime_ = std::numeric_limits<double>::quiet_NaN();
   std::uint64_t previousResets_ = 0;
   ros::WallTimer timer_;
 };
