@@ -11,8 +11,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -31,9 +31,12 @@ using diagnostic_msgs::DiagnosticStatus;
 constexpr double kPeriod = 0.1;
 constexpr double kSpeed = 2.0;           // the train's true speed [m/s]
 constexpr double kSpeedVariance = 0.25;  // what the speedometer's messages say (sigma 0.5)
-const char* const kSpeedStatus = "input 0 (faults/speed";
-const char* const kAccelerationStatus = "input 1 (faults/acceleration";
-const char* const kEstimationStatus = ": estimation";
+// Status names start with the node's name (diagnostic_updater); the second node, with a
+// mistuned R, is /mistuned/faults_kf.
+const char* const kSpeedStatus = "faults_kf: input 0 (faults/speed";
+const char* const kAccelerationStatus = "faults_kf: input 1 (faults/acceleration";
+const char* const kEstimationStatus = "faults_kf: estimation";
+const char* const kMistunedStatus = "mistuned/faults_kf: estimation";
 
 /// The value of `key` in a status ("" if absent).
 std::string valueOf(const DiagnosticStatus& s, const std::string& key) {
@@ -56,7 +59,7 @@ class Harness {
     diagnostics_ = nh_.subscribe("/diagnostics", 1000, &Harness::onDiagnostics, this);
     estimates_ = nh_.subscribe("/faults/estimate/speed", 1000, &Harness::onEstimate, this);
     setClock(now_);
-    waitFor([&] { return speed_.getNumSubscribers() > 0 && estimates_.getNumPublishers() > 0; },
+    waitFor([&] { return speed_.getNumSubscribers() >= 2 && estimates_.getNumPublishers() > 0; },
             30.0);
     ros::WallDuration(0.5).sleep();  // the node starts its schedule at the first clock
   }
@@ -112,7 +115,7 @@ class Harness {
   /// (Re)advertises the accelerometer and waits until the node is connected.
   void advertiseAcceleration() {
     acceleration_ = nh_.advertise<geometry_msgs::Vector3Stamped>("/faults/acceleration", 50);
-    ASSERT_TRUE(waitFor([&] { return acceleration_.getNumSubscribers() > 0; }, 10.0));
+    ASSERT_TRUE(waitFor([&] { return acceleration_.getNumSubscribers() >= 2; }, 10.0));
   }
   void shutdownAcceleration() { acceleration_.shutdown(); }
 
@@ -132,7 +135,7 @@ class Harness {
     mark_ = history_.size();
   }
 
-  /// The first status named like `name` received after mark() that satisfies `accept`,
+  /// The first status whose name starts with `name` received after mark() that satisfies `accept`,
   /// waiting up to 3 s of wall time (15 reports) for it.
   std::unique_ptr<DiagnosticStatus> find(
       const std::string& name, const std::function<bool(const DiagnosticStatus&)>& accept) {
@@ -141,7 +144,7 @@ class Harness {
     waitFor(
         [&] {
           for (; next < history_.size(); ++next) {
-            if (history_[next].name.find(name) != std::string::npos && accept(history_[next])) {
+            if (history_[next].name.rfind(name, 0) == 0 && accept(history_[next])) {
               found = std::make_unique<DiagnosticStatus>(history_[next]);
               return true;
             }
@@ -151,7 +154,7 @@ class Harness {
         3.0);
     return found;
   }
-  /// The newest status named like `name`, after one more report.
+  /// The newest status whose name starts with `name`, after one more report.
   DiagnosticStatus latest(const std::string& name) {
     mark();
     auto s = find(name, [](const DiagnosticStatus&) { return true; });
@@ -398,6 +401,32 @@ TEST(Faults, APausedClockIsReportedAndEstimatesResumeWithIt) {
   h.run(3, [&](double t) { h.healthy(t); });
   EXPECT_TRUE(
       h.waitFor([&] { return h.lastEstimate().header.stamp.toSec() > h.now() - kPeriod; }, 5.0));
+}
+
+TEST(Faults, TheNisFlagsTheMistunedFilterAndPassesTheTunedOne) {
+  Harness& h = *harness;
+  // Sensor noise as the configuration says (speed sigma 0.5, its messages say so too;
+  // acceleration sigma 0.2, R = 0.04). The second node believes R(1,1) = 0.0004.
+  std::mt19937 rng(3);
+  std::normal_distribution<double> speedNoise(0.0, 0.5), accelerationNoise(0.0, 0.2);
+  h.run(40, [&](double t) {
+    h.sendSpeed(t, kSpeed + speedNoise(rng));
+    h.sendAcceleration(t, accelerationNoise(rng));
+  });
+  h.mark();
+  const auto tuned = h.find(kEstimationStatus, [](const DiagnosticStatus& s) {
+    return valueOf(s, "NIS consistent") != "not judged (window not full)";
+  });
+  ASSERT_TRUE(tuned);
+  EXPECT_EQ(valueOf(*tuned, "NIS consistent"), "true")
+      << valueOf(*tuned, "NIS mean") << " not in [" << valueOf(*tuned, "NIS lower bound (2.5 %)")
+      << ", " << valueOf(*tuned, "NIS upper bound (97.5 %)") << "]";
+  const auto mistuned = h.find(kMistunedStatus, [](const DiagnosticStatus& s) {
+    return s.level == DiagnosticStatus::WARN &&
+           s.message.find("filter inconsistent") != std::string::npos;
+  });
+  ASSERT_TRUE(mistuned) << "the mistuned filter was not flagged";
+  EXPECT_GT(numberOf(*mistuned, "NIS mean"), numberOf(*mistuned, "NIS upper bound (97.5 %)"));
 }
 
 }  // namespace

@@ -33,6 +33,15 @@ inline double toDouble(const XmlRpc::XmlRpcValue& v, const std::string& name) {
                                ": expected numbers, found a non-numeric entry");
 }
 
+/// One numeric entry of a per-input list; std::invalid_argument(`expected`) if it is not.
+inline double numberEntry(const XmlRpc::XmlRpcValue& v, const char* expected) {
+  if (v.getType() != XmlRpc::XmlRpcValue::TypeDouble &&
+      v.getType() != XmlRpc::XmlRpcValue::TypeInt) {
+    throw std::invalid_argument(expected);
+  }
+  return toDouble(v, "");
+}
+
 }  // namespace detail
 
 /// Reads ~name into `out` (rows x cols) when it is set: a flat row-major list of rows*cols
@@ -139,13 +148,7 @@ inline void loadInputParameters(const ros::NodeHandle& pnh, std::vector<InputOpt
     overrideAlignment(inputs, k, static_cast<std::string>(v), can);
   });
   detail::forEachInputEntry(pnh, "input_gate", m, [&](long k, XmlRpc::XmlRpcValue& v) {
-    double threshold = 0.0;
-    try {
-      threshold = detail::toDouble(v, "input_gate");
-    } catch (const ParameterOverrideError&) {
-      throw std::invalid_argument("expected a number (0: no gate)");
-    }
-    overrideGate(inputs, k, threshold, can);
+    overrideGate(inputs, k, detail::numberEntry(v, "expected a number (0: no gate)"), can);
   });
   detail::forEachInputEntry(pnh, "align_by_stamp", m, [&](long k, XmlRpc::XmlRpcValue& v) {
     if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
@@ -180,13 +183,8 @@ inline FaultSettings loadFaultParameters(const ros::NodeHandle& pnh,
                                          const InputCapabilities& can) {
   const std::size_t m = inputs.size();
   detail::forEachInputEntry(pnh, "input_timeout", m, [&](long k, XmlRpc::XmlRpcValue& v) {
-    double ms = 0.0;
-    try {
-      ms = detail::toDouble(v, "input_timeout");
-    } catch (const ParameterOverrideError&) {
-      throw std::invalid_argument("expected a number of ms (0: no timeout)");
-    }
-    overrideTimeout(inputs, k, ms, can);
+    overrideTimeout(inputs, k, detail::numberEntry(v, "expected a number of ms (0: no timeout)"),
+                    can);
   });
   detail::forEachInputEntry(pnh, "input_range", m, [&](long k, XmlRpc::XmlRpcValue& v) {
     const char* expected = "expected [minimum, maximum] or [] for no range";
@@ -198,12 +196,8 @@ inline FaultSettings loadFaultParameters(const ros::NodeHandle& pnh,
                     std::numeric_limits<double>::infinity(), can);
       return;
     }
-    try {
-      overrideRange(inputs, k, detail::toDouble(v[0], "input_range"),
-                    detail::toDouble(v[1], "input_range"), can);
-    } catch (const ParameterOverrideError&) {
-      throw std::invalid_argument(expected);
-    }
+    overrideRange(inputs, k, detail::numberEntry(v[0], expected),
+                  detail::numberEntry(v[1], expected), can);
   });
   FaultSettings settings;
   const auto refuse = [](const std::string& name, const std::string& why) {
