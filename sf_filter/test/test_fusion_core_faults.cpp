@@ -416,6 +416,20 @@ TEST(FusionCoreNis, TheNisOfAPeriodIsTheInnovationsMahalanobisDistance) {
   EXPECT_EQ(core.nis().size(), 1u);
 }
 
+TEST(FusionCoreNis, TheCheckLeavesTheEstimatesUnchanged) {
+  const TrainRun run(100, 9);
+  Core without = makeCore(std::vector<InputOptions>(2)),
+       with = makeCore(std::vector<InputOptions>(2), 50);
+  const auto a = replay(without, run), b = replay(with, run);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].state, b[k].state) << k;
+    EXPECT_EQ(a[k].covariance, b[k].covariance) << k;
+  }
+  EXPECT_EQ(without.nis().size(), 0u);
+  EXPECT_EQ(with.nis().size(), 50u);
+}
+
 /// The NIS window's verdict on a filter run on the simulated train with R scaled by `scale`
 /// (the window covers periods 101-400, after the start-up transient).
 sf_filter::NisWindow nisOfRun(double scale) {

@@ -426,7 +426,15 @@ class FusionCore {
         measurement_.value(i) = v ? v->value : 0.0;
         measurement_.variance(i) = v && v->variance ? *v->variance : 0.0;
       }
-      if (nis_.enabled() && present > 0) addNis(prediction());
+      if (nis_.enabled() && present > 0) {
+        // The check must never change the estimate: a prediction it alone asked for and that
+        // fails only skips the period's NIS (the step itself then decides about a failure).
+        try {
+          addNis(prediction());
+        } catch (const estimation::EstimationError&) {
+          ++nisFailures_;
+        }
+      }
       const auto begin = std::chrono::steady_clock::now();
       filter_.estimate(measurement_);
       const double step =
@@ -447,21 +455,16 @@ class FusionCore {
     schedule_.advance();
   }
 
-  /// The NIS of the period's measured (not substituted) entries, into the window. An
-  /// innovation covariance that is not positive definite only skips the period's NIS: the
-  /// estimation step itself decides whether that is a failure.
+  /// The NIS of the period's measured (not substituted) entries, into the window. Throws
+  /// NumericalError when the innovation covariance is not positive definite.
   void addNis(const estimation::MeasurementPrediction<M>& prediction) {
     for (Index i = 0; i < inputCount(); ++i) {
       measured_.value(i) = measurement_.value(i);
       measured_.varianceGiven(i) = measurement_.varianceGiven(i);
       measured_.variance(i) = measurement_.variance(i);
     }
-    try {
-      nis_.add(estimation::squaredMahalanobisDistance(prediction, measured_),
-               static_cast<int>(measured_.availableCount()));
-    } catch (const estimation::NumericalError&) {
-      ++nisFailures_;
-    }
+    nis_.add(estimation::squaredMahalanobisDistance(prediction, measured_),
+             static_cast<int>(measured_.availableCount()));
   }
 
   void fillEstimate(double time, Index present, Index substituted) {
