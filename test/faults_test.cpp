@@ -8,6 +8,7 @@
 // one node; each leaves it healthy for the next.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -19,6 +20,7 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/TwistWithCovarianceStamped.h>
 #include <geometry_msgs/Vector3Stamped.h>
+#include <ros/master.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 
@@ -192,6 +194,20 @@ void expectEstimatesUpTo(Harness& h, double t) {
   EXPECT_TRUE(
       h.waitFor([&] { return std::abs(h.lastEstimate().header.stamp.toSec() - t) < 1e-6; }, 5.0))
       << "last estimate at " << h.lastEstimate().header.stamp.toSec() << ", expected " << t;
+}
+
+TEST(Faults, ANodeWithABadTimeoutParameterRefusesToStart) {
+  // /bad/faults_kf has ~input_timeout [-5, 0]: it must have exited without advertising
+  // anything (its fatal message names the parameter, see InputOverrides.Timeouts...).
+  const auto running = [] {
+    ros::V_string nodes;
+    ros::master::getNodes(nodes);
+    return std::find(nodes.begin(), nodes.end(), "/bad/faults_kf") != nodes.end();
+  };
+  EXPECT_TRUE(harness->waitFor([&] { return !running(); }, 10.0)) << "the node is running";
+  ros::master::V_TopicInfo topics;
+  ASSERT_TRUE(ros::master::getTopics(topics));
+  for (const auto& t : topics) EXPECT_NE(t.name.rfind("/bad/", 0), 0u) << t.name;
 }
 
 TEST(Faults, HealthySpeedometerIsOkAndAnAbsentTopicTimesOut) {
