@@ -195,6 +195,17 @@ long inputIndex(const std::string& text) {
   return index;
 }
 
+/// The replay summary's line per input: what it received, used, dropped (by reason), gated.
+template <class Core>
+void printInputCounters(const std::string& name, const Core& core) {
+  for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
+    const sf_filter::InputCounters& c = core.counters(i);
+    std::cout << name << ": input " << i << ": " << c.received << " received, " << c.used
+              << " used, dropped: " << sf_filter::dropReasons(c) << ", " << c.gated << " gated, "
+              << c.timedOutPeriods << " periods timed out" << std::endl;
+  }
+}
+
 /// Offline replay: `<node> --replay in.bag [--csv out.csv] [--bag out.bag] [options]`.
 int replayMain(int argc, char** argv) {
   const std::string program = argv[0];
@@ -329,12 +340,7 @@ int replayMain(int argc, char** argv) {
               << " gated, " << substituted << " substitutes, "
               << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
               << " us per estimation step, " << wall << " s in all" << std::endl;
-    for (sf_filter::Index i = 0; i < replay.core().inputCount(); ++i) {
-      const sf_filter::InputCounters& c = replay.core().counters(i);
-      std::cout << options.nodeName << ": input " << i << ": " << c.received << " received, "
-                << c.used << " used, dropped: " << sf_filter::dropReasons(c) << ", " << c.gated
-                << " gated, " << c.timedOutPeriods << " periods timed out" << std::endl;
-    }
+    printInputCounters(options.nodeName, replay.core());
     if (aligner) {
       std::cout << options.nodeName << ": " << aligner->transforms()
                 << " transforms read from the bag's /tf_static and /tf ("
