@@ -11,6 +11,7 @@
 //
 // Benchmarks (one iteration = one 100 ms period, 23 messages + 1 timer tick):
 //   FusionCore_period/UKF_nav3ctrl    (a) the whole period through FusionCore, estimate included
+//   FusionCore_period/UKF_nav3ctrl_nis100  (a) with the NIS window of the node's default
 //   UKF_nav3ctrl_step                 (b) the estimator alone: setControl + estimate on the
 //                                         same aligned data (period means) the core produces
 //   FusionCore_period/NullEstimator   the core around an estimator that does nothing: a direct
@@ -168,13 +169,16 @@ template <class Filter>
 struct CoreDriver {
   using Core = sf_filter::FusionCore<Filter>;
 
-  explicit CoreDriver(Filter filter) : core(std::move(filter), options()) {
+  /// `nisWindow`: Options::nisWindow (0: no NIS, as the core's default; the node uses 100).
+  explicit CoreDriver(Filter filter, std::size_t nisWindow = 0)
+      : core(std::move(filter), options(nisWindow)) {
     core.advanceTo(kEpoch, sink());  // starts the schedule: the first period ends at kEpoch + T
   }
 
-  static typename Core::Options options() {
+  static typename Core::Options options(std::size_t nisWindow) {
     typename Core::Options o;
     o.period = kPeriod;
+    o.nisWindow = nisWindow;
     return o;
   }
 
@@ -213,9 +217,9 @@ struct CoreDriver {
 
 /// Runs the drive in a loop; at its end the filter is reset outside the timed region.
 template <class Filter>
-void runPeriods(benchmark::State& state, Filter filter) {
+void runPeriods(benchmark::State& state, Filter filter, std::size_t nisWindow = 0) {
   const auto& d = drive();
-  CoreDriver<Filter> driver(std::move(filter));
+  CoreDriver<Filter> driver(std::move(filter), nisWindow);
   std::size_t k = 0, untimedAllocations = 0;
   const std::size_t before = sf_bench::heapAllocations();
   for (auto _ : state) {
@@ -240,6 +244,12 @@ void runPeriods(benchmark::State& state, Filter filter) {
 
 // (a) the whole period through FusionCore, estimate included.
 void FusionCore_period_UKF_nav3ctrl(benchmark::State& state) { runPeriods(state, makeUkf()); }
+
+// (a) with the NIS consistency check of the node's default (~nis_window 100): one more
+// unscented transform per period for the predicted measurement.
+void FusionCore_period_UKF_nav3ctrl_nis(benchmark::State& state) {
+  runPeriods(state, makeUkf(), 100);
+}
 
 // The core around an estimator that does nothing.
 void FusionCore_period_NullEstimator(benchmark::State& state) {
@@ -367,6 +377,7 @@ void AllocationCounter_check(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(FusionCore_period_UKF_nav3ctrl)->Name("FusionCore_period/UKF_nav3ctrl");
+BENCHMARK(FusionCore_period_UKF_nav3ctrl_nis)->Name("FusionCore_period/UKF_nav3ctrl_nis100");
 BENCHMARK(UKF_nav3ctrl_step)->Name("UKF_nav3ctrl_step");
 BENCHMARK(FusionCore_period_NullEstimator)->Name("FusionCore_period/NullEstimator");
 BENCHMARK(FusionCore_overhead_UKF_nav3ctrl)

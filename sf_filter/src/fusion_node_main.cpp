@@ -108,13 +108,16 @@ sf_filter::InputCapabilities inputCapabilities() {
   return can;
 }
 
-/// The fusion core's options: the period and the per-input options with the lag [ms].
+/// The fusion core's options: the period and the per-input options with the lag [ms]; stamps
+/// more than `maxFutureStampMs` ahead of the clock are dropped.
 sf_filter::FusionCore<sf_filter::generated::Filter>::Options coreOptions(
-    double periodMs, std::vector<sf_filter::InputOptions> inputs, double lagMs) {
+    double periodMs, std::vector<sf_filter::InputOptions> inputs, double lagMs,
+    double maxFutureStampMs = sf_filter::kDefaultMaxFutureStampMs) {
   sf_filter::FusionCore<sf_filter::generated::Filter>::Options options;
   options.period = periodMs / 1000.0;
   options.inputs = std::move(inputs);
   options.maxMeasurementLag = lagMs / 1000.0;
+  options.maxFutureStamp = maxFutureStampMs / 1000.0;
   return options;
 }
 
@@ -190,6 +193,17 @@ long inputIndex(const std::string& text) {
     throw std::invalid_argument("input index '" + text + "' is not an integer");
   }
   return index;
+}
+
+/// The replay summary's line per input: what it received, used, dropped (by reason), gated.
+template <class Core>
+void printInputCounters(const std::string& name, const Core& core) {
+  for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
+    const sf_filter::InputCounters& c = core.counters(i);
+    std::cout << name << ": input " << i << ": " << c.received << " received, " << c.used
+              << " used, dropped: " << sf_filter::dropReasons(c) << ", " << c.gated << " gated, "
+              << c.timedOutPeriods << " periods timed out" << std::endl;
+  }
 }
 
 /// Offline replay: `<node> --replay in.bag [--csv out.csv] [--bag out.bag] [options]`.
@@ -326,6 +340,7 @@ int replayMain(int argc, char** argv) {
               << " gated, " << substituted << " substitutes, "
               << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
               << " us per estimation step, " << wall << " s in all" << std::endl;
+    printInputCounters(options.nodeName, replay.core());
     if (aligner) {
       std::cout << options.nodeName << ": " << aligner->transforms()
                 << " transforms read from the bag's /tf_static and /tf ("
@@ -363,9 +378,13 @@ int main(int argc, char** argv) {
     std::vector<sf_filter::InputOptions> inputs = sf_config::defaultInputOptions();
     double lagMs = sf_config::kMaxMeasurementLagMs;
     sf_filter::loadInputParameters(pnh, inputs, lagMs, inputCapabilities());
-    node.emplace(nh, pnh, sf_filter::generated::makeFilter(parameters),
-                 coreOptions(parameters.estimation_period_ms, inputs, lagMs),
-                 describe(aligner ? &*aligner : nullptr));
+    const sf_filter::FaultSettings faults =
+        sf_filter::loadFaultParameters(pnh, inputs, inputCapabilities());
+    auto options =
+        coreOptions(parameters.estimation_period_ms, inputs, lagMs, faults.maxFutureStampMs);
+    options.nisWindow = static_cast<std::size_t>(faults.nisWindow);
+    node.emplace(nh, pnh, sf_filter::generated::makeFilter(parameters), options,
+                 describe(aligner ? &*aligner : nullptr), faults.diagnosticPeriod);
   } catch (const std::exception& e) {
     ROS_FATAL("%s: refusing to start: %s", ros::this_node::getName().c_str(), e.what());
     return EXIT_FAILURE;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -85,6 +86,43 @@ TEST(InputOverrides, LagMustBeFiniteAndNotNegative) {
   EXPECT_DOUBLE_EQ(sf_filter::checkedLagMs(25.0), 25.0);
   EXPECT_THROW(sf_filter::checkedLagMs(-1.0), std::invalid_argument);
   EXPECT_THROW(sf_filter::checkedLagMs(NAN), std::invalid_argument);
+}
+
+TEST(InputOverrides, TimeoutsInMillisecondsWithZeroForNone) {
+  std::vector<InputOptions> inputs(2);
+  const InputCapabilities can = predictingFilter();
+  sf_filter::overrideTimeout(inputs, 1, 250.0, can);
+  EXPECT_DOUBLE_EQ(inputs[1].timeout, 0.25);
+  EXPECT_FALSE(inputs[0].hasTimeout());
+  sf_filter::overrideTimeout(inputs, 1, 0.0, can);
+  EXPECT_FALSE(inputs[1].hasTimeout());
+  EXPECT_EQ(errorOf([&] { sf_filter::overrideTimeout(inputs, 0, -5.0, can); }),
+            "input 0 (vision x): timeout must be a finite number of ms > 0, or 0 for no timeout, "
+            "got -5.000000");
+  EXPECT_NE(errorOf([&] { sf_filter::overrideTimeout(inputs, 0, std::nan(""), can); }), "no error");
+  EXPECT_EQ(errorOf([&] { sf_filter::overrideTimeout(inputs, 3, 1.0, can); }),
+            "input index 3 is out of range, expected 0 to 1");
+}
+
+TEST(InputOverrides, RangesNeedMinimumBelowMaximum) {
+  std::vector<InputOptions> inputs(2);
+  const InputCapabilities can = predictingFilter();
+  sf_filter::overrideRange(inputs, 0, -2.0, 3.0, can);
+  EXPECT_TRUE(inputs[0].inRange(3.0));
+  EXPECT_FALSE(inputs[0].inRange(3.5));
+  EXPECT_FALSE(inputs[1].hasRange());
+  EXPECT_EQ(errorOf([&] { sf_filter::overrideRange(inputs, 1, 3.0, 3.0, can); }),
+            "input 1 (wheel data): plausible range needs minimum < maximum, got [3.000000, "
+            "3.000000]");
+  EXPECT_NE(errorOf([&] { sf_filter::overrideRange(inputs, 1, std::nan(""), 3.0, can); }),
+            "no error");
+  EXPECT_EQ(inputs[1].maximum, std::numeric_limits<double>::infinity());  // left as it was
+}
+
+TEST(InputOverrides, FutureStampToleranceIsNotNegative) {
+  EXPECT_DOUBLE_EQ(sf_filter::checkedFutureStampMs(500.0), 500.0);
+  EXPECT_EQ(errorOf([] { sf_filter::checkedFutureStampMs(-1.0); }),
+            "maximum future stamp must be a number of ms >= 0, got -1.000000");
 }
 
 }  // namespace

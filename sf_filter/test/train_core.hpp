@@ -21,14 +21,20 @@ using Train = estimation::KalmanFilter<2, 2, 1>;
 using Core = sf_filter::FusionCore<Train>;
 constexpr double kPeriod = 0.1;
 
-inline Train makeTrain() {
+/// R of the train's sensors: speed 0.5, acceleration 0.2.
+inline Matrix<2, 2> trainR() {
+  Matrix<2, 2> R;
+  R << 0.5, 0, 0, 0.2;
+  return R;
+}
+
+/// The train with measurement noise R (default trainR()).
+inline Train makeTrain(const Matrix<2, 2>& R = trainR()) {
   Matrix<2, 2> A;
   A << 1, kPeriod, 0, 1;
   Matrix<2, 1> B(1, 0);
   const Matrix<2, 2> H = Matrix<2, 2>::Identity();
   const Matrix<2, 2> Q = Matrix<2, 2>::Identity() * 0.01;
-  Matrix<2, 2> R;
-  R << 0.5, 0, 0, 0.2;
   return Train(A, B, H, Q, R, Vector<2>(0, 0), Matrix<2, 2>::Identity());
 }
 

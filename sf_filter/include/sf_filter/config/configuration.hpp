@@ -55,6 +55,7 @@
 //   INPUT_ALIGNMENT                          o    o    o    o    o    o    o
 //   INPUT_GATE                               o    o    o    o    x    x    x
 //   ALIGN_BY_STAMP, MAX_MEASUREMENT_LAG      o    o    o    o    o    o    o
+//   INPUT_TIMEOUT, INPUT_RANGE               o    o    o    o    o    o    o
 //   R required (#error if missing), o optional, c required if TOPICS_IN_CTRL is defined,
 //   x not allowed (#error), - not used (a "#pragma GCC warning" says it is ignored).
 //   T, x and u must not be macros (#error): the expressions use them.
@@ -104,6 +105,11 @@
 //                               the squared Mahalanobis distance.          Default no gate.
 //   ALIGN_BY_STAMP              (i)(j)...: inputs aligned by header.stamp (stamped types).
 //   MAX_MEASUREMENT_LAG         ms >= 0 a period waits for stamped values.  Default 0.
+//   INPUT_TIMEOUT               ((i)(ms)) per input with a sensor timeout, ms > 0: with no
+//                               value accepted for longer the input is timed out (missing,
+//                               no HOLD/FILL substitute, diagnostic WARN). Default none.
+//   INPUT_RANGE                 ((i)(minimum)(maximum)) per input, minimum < maximum: values
+//                               outside are dropped and counted.           Default none.
 //
 // STATE SIZE n: rows of STATE_TRANSITION_MATRIX (KF); entries of STATE_TRANSITION_MODEL
 //   (EKF, UKF, PF); m (MA, MM: one averaged output per input); 1 (CWA: one fused value).
@@ -170,7 +176,10 @@
 //     kHasInputGate, kHasAlignByStamp; inline constexpr std::array<..., m>
 //     kInputAlignment (sf_filter::AlignmentPolicy), kGateThresholds (infinity: none),
 //     kAlignByStamp, kInputHasStamp; constexpr double kMaxMeasurementLagMs;
-//     std::vector<sf_filter::InputOptions> defaultInputOptions();
+//   Faults (detail/input_faults.hpp): constexpr bool kHasInputTimeout, kHasInputRange;
+//     inline constexpr std::array<double, m> kInputTimeoutsMs (infinity: none);
+//     inline constexpr std::array<InputRange, m> kInputRanges ({minimum, maximum}).
+//   std::vector<sf_filter::InputOptions> defaultInputOptions();  // all of the above per input
 //
 //   One subscription per distinct topic: subscribe for every input with owns_subscription and,
 //   in its callback, read every input J with J::first_same_topic == owner index:
@@ -228,6 +237,8 @@
 #include "sf_filter/config/detail/checks.hpp"
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/input_alignment.hpp"
+#include "sf_filter/config/detail/input_faults.hpp"
+#include "sf_filter/config/detail/input_options.hpp"
 #include "sf_filter/config/detail/model.hpp"
 #include "sf_filter/config/detail/parameters.hpp"
 #include "sf_filter/config/detail/topics.hpp"

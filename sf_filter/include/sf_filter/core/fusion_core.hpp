@@ -18,6 +18,14 @@
 // dropped and counted (InputCounters::late). The estimate of period k still carries the time of its
 // end, so with a lag the estimates come out `lag` late but refer to the right instants. Controls
 // are taken by arrival: period k uses the latest control received before its end.
+//
+// Faults (doc/reliability.md): a value is checked on arrival - finite, its variance finite and
+// positive, inside the input's plausible range, its stamp not older than, equal to or too far
+// ahead of the previous one / the clock - and dropped and counted (InputCounters) otherwise,
+// so it never reaches the filter. An input with a timeout that has accepted no value for
+// longer is timed out: missing every period, and a HOLD or FILL input then substitutes
+// nothing and forgets its history; the first value back is used as usual. The normalised
+// innovation squared of each period (nis_window.hpp) tells whether the filter is consistent.
 #pragma once
 
 #include <chrono>
@@ -37,6 +45,7 @@
 #include "sf_filter/core/alignment/input_period.hpp"
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
+#include "sf_filter/core/nis_window.hpp"
 #include "sf_filter/core/period_schedule.hpp"
 
 namespace sf_filter {
@@ -72,6 +81,13 @@ class FusionCore {
     std::vector<InputOptions> inputs;
     /// How long after its end a period stays open for stamped values [s] (see above).
     double maxMeasurementLag = 0.0;
+    /// A stamp more than this ahead of the clock reading at arrival is dropped [s] (a sensor
+    /// clock far ahead would otherwise block its input: every later stamp looks older).
+    /// Infinite: no check.
+    double maxFutureStamp = std::numeric_limits<double>::infinity();
+    /// Periods over which the NIS is averaged (nis_window.hpp); 0: not computed. Costs one
+    /// measurement prediction per period when no gate or FILL needs it anyway.
+    std::size_t nisWindow = 0;
   };
 
   FusionCore(Filter filter, const Options& options)
@@ -82,7 +98,9 @@ class FusionCore {
         counters_(static_cast<std::size_t>(filter_.measurementSize())),
         measurement_(filter_.measurementSize()),
         prediction_(filter_.measurementSize()),
-        control_(estimation::Vector<L>::Zero(filter_.controlSize())) {
+        measured_(filter_.measurementSize()),
+        control_(estimation::Vector<L>::Zero(filter_.controlSize())),
+        nis_(kCanPredict ? options_.nisWindow : 0) {
     const Index m = filter_.measurementSize();
     for (Index i = 0; i < m; ++i) aligners_.emplace_back(inputOptions(i).alignment);
     // A power of two, so that the slot of a period is a bit mask away.
@@ -141,6 +159,7 @@ class FusionCore {
                            double stamp = std::numeric_limits<double>::quiet_NaN()) {
     if (input < 0 || input >= inputCount()) return Rejection::UnknownInput;
     InputCounters& c = counters_[static_cast<std::size_t>(input)];
+    const InputOptions& o = inputOptions(input);
     ++c.received;
     c.lastArrival = now;
     if (!std::isfinite(value)) {
@@ -151,14 +170,28 @@ class FusionCore {
       ++c.badVariance;
       return Rejection::BadVariance;
     }
+    if (!o.inRange(value)) {
+      ++c.outOfRange;
+      return Rejection::OutOfRange;
+    }
+    if (stamp == 0.0) stamp = std::numeric_limits<double>::quiet_NaN();  // ROS: not set
     if (!std::isnan(stamp)) {
       if (stamp < c.lastStamp) {
         ++c.outOfOrder;
         return Rejection::OutOfOrder;
       }
+      if (stamp == c.lastStamp) {
+        ++c.duplicate;
+        return Rejection::DuplicateStamp;
+      }
+      if (stamp > now + options_.maxFutureStamp) {
+        ++c.future;
+        return Rejection::FutureStamp;
+      }
       c.lastStamp = stamp;
     }
-    const bool byStamp = inputOptions(input).alignByStamp && !std::isnan(stamp);
+    c.lastAccepted = now;
+    const bool byStamp = o.alignByStamp && !std::isnan(stamp);
     const double time = byStamp ? stamp : now;
     bool estimated = false, beyond = false;
     const std::uint64_t k = openPeriodOf(time, estimated, beyond);
@@ -192,8 +225,12 @@ class FusionCore {
     filter_ = initial_;
     for (OpenPeriod& slot : open_) slot.clear();
     for (auto& aligner : aligners_) aligner.reset();
-    for (auto& c : counters_) c.lastStamp = -std::numeric_limits<double>::infinity();
+    for (auto& c : counters_) {
+      c.lastStamp = -std::numeric_limits<double>::infinity();
+      c.lastAccepted = std::numeric_limits<double>::quiet_NaN();
+    }
     control_.setZero();
+    nis_.clear();
     fillEstimate(last_.time, 0, 0);
   }
 
@@ -208,6 +245,25 @@ class FusionCore {
                                    : options_.inputs[static_cast<std::size_t>(input)];
   }
   Index inputCount() const { return static_cast<Index>(counters_.size()); }
+  /// Whether input `input` has a timeout and accepted no value for longer than it at time t
+  /// (counted from the schedule's start, or the last reset, if it never did).
+  bool timedOut(Index input, double t) const {
+    const InputOptions& o = inputOptions(input);
+    if (!o.hasTimeout() || !schedule_.started()) return false;
+    const double last = counters(input).lastAccepted;
+    return t - (std::isnan(last) ? startTime_ : last) > o.timeout;
+  }
+  /// The same at the clock's last reading.
+  bool timedOut(Index input) const { return timedOut(input, clock_); }
+  /// The last clock reading passed to advanceTo().
+  double clock() const { return clock_; }
+  /// The clock reading the schedule (re)started at.
+  double startTime() const { return startTime_; }
+  /// The NIS of the recent periods (empty unless Options::nisWindow > 0 and the filter
+  /// predicts its measurement).
+  const NisWindow& nis() const { return nis_; }
+  /// Periods whose NIS could not be computed (innovation covariance not positive definite).
+  std::uint64_t nisFailures() const { return nisFailures_; }
   std::uint64_t clockResets() const { return clockResets_; }
   std::uint64_t estimationFailures() const { return estimationFailures_; }
   const std::string& lastFailure() const { return lastFailure_; }
@@ -217,6 +273,8 @@ class FusionCore {
   /// Wall time spent in the estimator's steps, and their number (failed steps excluded).
   double estimatorSeconds() const { return estimatorSeconds_; }
   std::uint64_t estimateCount() const { return estimateCount_; }
+  /// The longest estimator step so far [s].
+  double maxStepSeconds() const { return maxStepSeconds_; }
 
  private:
   /// What arrived for one not yet estimated period.
@@ -240,6 +298,12 @@ class FusionCore {
     }
     if (!(o.maxMeasurementLag >= 0.0) || !std::isfinite(o.maxMeasurementLag)) {
       throw estimation::ParameterError("maximum measurement lag must be finite and >= 0");
+    }
+    if (!(o.maxFutureStamp >= 0.0)) {
+      throw estimation::ParameterError("maximum future stamp must be >= 0 (infinite: no check)");
+    }
+    if (o.nisWindow > 1000000) {
+      throw estimation::ParameterError("NIS window is longer than 1e6 periods");
     }
     if (o.maxMeasurementLag / o.period > 10000.0) {
       throw estimation::ParameterError("maximum measurement lag is more than 10000 periods");
@@ -265,6 +329,7 @@ class FusionCore {
   }
 
   void restartSchedule(double now) {
+    startTime_ = now;
     schedule_.start(now - options_.maxMeasurementLag);
     openWindow();
   }
@@ -332,6 +397,7 @@ class FusionCore {
         InputAligner& aligner = aligners_[ii];
         InputCounters& c = counters_[ii];
         std::optional<AlignedValue> v = aligner.measured(in);
+        measured_.available(i) = false;
         if (v && inputOptions(i).gated() &&
             estimation::squaredMahalanobisDistance(prediction(), i, v->value, v->variance) >
                 inputOptions(i).gateThreshold) {
@@ -340,10 +406,14 @@ class FusionCore {
         }
         if (v) {
           ++present;
+          measured_.available(i) = true;
           const std::uint32_t superseded = aligner.superseded(in);
           c.superseded += superseded;
           c.used += in.count() - superseded;
           aligner.accept(in);
+        } else if (timedOut(i, end)) {
+          ++c.timedOutPeriods;
+          aligner.reset();  // a returning sensor starts a fresh history
         } else if (aligner.canSubstitute()) {
           const double predictedValue =
               aligner.policy().needsPrediction() ? prediction().mean(i) : 0.0;
@@ -356,10 +426,21 @@ class FusionCore {
         measurement_.value(i) = v ? v->value : 0.0;
         measurement_.variance(i) = v && v->variance ? *v->variance : 0.0;
       }
+      if (nis_.enabled() && present > 0) {
+        // The check must never change the estimate: a prediction it alone asked for and that
+        // fails only skips the period's NIS (the step itself then decides about a failure).
+        try {
+          addNis(prediction());
+        } catch (const estimation::EstimationError&) {
+          ++nisFailures_;
+        }
+      }
       const auto begin = std::chrono::steady_clock::now();
       filter_.estimate(measurement_);
-      estimatorSeconds_ +=
+      const double step =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+      estimatorSeconds_ += step;
+      if (step > maxStepSeconds_) maxStepSeconds_ = step;
       ++estimateCount_;
     } catch (const estimation::EstimationError& e) {
       // The filter rejected the step and kept its belief; a numerical failure is not
@@ -372,6 +453,18 @@ class FusionCore {
     slot.index = k + open_.size();
     fillEstimate(end, present, substituted);
     schedule_.advance();
+  }
+
+  /// The NIS of the period's measured (not substituted) entries, into the window. Throws
+  /// NumericalError when the innovation covariance is not positive definite.
+  void addNis(const estimation::MeasurementPrediction<M>& prediction) {
+    for (Index i = 0; i < inputCount(); ++i) {
+      measured_.value(i) = measurement_.value(i);
+      measured_.varianceGiven(i) = measurement_.varianceGiven(i);
+      measured_.variance(i) = measurement_.variance(i);
+    }
+    nis_.add(estimation::squaredMahalanobisDistance(prediction, measured_),
+             static_cast<int>(measured_.availableCount()));
   }
 
   void fillEstimate(double time, Index present, Index substituted) {
@@ -391,9 +484,14 @@ class FusionCore {
   std::vector<OpenPeriod> open_;  ///< ring of the open periods, slot k % size for period k
   estimation::Measurement<M> measurement_;
   estimation::MeasurementPrediction<M> prediction_;
-  estimation::Vector<L> control_;  ///< the controls in force (of the last estimated period)
+  estimation::Measurement<M> measured_;  ///< the period's measured entries, for the NIS
+  estimation::Vector<L> control_;        ///< the controls in force (of the last estimated period)
+  NisWindow nis_;
   Estimate last_;
-  double clock_ = 0.0;  ///< last reading passed to advanceTo
+  double clock_ = 0.0;      ///< last reading passed to advanceTo
+  double startTime_ = 0.0;  ///< clock reading the schedule (re)started at
+  double maxStepSeconds_ = 0.0;
+  std::uint64_t nisFailures_ = 0;
   double estimatorSeconds_ = 0.0;
   std::uint64_t estimateCount_ = 0;
   std::uint64_t clockResets_ = 0;

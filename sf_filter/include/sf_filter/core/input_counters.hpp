@@ -3,11 +3,23 @@
 
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <utility>
 
 namespace sf_filter {
 
 /// Why a value was refused by the fusion core (None: accepted).
-enum class Rejection { None, NonFinite, BadVariance, OutOfOrder, TooLate, UnknownInput };
+enum class Rejection {
+  None,
+  NonFinite,
+  BadVariance,
+  OutOfRange,
+  OutOfOrder,
+  DuplicateStamp,
+  FutureStamp,
+  TooLate,
+  UnknownInput
+};
 
 inline const char* toString(Rejection r) {
   switch (r) {
@@ -17,8 +29,14 @@ inline const char* toString(Rejection r) {
       return "value is not finite";
     case Rejection::BadVariance:
       return "variance is not finite and positive";
+    case Rejection::OutOfRange:
+      return "value outside the input's plausible range";
     case Rejection::OutOfOrder:
       return "timestamp runs backwards";
+    case Rejection::DuplicateStamp:
+      return "timestamp equal to the previous value's (duplicate)";
+    case Rejection::FutureStamp:
+      return "timestamp too far ahead of the clock";
     case Rejection::TooLate:
       return "stamped in a period already estimated (later than the maximum measurement lag)";
     case Rejection::UnknownInput:
@@ -28,22 +46,48 @@ inline const char* toString(Rejection r) {
 }
 
 struct InputCounters {
-  std::uint64_t received = 0;      ///< values handed to the core
-  std::uint64_t used = 0;          ///< values that entered an estimate
-  std::uint64_t nonFinite = 0;     ///< dropped: NaN or infinite value
-  std::uint64_t badVariance = 0;   ///< dropped: variance field zero, negative or non-finite
-  std::uint64_t outOfOrder = 0;    ///< dropped: stamp older than the previous one of this input
-  std::uint64_t late = 0;          ///< dropped: stamp in a period already estimated
-  std::uint64_t gated = 0;         ///< values of periods whose value failed the gate
-  std::uint64_t superseded = 0;    ///< LAST, SAMPLED: values replaced by a newer one in a period
-  std::uint64_t substituted = 0;   ///< periods given a HOLD or FILL substitute (not values)
-  std::uint64_t aheadOfClock = 0;  ///< stamps beyond the open periods, used in the newest one
+  std::uint64_t received = 0;         ///< values handed to the core
+  std::uint64_t used = 0;             ///< values that entered an estimate
+  std::uint64_t nonFinite = 0;        ///< dropped: NaN or infinite value
+  std::uint64_t badVariance = 0;      ///< dropped: variance field zero, negative or non-finite
+  std::uint64_t outOfRange = 0;       ///< dropped: value outside the plausible range
+  std::uint64_t outOfOrder = 0;       ///< dropped: stamp older than the previous one of this input
+  std::uint64_t duplicate = 0;        ///< dropped: stamp equal to the previous one of this input
+  std::uint64_t future = 0;           ///< dropped: stamp ahead of the clock by more than allowed
+  std::uint64_t late = 0;             ///< dropped: stamp in a period already estimated
+  std::uint64_t gated = 0;            ///< values of periods whose value failed the gate
+  std::uint64_t superseded = 0;       ///< LAST, SAMPLED: values replaced by a newer one in a period
+  std::uint64_t substituted = 0;      ///< periods given a HOLD or FILL substitute (not values)
+  std::uint64_t aheadOfClock = 0;     ///< stamps beyond the open periods, used in the newest one
+  std::uint64_t timedOutPeriods = 0;  ///< periods estimated while the input was timed out
   double lastArrival = std::numeric_limits<double>::quiet_NaN();
+  /// Arrival of the newest value that passed the checks on arrival (NaN: none since the start
+  /// or the last reset); the sensor timeout counts from it.
+  double lastAccepted = std::numeric_limits<double>::quiet_NaN();
   double lastStamp = -std::numeric_limits<double>::infinity();
 
   /// Values refused on arrival. received = used + superseded + gated + dropped() + the
   /// values waiting in periods not yet estimated.
-  std::uint64_t dropped() const { return nonFinite + badVariance + outOfOrder + late; }
+  std::uint64_t dropped() const {
+    return nonFinite + badVariance + outOfRange + outOfOrder + duplicate + future + late;
+  }
 };
+
+/// The non-zero drop counts by reason, e.g. "2 not finite, 1 out of range" ("none" if none).
+inline std::string dropReasons(const InputCounters& c) {
+  const std::pair<const char*, std::uint64_t> reasons[] = {{"not finite", c.nonFinite},
+                                                           {"bad variance", c.badVariance},
+                                                           {"out of range", c.outOfRange},
+                                                           {"out of order", c.outOfOrder},
+                                                           {"duplicate stamp", c.duplicate},
+                                                           {"future stamp", c.future},
+                                                           {"late", c.late}};
+  std::string text;
+  for (const auto& r : reasons) {
+    if (r.second == 0) continue;
+    text += (text.empty() ? "" : ", ") + std::to_string(r.second) + " " + r.first;
+  }
+  return text.empty() ? "none" : text;
+}
 
 }  // namespace sf_filter

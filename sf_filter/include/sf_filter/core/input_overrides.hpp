@@ -1,8 +1,9 @@
 // Run-time changes of the per-input options that the configuration header set: the node's
-// private parameters (~input_alignment, ~input_gate, ~align_by_stamp) and the replay's options
-// (--align, --gate, --align-by-stamp) go through these checks, so both refuse the same
-// mistakes. Each throws std::invalid_argument saying what is wrong with the value; the caller
-// adds which parameter or option it came from.
+// private parameters (~input_alignment, ~input_gate, ~align_by_stamp, ~input_timeout,
+// ~input_range, ~max_future_stamp) and the replay's options (--align, --gate,
+// --align-by-stamp) go through these checks, so both refuse the same mistakes. Each throws
+// std::invalid_argument saying what is wrong with the value; the caller adds which parameter or
+// option it came from.
 #pragma once
 
 #include <cmath>
@@ -81,6 +82,48 @@ inline void overrideAlignByStamp(std::vector<InputOptions>& inputs, long input, 
                                 ": its message type has no header.stamp to align by");
   }
   inputs[i].alignByStamp = byStamp;
+}
+
+/// Sets input `input`'s sensor timeout: a finite number of ms > 0, or 0 for no timeout.
+inline void overrideTimeout(std::vector<InputOptions>& inputs, long input, double timeoutMs,
+                            const InputCapabilities& can) {
+  override_detail::checkIndex(inputs, input);
+  if (!(timeoutMs >= 0.0) || !std::isfinite(timeoutMs)) {
+    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
+                                ": timeout must be a finite number of ms > 0, or 0 for no "
+                                "timeout, got " +
+                                std::to_string(timeoutMs));
+  }
+  inputs[static_cast<std::size_t>(input)].timeout =
+      timeoutMs > 0.0 ? timeoutMs / 1000.0 : std::numeric_limits<double>::infinity();
+}
+
+/// Sets input `input`'s plausible range [minimum, maximum] (infinite bounds allowed; both
+/// infinite: no range). minimum < maximum.
+inline void overrideRange(std::vector<InputOptions>& inputs, long input, double minimum,
+                          double maximum, const InputCapabilities& can) {
+  override_detail::checkIndex(inputs, input);
+  if (std::isnan(minimum) || std::isnan(maximum) || !(minimum < maximum)) {
+    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
+                                ": plausible range needs minimum < maximum, got [" +
+                                std::to_string(minimum) + ", " + std::to_string(maximum) + "]");
+  }
+  inputs[static_cast<std::size_t>(input)].minimum = minimum;
+  inputs[static_cast<std::size_t>(input)].maximum = maximum;
+}
+
+/// The node's and the replay's tolerance for stamps ahead of the clock [ms] (the core's own
+/// default is no check): generous for clocks synchronised by NTP, tight enough that a sensor
+/// whose clock runs far ahead is noticed instead of blocking its input.
+constexpr double kDefaultMaxFutureStampMs = 500.0;
+
+/// How far ahead of the clock a stamp may be, in ms: >= 0 (infinite: no check).
+inline double checkedFutureStampMs(double ms) {
+  if (!(ms >= 0.0)) {
+    throw std::invalid_argument("maximum future stamp must be a number of ms >= 0, got " +
+                                std::to_string(ms));
+  }
+  return ms;
 }
 
 /// A maximum measurement lag in ms: finite and >= 0.

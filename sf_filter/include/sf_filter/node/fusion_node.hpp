@@ -1,6 +1,7 @@
 // The ROS side of a fusion node: a thin adapter that feeds the fusion core with the messages
 // it receives and the passing of ros::Time, and publishes each estimate. Time is ros::Time,
-// so the node behaves the same live and under `rosbag play --clock` with use_sim_time.
+// so the node behaves the same live and under `rosbag play --clock` with use_sim_time. Its
+// diagnostics (fusion_diagnostics.hpp) go to /diagnostics.
 #pragma once
 
 #include <array>
@@ -18,6 +19,7 @@
 
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
+#include "sf_filter/node/fusion_diagnostics.hpp"
 #include "sf_filter/node/node_description.hpp"
 
 namespace sf_filter {
@@ -31,13 +33,16 @@ class FusionNode {
              NodeDescription description)
       : FusionNode(nh, pnh, std::move(filter), makeOptions(period), std::move(description)) {}
 
-  /// With the fusion core's options: period, per-input alignment, gates, measurement lag.
+  /// With the fusion core's options: period, per-input alignment, gates, measurement lag,
+  /// timeouts, ranges, NIS window; a diagnostic report every `diagnosticPeriod` seconds.
   FusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, Filter filter,
-             const typename Core::Options& options, NodeDescription description)
+             const typename Core::Options& options, NodeDescription description,
+             double diagnosticPeriod = 1.0)
       : nh_(nh),
         pnh_(pnh),
         description_(std::move(description)),
-        core_(std::move(filter), options) {
+        core_(std::move(filter), options),
+        diagnostics_(nh_, pnh_, core_, description_.inputs, diagnosticPeriod) {
     pnh_.param<std::string>("frame_id", frameId_, "odom");
     pnh_.param<std::string>("child_frame_id", childFrameId_, "base_link");
     pnh_.param("publish_tf", publishTf_, true);
@@ -107,6 +112,7 @@ class FusionNode {
     if (core_.estimationFailures() != failures) {
       ROS_ERROR_THROTTLE(5.0, "estimation failed, filter reset: %s", core_.lastFailure().c_str());
     }
+    reportTimeouts();
     std::uint64_t gated = 0;
     for (Index i = 0; i < core_.inputCount(); ++i) gated += core_.counters(i).gated;
     if (gated != gatedReported_) {
@@ -115,6 +121,24 @@ class FusionNode {
                         "missing)",
                         static_cast<unsigned long long>(gated));
       gatedReported_ = gated;
+    }
+  }
+
+  /// Logs an input's timing out and its return once each.
+  void reportTimeouts() {
+    timedOut_.resize(static_cast<std::size_t>(core_.inputCount()), false);
+    for (Index i = 0; i < core_.inputCount(); ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      const bool now = core_.timedOut(i);
+      if (now == timedOut_[k]) continue;
+      timedOut_[k] = now;
+      if (now) {
+        ROS_WARN("input %ld (%s) timed out: no value for %.3f s; used as missing until it returns",
+                 static_cast<long>(i), description_.inputs[k].c_str(),
+                 core_.inputOptions(i).timeout);
+      } else {
+        ROS_INFO("input %ld (%s) is back", static_cast<long>(i), description_.inputs[k].c_str());
+      }
     }
   }
 
@@ -154,6 +178,16 @@ class FusionNode {
         alignment += gate;
       }
       if (o.alignByStamp) alignment += ", by stamp";
+      if (o.hasTimeout()) {
+        char timeout[48];
+        std::snprintf(timeout, sizeof timeout, ", timeout %g ms", o.timeout * 1000.0);
+        alignment += timeout;
+      }
+      if (o.hasRange()) {
+        char range[64];
+        std::snprintf(range, sizeof range, ", range [%g, %g]", o.minimum, o.maximum);
+        alignment += range;
+      }
       ROS_INFO("  input %zu: %s (%s)", i, description_.inputs[i].c_str(), alignment.c_str());
     }
     if (byStamp) {
@@ -166,6 +200,11 @@ class FusionNode {
       ROS_INFO("  output %s <- x[%d]", nh_.resolveName(out.first).c_str(), out.second);
     }
     ROS_INFO("  state -> %s", state_.getTopic().c_str());
+    if (core_.nis().enabled()) {
+      ROS_INFO("  diagnostics -> /diagnostics, NIS over %zu periods", core_.nis().capacity());
+    } else {
+      ROS_INFO("  diagnostics -> /diagnostics");
+    }
     if (description_.pose) {
       ROS_INFO("  odometry -> %s, tf %s -> %s%s", odometry_.getTopic().c_str(), frameId_.c_str(),
                childFrameId_.c_str(), publishTf_ ? "" : " (tf disabled)");
@@ -175,6 +214,7 @@ class FusionNode {
   ros::NodeHandle nh_, pnh_;
   NodeDescription description_;
   Core core_;
+  FusionDiagnostics<Core> diagnostics_;
   std::vector<ros::Subscriber> subscribers_;
   std::vector<ros::Publisher> outputs_;
   ros::Publisher state_, odometry_;
@@ -183,6 +223,7 @@ class FusionNode {
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
   std::uint64_t gatedReported_ = 0;
+  std::vector<bool> timedOut_;  ///< per input: its timeout was logged
 };
 
 }  // namespace sf_filter

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,6 +31,15 @@ inline double toDouble(const XmlRpc::XmlRpcValue& v, const std::string& name) {
   if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
   throw ParameterOverrideError("parameter ~" + name +
                                ": expected numbers, found a non-numeric entry");
+}
+
+/// One numeric entry of a per-input list; std::invalid_argument(`expected`) if it is not.
+inline double numberEntry(const XmlRpc::XmlRpcValue& v, const char* expected) {
+  if (v.getType() != XmlRpc::XmlRpcValue::TypeDouble &&
+      v.getType() != XmlRpc::XmlRpcValue::TypeInt) {
+    throw std::invalid_argument(expected);
+  }
+  return toDouble(v, "");
 }
 
 }  // namespace detail
@@ -138,13 +148,7 @@ inline void loadInputParameters(const ros::NodeHandle& pnh, std::vector<InputOpt
     overrideAlignment(inputs, k, static_cast<std::string>(v), can);
   });
   detail::forEachInputEntry(pnh, "input_gate", m, [&](long k, XmlRpc::XmlRpcValue& v) {
-    double threshold = 0.0;
-    try {
-      threshold = detail::toDouble(v, "input_gate");
-    } catch (const ParameterOverrideError&) {
-      throw std::invalid_argument("expected a number (0: no gate)");
-    }
-    overrideGate(inputs, k, threshold, can);
+    overrideGate(inputs, k, detail::numberEntry(v, "expected a number (0: no gate)"), can);
   });
   detail::forEachInputEntry(pnh, "align_by_stamp", m, [&](long k, XmlRpc::XmlRpcValue& v) {
     if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
@@ -159,6 +163,62 @@ inline void loadInputParameters(const ros::NodeHandle& pnh, std::vector<InputOpt
       throw ParameterOverrideError(std::string("parameter ~max_measurement_lag: ") + e.what());
     }
   }
+}
+
+/// The node's settings for faults and diagnostics beyond the per-input options.
+struct FaultSettings {
+  double maxFutureStampMs = kDefaultMaxFutureStampMs;  ///< ~max_future_stamp
+  int nisWindow = 100;                                 ///< ~nis_window [periods], 0: off
+  double diagnosticPeriod = 1.0;                       ///< ~diagnostic_period [s]
+};
+
+/// Applies the fault parameters (doc/filter_node.md, "Diagnostics"):
+///   ~input_timeout      one timeout per input in ms, 0 for none
+///   ~input_range        one [minimum, maximum] per input, [] for none
+///   ~max_future_stamp   ms >= 0 a stamp may be ahead of the clock
+///   ~nis_window         periods >= 0 the NIS is averaged over (0: not computed)
+///   ~diagnostic_period  s > 0 between diagnostic messages
+inline FaultSettings loadFaultParameters(const ros::NodeHandle& pnh,
+                                         std::vector<InputOptions>& inputs,
+                                         const InputCapabilities& can) {
+  const std::size_t m = inputs.size();
+  detail::forEachInputEntry(pnh, "input_timeout", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+    overrideTimeout(inputs, k, detail::numberEntry(v, "expected a number of ms (0: no timeout)"),
+                    can);
+  });
+  detail::forEachInputEntry(pnh, "input_range", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+    const char* expected = "expected [minimum, maximum] or [] for no range";
+    if (v.getType() != XmlRpc::XmlRpcValue::TypeArray || (v.size() != 0 && v.size() != 2)) {
+      throw std::invalid_argument(expected);
+    }
+    if (v.size() == 0) {
+      overrideRange(inputs, k, -std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity(), can);
+      return;
+    }
+    overrideRange(inputs, k, detail::numberEntry(v[0], expected),
+                  detail::numberEntry(v[1], expected), can);
+  });
+  FaultSettings settings;
+  const auto refuse = [](const std::string& name, const std::string& why) {
+    throw ParameterOverrideError("parameter ~" + name + ": " + why);
+  };
+  if (readScalarParameter(pnh, "max_future_stamp", settings.maxFutureStampMs)) {
+    try {
+      checkedFutureStampMs(settings.maxFutureStampMs);
+    } catch (const std::invalid_argument& e) {
+      refuse("max_future_stamp", e.what());
+    }
+  }
+  if (readScalarParameter(pnh, "nis_window", settings.nisWindow) &&
+      !(settings.nisWindow >= 0 && settings.nisWindow <= 1000000)) {
+    refuse("nis_window", "expected a number of periods from 0 (off) to 1000000");
+  }
+  if (readScalarParameter(pnh, "diagnostic_period", settings.diagnosticPeriod) &&
+      !(settings.diagnosticPeriod > 0.0 && settings.diagnosticPeriod <= 3600.0)) {
+    refuse("diagnostic_period", "expected a number of seconds > 0 (at most 3600)");
+  }
+  return settings;
 }
 
 /// The header's parameters with the private ROS parameters applied. `Parameters` is the

@@ -16,7 +16,7 @@
 //   inline constexpr std::array<bool, m> kAlignByStamp;
 //   inline constexpr std::array<bool, m> kInputHasStamp;       // the message has header.stamp
 //   constexpr double kMaxMeasurementLagMs;
-//   std::vector<sf_filter::InputOptions> defaultInputOptions(); // the above, per input
+// (sf_config::defaultInputOptions() in input_options.hpp combines them per input.)
 //
 // Checked at compile time, each reported once and naming the macro: the entries' form, the
 // policy and primitive names, the entry size of each policy, input indices in range and
@@ -380,16 +380,5 @@ constexpr double kMaxMeasurementLagMs = static_cast<double>(input_alignment_deta
 /// MAX_MEASUREMENT_LAG [ms] (default 0).
 constexpr double kMaxMeasurementLagMs = 0.0;
 #endif
-
-/// The fusion core's per-input options as the configuration header sets them.
-inline std::vector<::sf_filter::InputOptions> defaultInputOptions() {
-  std::vector<::sf_filter::InputOptions> inputs(static_cast<std::size_t>(kMeasurementSize));
-  for (std::size_t i = 0; i < inputs.size(); ++i) {
-    inputs[i].alignment = kInputAlignment[i];
-    inputs[i].gateThreshold = kGateThresholds[i];
-    inputs[i].alignByStamp = kAlignByStamp[i];
-  }
-  return inputs;
-}
 
 }  // namespace sf_config

@@ -1,0 +1,193 @@
+// The diagnostic rules of a fusion node (doc/filter_node.md, "Diagnostics"), ROS-free: from
+// what the fusion core counted between two reports they give each input's and the
+// estimation's level (OK / WARN / ERROR), a message that says why, and the key values. The
+// node turns them into diagnostic_msgs/DiagnosticStatus; the rules are unit-tested here.
+//
+// Input (per TOPICS_IN entry), over the interval since the previous report:
+//   ERROR  values arrived but every one was dropped on arrival (the sensor sends garbage)
+//   WARN   timed out (no value accepted for longer than its timeout), or some values were
+//          dropped, or some failed the Mahalanobis gate
+//   OK     otherwise
+// Estimation:
+//   ERROR  an estimation step failed (the filter was reset), or the covariance is not finite
+//   WARN   the clock jumped backwards (filter reset); the NIS window is full and its mean
+//          lies outside the chi-square bounds (filter inconsistent: Q or R mistuned); the mean
+//          estimation step took longer than the period; ROS time did not advance since the
+//          previous report (a paused bag or simulation: no estimates)
+//   OK     otherwise
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sf_filter/core/input_counters.hpp"
+#include "sf_filter/core/input_options.hpp"
+#include "sf_filter/core/nis_window.hpp"
+
+namespace sf_filter {
+
+namespace health_detail {
+inline std::string format(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+}  // namespace health_detail
+
+enum class HealthLevel { Ok = 0, Warn = 1, Error = 2 };
+
+struct HealthStatus {
+  HealthLevel level = HealthLevel::Ok;
+  std::string message;  ///< the reasons for the level, "; "-separated ("ok" when OK)
+  std::vector<std::pair<std::string, std::string>> values;
+
+  /// Raises the level to at least `l` and adds `why` to the message.
+  void raise(HealthLevel l, const std::string& why) {
+    if (l > level) level = l;
+    message += (message.empty() ? "" : "; ") + why;
+  }
+  void add(const std::string& key, const std::string& value) { values.emplace_back(key, value); }
+  void add(const std::string& key, std::uint64_t value) { add(key, std::to_string(value)); }
+  void add(const std::string& key, double value) { add(key, health_detail::format(value)); }
+  /// The value of `key` ("" if absent).
+  std::string value(const std::string& key) const {
+    for (const auto& kv : values) {
+      if (kv.first == key) return kv.second;
+    }
+    return {};
+  }
+};
+
+/// What an input did in one interval between reports.
+struct InputInterval {
+  InputCounters now, before;
+  double clock = 0.0;       ///< the core's clock at the report
+  double interval = 0.0;    ///< clock time since the previous report (<= 0: unknown)
+  double sinceStart = 0.0;  ///< clock time since the schedule (re)started
+  bool timedOut = false;
+};
+
+inline HealthStatus inputHealth(const InputOptions& o, const InputInterval& in) {
+  const InputCounters &c = in.now, &b = in.before;
+  HealthStatus s;
+  const std::uint64_t received = c.received - b.received;
+  const std::uint64_t dropped = c.dropped() - b.dropped();
+  const std::uint64_t gated = c.gated - b.gated;
+  const double age = std::isnan(c.lastAccepted) ? in.sinceStart : in.clock - c.lastAccepted;
+  if (received > 0 && dropped == received) {
+    s.raise(HealthLevel::Error, "all " + std::to_string(received) + " values dropped");
+  } else if (dropped > 0) {
+    s.raise(HealthLevel::Warn, std::to_string(dropped) + " values dropped");
+  }
+  if (in.timedOut) {
+    s.raise(HealthLevel::Warn, "timed out: no value for " + health_detail::format(age) +
+                                   " s (timeout " + health_detail::format(o.timeout) + " s)");
+  }
+  if (gated > 0) s.raise(HealthLevel::Warn, std::to_string(gated) + " values gated");
+  if (s.message.empty()) s.message = "ok";
+  s.add("observed rate [Hz]",
+        in.interval > 0.0 ? health_detail::format(static_cast<double>(received) / in.interval)
+                          : std::string("n/a"));
+  s.add("last arrival age [s]", std::isnan(c.lastArrival)
+                                    ? std::string("never")
+                                    : health_detail::format(in.clock - c.lastArrival));
+  s.add("last accepted age [s]",
+        std::isnan(c.lastAccepted) ? std::string("never") : health_detail::format(age));
+  s.add("timed out", std::string(in.timedOut ? "true" : "false"));
+  s.add("timeout [s]", o.hasTimeout() ? health_detail::format(o.timeout) : std::string("none"));
+  s.add("received", c.received);
+  s.add("used", c.used);
+  s.add("dropped", c.dropped());
+  s.add("dropped: not finite", c.nonFinite);
+  s.add("dropped: bad variance", c.badVariance);
+  s.add("dropped: out of range", c.outOfRange);
+  s.add("dropped: out of order", c.outOfOrder);
+  s.add("dropped: duplicate stamp", c.duplicate);
+  s.add("dropped: future stamp", c.future);
+  s.add("dropped: late", c.late);
+  s.add("gated", c.gated);
+  s.add("superseded", c.superseded);
+  s.add("substituted", c.substituted);
+  s.add("timed-out periods", c.timedOutPeriods);
+  return s;
+}
+
+/// The estimation's totals at one report.
+struct EstimationTotals {
+  std::uint64_t estimates = 0;  ///< successful steps
+  std::uint64_t failures = 0;
+  std::uint64_t clockResets = 0;
+  std::uint64_t nisFailures = 0;
+  std::uint64_t controlDropped = 0;
+  double estimatorSeconds = 0.0;
+};
+
+struct EstimationInterval {
+  EstimationTotals now, before;
+  double interval = 0.0;  ///< clock time since the previous report (<= 0: unknown)
+  double period = 0.1;    ///< estimation period [s]
+  double maxStepSeconds = 0.0;
+  double covarianceTrace = 0.0;
+  std::string lastFailure;
+  bool clockStopped = false;  ///< ROS time did not advance since the previous report
+  double clock = 0.0;         ///< ROS time at the report
+};
+
+inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindow& nis) {
+  const EstimationTotals &c = e.now, &b = e.before;
+  HealthStatus s;
+  const std::uint64_t steps = c.estimates - b.estimates;
+  const double stepSeconds = steps ? (c.estimatorSeconds - b.estimatorSeconds) / steps : 0.0;
+  if (c.failures > b.failures) {
+    s.raise(HealthLevel::Error, std::to_string(c.failures - b.failures) +
+                                    " estimation steps failed, filter reset: " + e.lastFailure);
+  }
+  if (!std::isfinite(e.covarianceTrace)) s.raise(HealthLevel::Error, "covariance not finite");
+  if (c.clockResets > b.clockResets) {
+    s.raise(HealthLevel::Warn, "clock jumped backwards: filter reset");
+  }
+  if (nis.inconsistent()) {
+    const NisBounds bounds = nis.bounds();
+    s.raise(HealthLevel::Warn, "filter inconsistent: NIS mean " +
+                                   health_detail::format(nis.mean()) + " outside [" +
+                                   health_detail::format(bounds.lower) + ", " +
+                                   health_detail::format(bounds.upper) + "] (Q or R mistuned?)");
+  }
+  if (steps > 0 && stepSeconds > e.period) {
+    s.raise(HealthLevel::Warn, "estimation step takes longer than the period");
+  }
+  if (e.clockStopped) {
+    s.raise(HealthLevel::Warn,
+            "clock stopped at " + health_detail::format(e.clock) + " s: no estimates");
+  }
+  if (s.message.empty()) s.message = "ok";
+  s.add("estimates", c.estimates);
+  s.add("estimation time per step [us]", 1e6 * stepSeconds);
+  s.add("longest step [us]", 1e6 * e.maxStepSeconds);
+  s.add("covariance trace", e.covarianceTrace);
+  if (nis.enabled()) {
+    s.add("NIS window [periods]", static_cast<std::uint64_t>(nis.size()));
+    s.add("NIS degrees of freedom", static_cast<std::uint64_t>(nis.degreesOfFreedom()));
+    s.add("NIS mean", nis.mean());
+    if (nis.size() > 0) {
+      const NisBounds bounds = nis.bounds();
+      s.add("NIS lower bound (2.5 %)", bounds.lower);
+      s.add("NIS upper bound (97.5 %)", bounds.upper);
+    }
+    s.add("NIS consistent", std::string(!nis.full()          ? "not judged (window not full)"
+                                        : nis.inconsistent() ? "false"
+                                                             : "true"));
+    s.add("NIS not computable", c.nisFailures);
+  }
+  s.add("clock resets", c.clockResets);
+  s.add("estimation failures", c.failures);
+  s.add("last failure", e.lastFailure.empty() ? std::string("none") : e.lastFailure);
+  s.add("control values dropped", c.controlDropped);
+  return s;
+}
+
+}  // namespace sf_filter

@@ -1,0 +1,117 @@
+// The fusion node's diagnostics: one diagnostic_msgs/DiagnosticStatus per input and one for
+// the estimation on /diagnostics, through diagnostic_updater, with the levels, messages and
+// values of core/health.hpp. Reports are driven by a wall-clock timer so that they keep
+// coming when ROS time stops (a paused bag, a simulation that hangs): a frozen clock is
+// itself something to see.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <diagnostic_msgs/DiagnosticStatus.h>
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+
+#include "sf_filter/core/health.hpp"
+
+namespace sf_filter {
+
+template <class Core>
+class FusionDiagnostics {
+ public:
+  /// `inputNames`: "topic field" per input; `period`: seconds between reports.
+  FusionDiagnostics(ros::NodeHandle nh, ros::NodeHandle pnh, const Core& core,
+                    const std::vector<std::string>& inputNames, double period)
+      : core_(core), updater_(nh, pnh), before_(inputNames.size()) {
+    updater_.setHardwareID("none");  // a software component
+    for (std::size_t i = 0; i < inputNames.size(); ++i) {
+      updater_.add(
+          "input " + std::to_string(i) + " (" + inputNames[i] + ")",
+          [this, i](diagnostic_updater::DiagnosticStatusWrapper& s) { reportInput(i, s); });
+    }
+    updater_.add("estimation",
+                 [this](diagnostic_updater::DiagnosticStatusWrapper& s) { reportEstimation(s); });
+    timer_ = nh.createWallTimer(ros::WallDuration(period),
+                                [this](const ros::WallTimerEvent&) { update(); });
+  }
+
+  /// Publishes one report now.
+  void update() {
+    updater_.force_update();
+    // The intervals of the next report start here.
+    for (std::size_t i = 0; i < before_.size(); ++i) {
+      before_[i] = core_.counters(static_cast<Index>(i));
+    }
+    beforeEstimation_ = totals();
+    previousClock_ = core_.clock();
+    previousRosTime_ = ros::Time::now().toSec();
+    previousResets_ = core_.clockResets();
+  }
+
+ private:
+  static void fill(const HealthStatus& h, diagnostic_updater::DiagnosticStatusWrapper& s) {
+    static const unsigned char kLevels[] = {diagnostic_msgs::DiagnosticStatus::OK,
+                                            diagnostic_msgs::DiagnosticStatus::WARN,
+                                            diagnostic_msgs::DiagnosticStatus::ERROR};
+    s.summary(kLevels[static_cast<int>(h.level)], h.message);
+    for (const auto& kv : h.values) s.add(kv.first, kv.second);
+  }
+
+  /// Clock time since the previous report; unknown (0) before the first and across a clock
+  /// reset.
+  double interval() const {
+    if (std::isnan(previousClock_) || core_.clockResets() != previousResets_) return 0.0;
+    return core_.clock() - previousClock_;
+  }
+
+  void reportInput(std::size_t i, diagnostic_updater::DiagnosticStatusWrapper& s) const {
+    const auto input = static_cast<Index>(i);
+    InputInterval in;
+    in.now = core_.counters(input);
+    in.before = before_[i];
+    in.clock = core_.clock();
+    in.interval = interval();
+    in.sinceStart = core_.clock() - core_.startTime();
+    in.timedOut = core_.timedOut(input);
+    fill(inputHealth(core_.inputOptions(input), in), s);
+  }
+
+  EstimationTotals totals() const {
+    EstimationTotals t;
+    t.estimates = core_.estimateCount();
+    t.failures = core_.estimationFailures();
+    t.clockResets = core_.clockResets();
+    t.nisFailures = core_.nisFailures();
+    t.controlDropped = core_.controlNonFinite();
+    t.estimatorSeconds = core_.estimatorSeconds();
+    return t;
+  }
+
+  void reportEstimation(diagnostic_updater::DiagnosticStatusWrapper& s) const {
+    EstimationInterval e;
+    e.now = totals();
+    e.before = beforeEstimation_;
+    e.interval = interval();
+    e.period = core_.period();
+    e.maxStepSeconds = core_.maxStepSeconds();
+    e.covarianceTrace = core_.lastEstimate().covariance.trace();
+    e.lastFailure = core_.lastFailure();
+    e.clock = ros::Time::now().toSec();
+    e.clockStopped = !std::isnan(previousRosTime_) && e.clock == previousRosTime_;
+    fill(estimationHealth(e, core_.nis()), s);
+  }
+
+  const Core& core_;
+  diagnostic_updater::Updater updater_;
+  std::vector<InputCounters> before_;
+  EstimationTotals beforeEstimation_;
+  double previousClock_ = std::numeric_limits<double>::quiet_NaN();  ///< NaN: no report yet
+  double previousRosTime_ = std::numeric_limits<double>::quiet_NaN();
+  std::uint64_t previousResets_ = 0;
+  ros::WallTimer timer_;
+};
+
+}  // namespace sf_filter
