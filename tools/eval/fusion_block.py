@@ -43,7 +43,8 @@ EXECUTABLES = [e for e, _ in SENSOR_FILTERS + AXIS_FUSION]
 
 def merge_bags(inputs, output, exclude_suffix="/state"):
     """Writes the messages of the bags `inputs` into the bag `output` in order of their bag
-    time; messages with equal times keep the order of `inputs`, then their own. Topics
+    time (rosbag itself reads messages of equal time in the order of their connections,
+    whatever the order they were written in; each topic keeps its own order). Topics
     ending in `exclude_suffix` (every replay writes its whole state on /<name>/state; the
     replays here all have the default name, so their states would collide) are left out.
     Returns {topic: count} of what was written. Raises ValueError when two inputs hold the

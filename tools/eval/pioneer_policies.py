@@ -113,16 +113,21 @@ def metrics(evs):
             "heading": mean_sd([abs(e.final_heading_err_deg) for e in evs])}
 
 
-def best_per_sensor(results, all_variants):
-    """{sensor: (best variant, its metrics, the 10 ms AVERAGE metrics)} by mean position
-    RMSE among the 10 ms runs changing only that sensor (AVERAGE included)."""
-    base = next(v for v in all_variants if v.period == 10 and v.sensor is None
+def best_per_sensor(results, all_variants, period=10):
+    """{sensor: (best variant, its metrics, the AVERAGE metrics, whether every candidate gave
+    the same RMSE to 0.1 mm)} by mean position RMSE among the runs at `period` ms changing
+    only that sensor (AVERAGE included)."""
+    base = next(v for v in all_variants if v.period == period and v.sensor is None
                 and v.policy == "AVERAGE")
     out = collections.OrderedDict()
     for sensor in SENSORS:
-        candidates = [base] + [v for v in all_variants if v.period == 10 and v.sensor == sensor]
+        candidates = [base] + [v for v in all_variants
+                               if v.period == period and v.sensor == sensor]
+        if len(candidates) < 2:
+            continue
+        rmses = [round(results[v.label]["rmse"][0], 4) for v in candidates]
         best = min(candidates, key=lambda v: results[v.label]["rmse"][0])
-        out[sensor] = (best, results[best.label], results[base.label])
+        out[sensor] = (best, results[best.label], results[base.label], len(set(rmses)) == 1)
     return out
 
 
@@ -164,12 +169,19 @@ def page_section(results, timings, all_variants, bags, seconds, machine, revisio
     w("")
     w("Computed from the table:")
     w("")
-    for sensor, (best, r, base) in best_per_sensor(results, all_variants).items():
-        change = 100.0 * (r["rmse"][0] - base["rmse"][0]) / base["rmse"][0]
-        w("- Best policy for the %s at 10 ms (lowest mean RMSE among the runs changing only "
-          "it): **%s**, RMSE %s m, final %s m (10 ms AVERAGE: RMSE %s m, final %s m; RMSE "
-          "%+.1f %%)." % (sensor, best.policy, fmt(r["rmse"]), fmt(r["final"]),
-                          fmt(base["rmse"]), fmt(base["final"]), change))
+    for period in (100, 10):
+        for sensor, (best, r, base, tie) in best_per_sensor(results, all_variants,
+                                                             period).items():
+            if tie:
+                w("- %s at %d ms: every policy tried gives the same RMSE (%s m) and final "
+                  "error (%s m) as AVERAGE." % (sensor.capitalize(), period, fmt(base["rmse"]),
+                                                fmt(base["final"])))
+                continue
+            change = 100.0 * (r["rmse"][0] - base["rmse"][0]) / base["rmse"][0]
+            w("- Best policy for the %s at %d ms (lowest mean RMSE among the runs changing "
+              "only it): **%s**, RMSE %s m, final %s m (AVERAGE: RMSE %s m, final %s m; RMSE "
+              "%+.1f %%)." % (sensor, period, best.policy, fmt(r["rmse"]), fmt(r["final"]),
+                              fmt(base["rmse"]), fmt(base["final"]), change))
     overall = min(all_variants, key=lambda v: results[v.label]["rmse"][0])
     w("- Lowest RMSE of all runs: **%s** (%s m, final %s m)." % (
         overall.label, fmt(results[overall.label]["rmse"]), fmt(results[overall.label]["final"])))

@@ -1,0 +1,211 @@
+"""The soccer robot's fusion block (config/soccer_vision_kf.h, soccer_encoder_kf.h,
+soccer_fusion_cwa.h through tools/eval/fusion_block.py), replayed offline through its
+generated nodes.
+
+1. The confidence-weighted averaging node on a hand-made bag of two OutputEntityStamped
+   inputs with known values and variances: every output is the inverse-variance weighted
+   mean, p = (a / va + b / vb) / (1 / va + 1 / vb), with variance 1 / (1 / va + 1 / vb);
+   an estimate missing upstream is replaced by the input's last value with the header's R.
+2. The whole chain on the first 35 s of bags/soccer_lost_vision.bag (vision lost from 30.0
+   to 32.5 s), against the ground truth. The bounds come from the per-sensor results on the
+   same slice, which the test measures too: inverse-variance fusion of two independent
+   estimates is no worse than the better one when their variances are right, so the fused
+   RMSE must not exceed the better per-sensor filter's (the vision filter's: the encoder
+   drifts); while vision is lost the weight moves to the encoder, so the fused error in the
+   gap must stay within the encoder filter's largest error there plus the vision filter's
+   RMSE (what the vision side still contributes) and far below the vision filter's own
+   extrapolation error.
+"""
+
+import math
+import os
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
+sys.path.insert(0, HERE)
+sys.dont_write_bytecode = True
+import evaluate  # noqa: E402
+import fusion_block  # noqa: E402
+import soccer_report  # noqa: E402
+from replay_helpers import read_rows, replay_exe  # noqa: E402
+
+BAG = os.path.join(REPO, "bags", "soccer_lost_vision.bag")
+SLICE_S = 35.0
+# soccer_fusion_cwa.h: 1.5 ms lag, so an input stamped s is fused in the estimate at s + 0.5 ms
+STAMP_TO_ESTIMATE = 0.0005
+HELD_VARIANCE = (5e-5, 1e-2)  # R of soccer_fusion_cwa.h: the variance of a held input
+
+
+def output_entity_class():
+    """sf_pkg/OutputEntityStamped for rospy/rosbag, generated from sf_msgs/msg (no devel
+    space needed)."""
+    import genpy.dynamic
+    from std_msgs.msg import Header
+
+    with open(os.path.join(REPO, "sf_msgs", "msg", "OutputEntityStamped.msg")) as f:
+        text = f.read()
+    full = text + "\n" + "=" * 80 + "\nMSG: std_msgs/Header\n" + Header._full_text
+    return genpy.dynamic.generate_dynamic("sf_pkg/OutputEntityStamped", full)[
+        "sf_pkg/OutputEntityStamped"]
+
+
+def cwa(a, va, b, vb):
+    w = 1.0 / va + 1.0 / vb
+    return (a / va + b / vb) / w, 1.0 / w
+
+
+def lib_dir_or_skip():
+    try:
+        return fusion_block.find_executables(os.environ.get("SF_LIB_DIR"))
+    except RuntimeError as exc:
+        raise unittest.SkipTest(str(exc))
+
+
+class ConfidenceWeightedAveragingTest(unittest.TestCase):
+    """sf_soccer_cwa_x on known inputs."""
+
+    N = 120
+    MISSING = 60  # the encoder estimate k = MISSING is not in the bag
+
+    @staticmethod
+    def vision(k):
+        return 1.0 + 0.001 * k, (4e-4 if k < 40 else 1e-2)
+
+    @staticmethod
+    def encoder(k):
+        return 2.0 - 0.002 * k, 1e-4 * k
+
+    @classmethod
+    def setUpClass(cls):
+        import rosbag
+        import rospy
+
+        lib_dir_or_skip()
+        cls.tmp = tempfile.TemporaryDirectory(prefix="sf_cwa_test_")
+        bag_path = os.path.join(cls.tmp.name, "inputs.bag")
+        Entity = output_entity_class()
+        cls.start = 1700000100.0
+        with rosbag.Bag(bag_path, "w") as bag:
+            for k in range(1, cls.N + 1):
+                t = rospy.Time.from_sec(cls.start + 0.001 * k)
+                for topic, (value, var) in (("/vision_kf/position/x", cls.vision(k)),
+                                            ("/encoder_kf/position/x", cls.encoder(k))):
+                    if topic.startswith("/encoder") and k == cls.MISSING:
+                        continue
+                    msg = Entity(value=value, variance=var)
+                    msg.header.stamp = t
+                    msg.header.frame_id = "field"
+                    bag.write(topic, msg, t)
+        csv_path = os.path.join(cls.tmp.name, "cwa_x.csv")
+        replay_exe("sf_soccer_cwa_x", bag_path, csv_path)
+        cls.rows = read_rows(csv_path)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def input_index(self, row):
+        """k of the inputs fused in the estimate of `row` (stamp k ms after start)."""
+        k = (row["time"] - STAMP_TO_ESTIMATE - self.start) / 0.001
+        self.assertAlmostEqual(k, round(k), delta=1e-3, msg="estimate at %.6f" % row["time"])
+        return int(round(k))
+
+    def test_every_estimate_is_the_inverse_variance_mean(self):
+        fused = [r for r in self.rows if r["present_inputs"] == 2]
+        self.assertEqual(len(fused), self.N - 1)  # all but the one with the missing input
+        for r in fused:
+            k = self.input_index(r)
+            value, var = cwa(*self.vision(k), *self.encoder(k))
+            self.assertAlmostEqual(r["x0"], value, delta=1e-9, msg="k = %d" % k)
+            self.assertAlmostEqual(r["var0"], var, delta=1e-12, msg="k = %d" % k)
+
+    def test_weights_follow_the_variances(self):
+        # k = 5: vision 4e-4 against encoder 5e-4 -> near the middle; k = 100: vision 1e-2
+        # against encoder 1e-2 -> the plain mean
+        by_k = {self.input_index(r): r for r in self.rows}
+        self.assertAlmostEqual(by_k[100]["x0"], 0.5 * (self.vision(100)[0] + self.encoder(100)[0]),
+                               delta=1e-9)
+        self.assertAlmostEqual(by_k[100]["var0"], 0.5e-2, delta=1e-12)
+
+    def test_missing_estimate_holds_the_last_value_with_R(self):
+        by_k = {self.input_index(r): r for r in self.rows}
+        r = by_k[self.MISSING]
+        self.assertEqual(r["present_inputs"], 1)
+        held = self.encoder(self.MISSING - 1)[0]
+        value, var = cwa(*self.vision(self.MISSING), held, HELD_VARIANCE[1])
+        self.assertAlmostEqual(r["x0"], value, delta=1e-9)
+        self.assertAlmostEqual(r["var0"], var, delta=1e-12)
+
+
+class FusionBlockChainTest(unittest.TestCase):
+    """The whole chain on a slice of soccer_lost_vision.bag."""
+
+    @classmethod
+    def setUpClass(cls):
+        import rosbag
+
+        lib_dir = lib_dir_or_skip()
+        cls.tmp = tempfile.TemporaryDirectory(prefix="sf_fusion_block_test_")
+        slice_bag = os.path.join(cls.tmp.name, "slice.bag")
+        with rosbag.Bag(BAG) as src, rosbag.Bag(slice_bag, "w") as dst:
+            end = None
+            for topic, msg, t in src.read_messages(raw=True):
+                end = end or t.to_sec() + SLICE_S
+                if t.to_sec() > end:
+                    break
+                dst.write(topic, msg, t, raw=True)
+        csvs, cls.summaries = fusion_block.run_chain(slice_bag, lib_dir,
+                                                     os.path.join(cls.tmp.name, "work"),
+                                                     log=lambda s: None)
+        truth = evaluate.load_truth(slice_bag)
+        cls.ev = {label: evaluate.evaluate(evaluate.load_result_csv(path, ["x0", "x1"]), truth)
+                  for label, path in csvs.items()}
+        vision = evaluate.load_pose_bag(slice_bag, soccer_report.VISION_TOPIC, with_heading=False)
+        cls.gaps = soccer_report.gaps(vision.t)
+        cls.rows = read_rows(csvs["fusion_block"])
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def max_in(self, label, start, end):
+        ev = self.ev[label]
+        return max(e for t, e in zip(ev.times, ev.pos_errors) if start < t < end)
+
+    def test_every_period_fused_from_fresh_estimates(self):
+        # no upstream estimate lost or late: no period used a held value
+        for axis in ("cwa_x", "cwa_y"):
+            self.assertIn("0 dropped values (0 late)", self.summaries[axis])
+            self.assertIn("0 substitutes", self.summaries[axis])
+        self.assertTrue(all(r["present_inputs"] == 2 for r in self.rows))
+
+    def test_fused_no_worse_than_the_better_sensor_filter(self):
+        better = min(self.ev["vision_kf"].rmse_pos, self.ev["encoder_kf"].rmse_pos)
+        self.assertLessEqual(self.ev["fusion_block"].rmse_pos, better)
+
+    def test_fused_variance_below_both_inputs(self):
+        for r in self.rows[1:]:
+            self.assertGreater(r["var0"], 0.0)
+            self.assertGreater(r["var1"], 0.0)
+        # the CWA's variance formula makes it smaller than either input's; compare with the
+        # vision filter's steady value (its median variance per axis is about 5e-5 m^2)
+        late = self.rows[len(self.rows) // 2:]
+        self.assertLess(max(r["var0"] for r in late), 6e-5)
+
+    def test_bounded_while_vision_is_lost(self):
+        self.assertEqual(len(self.gaps), 1, "the slice has the 2.5 s gap from 30 s")
+        start, end = self.gaps[0]
+        fused = self.max_in("fusion_block", start, end)
+        encoder = self.max_in("encoder_kf", start, end)
+        vision = self.max_in("vision_kf", start, end)
+        self.assertLess(fused, encoder + self.ev["vision_kf"].rmse_pos,
+                        "fused %.4f m, encoder filter %.4f m" % (fused, encoder))
+        self.assertLess(fused, 0.5 * vision, "fused %.4f m, vision filter %.4f m" % (fused, vision))
+
+
+if __name__ == "__main__":
+    unittest.main()
