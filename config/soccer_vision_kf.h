@@ -16,6 +16,15 @@
 // curves, larger follows the noise.
 // R = 0.0112^2 m^2 (Wang et al. section VI, the simulator's vision noise).
 // P0: position unknown on the field (10 m std), speed within 2 m/s.
+//
+// Clock input. The filter must predict at 1 kHz through a stretch of lost frames, so that
+// its variance grows and the fusion turns to the encoder. Online /clock drives the node's
+// schedule. The offline replay's clock advances only with the messages of the topics the
+// header reads, and a gap of more than 100 periods is skipped with a single estimate
+// (FusionCore::Options::maxCatchUpPeriods), which would freeze this filter's prediction
+// through the gap. So the header also reads the encoder topic, as a control whose column
+// of B is zero: its messages tick the replay's clock at 1 kHz, its values never enter the
+// filter (x' = A x + 0 u), and the filter stays a filter of vision alone.
 #include <geometry_msgs/PointStamped.h>
 #include <sf_filter/config/diagonal.hpp>
 
@@ -39,6 +48,8 @@
   ((vision/pose)(geometry_msgs::PointStamped)(point.x)) \
   ((vision/pose)(geometry_msgs::PointStamped)(point.y))
 #define INPUT_ALIGNMENT ((0)(SAMPLED))((1)(SAMPLED))
+#define TOPICS_IN_CTRL ((encoder/pose)(geometry_msgs::PointStamped)(point.z))
+#define CONTROL_INPUT_MATRIX ((0))((0))((0))((0))
 #define TOPICS_OUT \
   ((vision_kf/position/x)(0))((vision_kf/position/y)(1)) \
   ((vision_kf/velocity/x)(2))((vision_kf/velocity/y)(3))

@@ -96,8 +96,11 @@ class JoinAxesTest(unittest.TestCase):
                 f.write(",".join(r) + ",2\n")
 
     def test_columns_of_both_axes(self):
-        self.write("x.csv", [("1.001", "0.5", "0.01"), ("1.002", "0.6", "0.02")])
-        self.write("y.csv", [("1.001", "-1.5", "0.03"), ("1.002", "-1.6", "0.04")])
+        # the first period had no input: value 0, variance inf on both axes, left out
+        self.write("x.csv", [("1.000", "0", "inf"), ("1.001", "0.5", "0.01"),
+                             ("1.002", "0.6", "0.02")])
+        self.write("y.csv", [("1.000", "0", "inf"), ("1.001", "-1.5", "0.03"),
+                             ("1.002", "-1.6", "0.04")])
         self.assertEqual(fusion_block.join_axes(self.path("x.csv"), self.path("y.csv"),
                                                 self.path("xy.csv")), 2)
         with open(self.path("xy.csv")) as f:

@@ -9,8 +9,8 @@ launch/soccer_fusion_block.launch, without a ROS master.
   2. their output bags are merged into one, in time order (python3-rosbag)
   3. the merged bag is replayed through the confidence-weighted averaging of each axis
        sf_soccer_cwa_x, sf_soccer_cwa_y (config/soccer_fusion_cwa.h)  fused/position/{x,y}
-  4. the two axes are joined into fusion_block.csv (time,x0,x1,var0,var1) and every output
-     into fusion_block.bag, the recording of the whole block.
+  4. the two axes are joined into fusion_block.csv (time,x0,x1,var0,var1) and every
+     position into fusion_block.bag, the recording of the whole block.
 
 It prints each stage's summary line and the position errors of the vision filter, the
 encoder filter and the fused position against the bag's ground_truth/pose.
@@ -22,6 +22,7 @@ The devel space must be sourced (or give --lib-dir). Default bag: bags/soccer_se
 import argparse
 import csv
 import heapq
+import math
 import os
 import sys
 import time
@@ -41,13 +42,12 @@ AXIS_FUSION = [("sf_soccer_cwa_x", "x"), ("sf_soccer_cwa_y", "y")]
 EXECUTABLES = [e for e, _ in SENSOR_FILTERS + AXIS_FUSION]
 
 
-def merge_bags(inputs, output, exclude_suffix="/state"):
+def merge_bags(inputs, output, keep=lambda topic: not topic.endswith("/state")):
     """Writes the messages of the bags `inputs` into the bag `output` in order of their bag
     time (rosbag itself reads messages of equal time in the order of their connections,
-    whatever the order they were written in; each topic keeps its own order). Topics
-    ending in `exclude_suffix` (every replay writes its whole state on /<name>/state; the
-    replays here all have the default name, so their states would collide) are left out.
-    Returns {topic: count} of what was written. Raises ValueError when two inputs hold the
+    whatever the order they were written in; each topic keeps its own order). Only topics
+    for which `keep(topic)` is true are written; by default every topic but the states
+    (each replay writes its whole state on /<name>/state). Returns {topic: count} of what was written. Raises ValueError when two inputs hold the
     same topic: the merged stream would interleave two publishers on one topic."""
     import rosbag  # Debian: python3-rosbag
 
@@ -56,7 +56,7 @@ def merge_bags(inputs, output, exclude_suffix="/state"):
     try:
         for path, bag in zip(inputs, bags):
             for topic in bag.get_type_and_topic_info().topics:
-                if exclude_suffix and topic.endswith(exclude_suffix):
+                if not keep(topic):
                     continue
                 if topic in owner:
                     raise ValueError("topic %s is in both %s and %s" % (topic, owner[topic], path))
@@ -82,8 +82,10 @@ def merge_bags(inputs, output, exclude_suffix="/state"):
 
 def join_axes(x_csv, y_csv, output):
     """fusion_block.csv (time,x0,x1,var0,var1) from the CWA replays of the x and the y axis
-    (each time,x0,var0,present_inputs). Raises ValueError when their estimate times differ:
-    both run the same schedule on the same merged bag."""
+    (each time,x0,var0,present_inputs); returns the number of rows written. Estimates with
+    an infinite variance on both axes (periods before the first input: nothing was fused;
+    the CWA then reports 0 with variance inf) are left out. Raises ValueError when the two
+    replays' estimate times differ: both run the same schedule on the same merged bag."""
     def rows(path):
         with open(path, newline="") as f:
             return [(r["time"], r["x0"], r["var0"]) for r in csv.DictReader(f)]
@@ -91,18 +93,29 @@ def join_axes(x_csv, y_csv, output):
     xs, ys = rows(x_csv), rows(y_csv)
     if len(xs) != len(ys) or any(a[0] != b[0] for a, b in zip(xs, ys)):
         raise ValueError("%s and %s have different estimate times" % (x_csv, y_csv))
+    written = 0
     with open(output, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["time", "x0", "x1", "var0", "var1"])
         for (t, x, vx), (_, y, vy) in zip(xs, ys):
+            if math.isinf(float(vx)) and math.isinf(float(vy)):
+                continue
             w.writerow([t, x, y, vx, vy])
-    return len(xs)
+            written += 1
+    return written
 
 
-def run_chain(bag, lib_dir, work_dir, timeout=120, log=print):
+def is_position(topic):
+    """The per-sensor filters' topics that the CWA nodes read (their other outputs, such as
+    the vision filter's velocity, stay out of the merged bag)."""
+    return "/position/" in topic
+
+
+def run_chain(bag, lib_dir, work_dir, timeout=120, log=print, record=False):
     """Runs the fusion block on `bag`; returns {label: csv path} of the vision filter, the
     encoder filter and the fused position ("fusion_block"), and the summaries (stage label
-    -> replay summary line). The recording is work_dir/fusion_block.bag."""
+    -> replay summary line). With `record`, every position of the block is also merged into
+    work_dir/fusion_block.bag (what launch/soccer_fusion_block.launch records online)."""
     os.makedirs(work_dir, exist_ok=True)
     exe = lambda name: os.path.join(lib_dir, name)
     csvs, summaries, stage_bags = {}, {}, []
@@ -114,7 +127,7 @@ def run_chain(bag, lib_dir, work_dir, timeout=120, log=print):
                                                 timeout).splitlines()[-1]
         log("  %-12s %s" % (label, summaries[label]))
     merged = os.path.join(work_dir, "sensor_filters.bag")
-    counts = merge_bags(stage_bags, merged)
+    counts = merge_bags(stage_bags, merged, keep=is_position)
     log("  %-12s %d messages on %d topics" % ("merged", sum(counts.values()), len(counts)))
     axis_csvs, axis_bags = [], []
     for name, axis in AXIS_FUSION:
@@ -127,7 +140,9 @@ def run_chain(bag, lib_dir, work_dir, timeout=120, log=print):
         log("  %-12s %s" % (label, summaries[label]))
     csvs["fusion_block"] = os.path.join(work_dir, "fusion_block.csv")
     join_axes(axis_csvs[0], axis_csvs[1], csvs["fusion_block"])
-    merge_bags([merged] + axis_bags, os.path.join(work_dir, "fusion_block.bag"))
+    if record:
+        merge_bags([merged] + axis_bags, os.path.join(work_dir, "fusion_block.bag"),
+                   keep=is_position)
     return csvs, summaries
 
 
@@ -165,7 +180,7 @@ def main(argv=None):
                                            "fusion_block")
     work_dir = os.path.join(out_dir, os.path.splitext(os.path.basename(args.bag))[0])
     try:
-        csvs, _ = run_chain(args.bag, lib_dir, work_dir, args.timeout)
+        csvs, _ = run_chain(args.bag, lib_dir, work_dir, args.timeout, record=True)
         truth = evaluate.load_truth(args.bag)
         rows = [(label, evaluate.evaluate(evaluate.load_result_csv(path, ["x0", "x1"]), truth),
                  None) for label, path in csvs.items()]
