@@ -105,9 +105,9 @@ class JoinAxesTest(unittest.TestCase):
                                                 self.path("xy.csv")), 2)
         with open(self.path("xy.csv")) as f:
             rows = list(csv.reader(f))
-        self.assertEqual(rows, [["time", "x0", "x1", "var0", "var1"],
-                                ["1.001", "0.5", "-1.5", "0.01", "0.03"],
-                                ["1.002", "0.6", "-1.6", "0.02", "0.04"]])
+        self.assertEqual(rows, [["time", "x0", "x1", "var0", "var1", "present_inputs"],
+                                ["1.001", "0.5", "-1.5", "0.01", "0.03", "2"],
+                                ["1.002", "0.6", "-1.6", "0.02", "0.04", "2"]])
 
     def test_different_estimate_times_are_refused(self):
         self.write("x.csv", [("1.001", "0.5", "0.01")])

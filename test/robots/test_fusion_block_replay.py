@@ -164,6 +164,7 @@ class FusionBlockChainTest(unittest.TestCase):
                                                      os.path.join(cls.tmp.name, "work"),
                                                      log=lambda s: None)
         truth = evaluate.load_truth(slice_bag)
+        cls.csvs = csvs
         cls.ev = {label: evaluate.evaluate(evaluate.load_result_csv(path, ["x0", "x1"]), truth)
                   for label, path in csvs.items()}
         vision = evaluate.load_pose_bag(slice_bag, soccer_report.VISION_TOPIC, with_heading=False)
@@ -190,13 +191,17 @@ class FusionBlockChainTest(unittest.TestCase):
         self.assertLessEqual(self.ev["fusion_block"].rmse_pos, better)
 
     def test_fused_variance_below_both_inputs(self):
-        for r in self.rows[1:]:
-            self.assertGreater(r["var0"], 0.0)
-            self.assertGreater(r["var1"], 0.0)
-        # the CWA's variance formula makes it smaller than either input's; compare with the
-        # vision filter's steady value (its median variance per axis is about 5e-5 m^2)
-        late = self.rows[len(self.rows) // 2:]
-        self.assertLess(max(r["var0"] for r in late), 6e-5)
+        # 1 / (1/a + 1/b) < min(a, b): against the per-sensor variances of the fused stamps
+        def variances(label):
+            return {round(r["time"], 4): (r["var0"], r["var1"]) for r in read_rows(self.csvs[label])}
+
+        vision, encoder = variances("vision_kf"), variances("encoder_kf")
+        for r in self.rows:
+            stamp = round(r["time"] - STAMP_TO_ESTIMATE, 4)
+            for axis, column in enumerate(("var0", "var1")):
+                bound = min(vision[stamp][axis], encoder[stamp][axis])
+                self.assertLess(r[column], bound, "at %.4f" % stamp)
+                self.assertGreater(r[column], 0.5 * bound * (1 - 1e-9))  # two inputs at most
 
     def test_bounded_while_vision_is_lost(self):
         self.assertEqual(len(self.gaps), 1, "the slice has the 2.5 s gap from 30 s")

@@ -9,7 +9,7 @@ launch/soccer_fusion_block.launch, without a ROS master.
   2. their output bags are merged into one, in time order (python3-rosbag)
   3. the merged bag is replayed through the confidence-weighted averaging of each axis
        sf_soccer_cwa_x, sf_soccer_cwa_y (config/soccer_fusion_cwa.h)  fused/position/{x,y}
-  4. the two axes are joined into fusion_block.csv (time,x0,x1,var0,var1) and every
+  4. the two axes are joined into fusion_block.csv (time,x0,x1,var0,var1,present_inputs) and every
      position into fusion_block.bag, the recording of the whole block.
 
 It prints each stage's summary line and the position errors of the vision filter, the
@@ -81,14 +81,16 @@ def merge_bags(inputs, output, keep=lambda topic: not topic.endswith("/state")):
 
 
 def join_axes(x_csv, y_csv, output):
-    """fusion_block.csv (time,x0,x1,var0,var1) from the CWA replays of the x and the y axis
-    (each time,x0,var0,present_inputs); returns the number of rows written. Estimates with
+    """fusion_block.csv (time,x0,x1,var0,var1,present_inputs) from the CWA replays of the x
+    and the y axis (each time,x0,var0,present_inputs; present_inputs is the x axis's, both
+    read the same stamps); returns the number of rows written. Estimates with
     an infinite variance on both axes (periods before the first input: nothing was fused;
     the CWA then reports 0 with variance inf) are left out. Raises ValueError when the two
     replays' estimate times differ: both run the same schedule on the same merged bag."""
     def rows(path):
         with open(path, newline="") as f:
-            return [(r["time"], r["x0"], r["var0"]) for r in csv.DictReader(f)]
+            return [(r["time"], r["x0"], r["var0"], r["present_inputs"])
+                    for r in csv.DictReader(f)]
 
     xs, ys = rows(x_csv), rows(y_csv)
     if len(xs) != len(ys) or any(a[0] != b[0] for a, b in zip(xs, ys)):
@@ -96,11 +98,11 @@ def join_axes(x_csv, y_csv, output):
     written = 0
     with open(output, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["time", "x0", "x1", "var0", "var1"])
-        for (t, x, vx), (_, y, vy) in zip(xs, ys):
+        w.writerow(["time", "x0", "x1", "var0", "var1", "present_inputs"])
+        for (t, x, vx, present), (_, y, vy, _) in zip(xs, ys):
             if math.isinf(float(vx)) and math.isinf(float(vy)):
                 continue
-            w.writerow([t, x, y, vx, vy])
+            w.writerow([t, x, y, vx, vy, present])
             written += 1
     return written
 
