@@ -81,6 +81,32 @@ class MergeBagsTest(unittest.TestCase):
         self.assertFalse(os.path.exists(self.path("m.bag")))
 
 
+@unittest.skipIf(rosbag is None, "python3-rosbag missing")
+class LoadRecordingTest(unittest.TestCase):
+    def test_axes_paired_by_stamp(self):
+        Entity = fusion_block.output_entity_class()
+        with tempfile.TemporaryDirectory(prefix="sf_recording_test_") as tmp:
+            path = os.path.join(tmp, "rec.bag")
+            with rosbag.Bag(path, "w") as bag:
+                for k, stamp in enumerate((5.001, 5.002, 5.003)):
+                    for prefix in ("vision_kf", "encoder_kf", "fused"):
+                        for axis, value in (("x", 1.0 + k), ("y", -1.0 - k)):
+                            if prefix == "fused" and axis == "y" and k == 1:
+                                continue  # a message the recorder lost
+                            msg = Entity(value=value, variance=0.1)
+                            msg.header.stamp = rospy.Time.from_sec(stamp)
+                            # recorded later than stamped, in another order
+                            bag.write("/fusion_block/%s/position/%s" % (prefix, axis), msg,
+                                      rospy.Time.from_sec(stamp + 0.0004))
+            tr = fusion_block.load_recording(path)
+        self.assertEqual(sorted(tr), ["encoder_kf", "fusion_block", "vision_kf"])
+        self.assertEqual([round(t, 6) for t in tr["vision_kf"].t], [5.001, 5.002, 5.003])
+        self.assertEqual(tr["vision_kf"].x, [1.0, 2.0, 3.0])
+        self.assertEqual(tr["vision_kf"].y, [-1.0, -2.0, -3.0])
+        self.assertEqual([round(t, 6) for t in tr["fusion_block"].t], [5.001, 5.003])
+        self.assertEqual(tr["fusion_block"].x, [1.0, 3.0])
+
+
 class JoinAxesTest(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory(prefix="sf_join_test_")

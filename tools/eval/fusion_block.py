@@ -16,7 +16,10 @@ It prints each stage's summary line and the position errors of the vision filter
 encoder filter and the fused position against the bag's ground_truth/pose.
 
 Usage: fusion_block.py [--bag BAG] [--out-dir DIR] [--lib-dir DIR]
+       fusion_block.py --recording RECORDING.bag
 The devel space must be sourced (or give --lib-dir). Default bag: bags/soccer_seed1.bag.
+--recording evaluates a recording of launch/soccer_fusion_block.launch instead (the
+per-sensor filters' and the fused positions, paired by stamp, against its ground truth).
 """
 
 import argparse
@@ -148,6 +151,46 @@ def run_chain(bag, lib_dir, work_dir, timeout=120, log=print, record=False):
     return csvs, summaries
 
 
+def output_entity_class():
+    """sf_pkg/OutputEntityStamped as a rospy message class, generated from
+    sf_msgs/msg/OutputEntityStamped.msg (no devel space needed: for writing test bags)."""
+    import genpy.dynamic
+    from std_msgs.msg import Header
+
+    with open(os.path.join(REPO, "sf_msgs", "msg", "OutputEntityStamped.msg")) as f:
+        text = f.read()
+    full = text + "\n" + "=" * 80 + "\nMSG: std_msgs/Header\n" + Header._full_text
+    name = "sf_pkg/OutputEntityStamped"
+    return genpy.dynamic.generate_dynamic(name, full)[name]
+
+
+def load_recording(bag_path, namespace="/fusion_block"):
+    """{label: trajectory} of the block's positions in a recording of
+    launch/soccer_fusion_block.launch: vision_kf, encoder_kf and fusion_block, each from its
+    x and y OutputEntityStamped topics paired by header.stamp (stamps with only one axis
+    recorded are left out: the recorder can lose messages at 1 kHz)."""
+    import rosbag  # Debian: python3-rosbag
+
+    prefixes = {"vision_kf": "vision_kf", "encoder_kf": "encoder_kf", "fusion_block": "fused"}
+    axes = {label: ({}, {}) for label in prefixes}
+    topics = {}
+    for label, prefix in prefixes.items():
+        for k, axis in enumerate("xy"):
+            topics["%s/%s/position/%s" % (namespace, prefix, axis)] = (label, k)
+    with rosbag.Bag(bag_path) as bag:
+        for topic, msg, _ in bag.read_messages(topics=list(topics)):
+            label, k = topics[topic]
+            axes[label][k][msg.header.stamp.to_sec()] = msg.value
+    out = {}
+    for label, (xs, ys) in axes.items():
+        stamps = sorted(set(xs) & set(ys))
+        if not stamps:
+            raise ValueError("%s: no %s positions below %s" % (bag_path, label, namespace))
+        out[label] = evaluate.make_trajectory(stamps, [xs[t] for t in stamps],
+                                              [ys[t] for t in stamps])
+    return out
+
+
 def find_executables(lib_dir=None):
     """lib/sf_pkg holding the fusion block's executables; raises RuntimeError naming the
     missing ones."""
@@ -170,9 +213,22 @@ def main(argv=None):
     parser.add_argument("--lib-dir", help="where the sf_soccer_* nodes are (default: lib/sf_pkg "
                         "of the sourced devel space)")
     parser.add_argument("--timeout", type=int, default=120, help="s per replay (default 120)")
+    parser.add_argument("--recording", help="instead of running the chain: evaluate a "
+                        "recording of launch/soccer_fusion_block.launch against its "
+                        "ground_truth/pose")
     args = parser.parse_args(argv)
 
     t_start = time.monotonic()
+    if args.recording:
+        try:
+            truth = evaluate.load_truth(args.recording)
+            rows = [(label, evaluate.evaluate(tr, truth), None)
+                    for label, tr in load_recording(args.recording).items()]
+        except (ValueError, OSError) as exc:
+            print("error: %s: %s" % (args.recording, exc), file=sys.stderr)
+            return 1
+        print(evaluate.format_table(rows))
+        return 0
     try:
         lib_dir = find_executables(args.lib_dir)
     except RuntimeError as exc:
