@@ -168,7 +168,9 @@ def load_recording(bag_path, namespace="/fusion_block"):
     """{label: trajectory} of the block's positions in a recording of
     launch/soccer_fusion_block.launch: vision_kf, encoder_kf and fusion_block, each from its
     x and y OutputEntityStamped topics paired by header.stamp (stamps with only one axis
-    recorded are left out: the recorder can lose messages at 1 kHz)."""
+    recorded are left out: the recorder can lose messages at 1 kHz; so are estimates with an
+    infinite variance, the CWA's output for a period in which it had nothing to fuse, as in
+    join_axes)."""
     import rosbag  # Debian: python3-rosbag
 
     prefixes = {"vision_kf": "vision_kf", "encoder_kf": "encoder_kf", "fusion_block": "fused"}
@@ -179,6 +181,8 @@ def load_recording(bag_path, namespace="/fusion_block"):
             topics["%s/%s/position/%s" % (namespace, prefix, axis)] = (label, k)
     with rosbag.Bag(bag_path) as bag:
         for topic, msg, _ in bag.read_messages(topics=list(topics)):
+            if math.isinf(msg.variance):
+                continue
             label, k = topics[topic]
             axes[label][k][msg.header.stamp.to_sec()] = msg.value
     out = {}

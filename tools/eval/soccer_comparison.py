@@ -169,10 +169,8 @@ def verdicts(results):
         for a, b in r.gaps:
             worst = {l: max_error(r.evaluations[l], a, b) for l in METHODS}
             order = sorted(METHODS, key=lambda l: worst[l])
-            out.append("  Vision lost for %.2f s: largest error %s (%s), %s (%s)." % (
-                b - a, "; ".join("%s %.4f m" % (l, worst[l]) for l in order[:1]),
-                "smallest", "; ".join("%s %.4f m" % (l, worst[l]) for l in order[-1:]),
-                "largest"))
+            out.append("  Vision lost for %.2f s: largest error in the gap %s." % (
+                b - a, ", ".join("%s %.4f m" % (l, worst[l]) for l in order)))
     return out
 
 
