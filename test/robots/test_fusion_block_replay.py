@@ -24,7 +24,6 @@ generated nodes.
    estimated.
 """
 
-import math
 import os
 import sys
 import tempfile

@@ -34,3 +34,18 @@ def write_section(path, name, body):
     with open(path + ".partial", "w") as f:
         f.write(new)
     os.replace(path + ".partial", path)
+
+
+def add_page_option(parser, default):
+    """The --page option of a command that writes a section ('-': print only)."""
+    parser.add_argument("--page", default=default, help="page whose section is rewritten "
+                        "(default %(default)s); '-' writes no page")
+
+
+def publish(page, name, body):
+    """Prints the section `name` and, unless `page` is '-', writes it into `page`."""
+    print()
+    print("\n".join(body))
+    if page != "-":
+        write_section(page, name, body)
+        print("\nwrote section %s of %s" % (name, page))

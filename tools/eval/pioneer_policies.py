@@ -200,8 +200,7 @@ def main(argv=None):
         epilog="\n\n".join(__doc__.split("\n\n")[1:]))
     parser.add_argument("--bag", action="append", help="bag (repeatable; default: the three "
                         "pioneer_seed bags)")
-    parser.add_argument("--page", default=DEFAULT_PAGE, help="page whose section is rewritten "
-                        "(default %(default)s); '-' writes no page")
+    doc_section.add_page_option(parser, DEFAULT_PAGE)
     parser.add_argument("--work-dir", help="replay CSVs (default: $SF_WS/results/pioneer_policies)")
     parser.add_argument("--lib-dir", help="where sf_nav3ctrl_ukf is (default: the devel space)")
     parser.add_argument("--jobs", type=int, default=2, help="parallel replays (default 2)")
@@ -241,11 +240,7 @@ def main(argv=None):
     seconds = time.monotonic() - t_start
     section = page_section(results, timings, all_variants, bags, seconds,
                            chapter5_report.machine_description(), chapter5_report.git_revision())
-    print()
-    print("\n".join(section))
-    if args.page != "-":
-        doc_section.write_section(args.page, SECTION, section)
-        print("\nwrote section %s of %s" % (SECTION, args.page))
+    doc_section.publish(args.page, SECTION, section)
     return 0
 
 

@@ -206,8 +206,7 @@ def main(argv=None):
         epilog="\n\n".join(__doc__.split("\n\n")[1:]))
     parser.add_argument("--bag", action="append", help="soccer bag (repeatable; default: "
                         "soccer_seed1.bag and soccer_lost_vision.bag)")
-    parser.add_argument("--page", default=DEFAULT_PAGE, help="page whose section is rewritten "
-                        "(default %(default)s); '-' writes no page")
+    doc_section.add_page_option(parser, DEFAULT_PAGE)
     parser.add_argument("--work-dir", help="replay outputs (default: $SF_WS/results/soccer_comparison)")
     parser.add_argument("--lib-dir", help="where the sf_soccer_* nodes are (default: the devel space)")
     parser.add_argument("--timeout", type=int, default=300, help="s per replay (default 300)")
@@ -232,11 +231,7 @@ def main(argv=None):
         return 1
     section = page_section(results, time.monotonic() - t_start,
                            chapter5_report.machine_description(), chapter5_report.git_revision())
-    print()
-    print("\n".join(section))
-    if args.page != "-":
-        doc_section.write_section(args.page, SECTION, section)
-        print("\nwrote section %s of %s" % (SECTION, args.page))
+    doc_section.publish(args.page, SECTION, section)
     return 0
 
 
