@@ -177,6 +177,15 @@ def page_section(results, timings, all_variants, bags, seconds, machine, revisio
                   "error (%s m) as AVERAGE." % (sensor.capitalize(), period, fmt(base["rmse"]),
                                                 fmt(base["final"])))
                 continue
+            if best.policy == "AVERAGE":
+                others = [v for v in all_variants if v.period == period and v.sensor == sensor]
+                w("- Best policy for the %s at %d ms (lowest mean RMSE among the runs changing "
+                  "only it): **AVERAGE**, RMSE %s m, final %s m (%s)." % (
+                      sensor, period, fmt(r["rmse"]), fmt(r["final"]), "; ".join(
+                          "%s: RMSE %s m, final %s m" % (v.policy, fmt(results[v.label]["rmse"]),
+                                                         fmt(results[v.label]["final"]))
+                          for v in others)))
+                continue
             change = 100.0 * (r["rmse"][0] - base["rmse"][0]) / base["rmse"][0]
             w("- Best policy for the %s at %d ms (lowest mean RMSE among the runs changing "
               "only it): **%s**, RMSE %s m, final %s m (AVERAGE: RMSE %s m, final %s m; RMSE "
