@@ -212,7 +212,8 @@ class FusionBlockChainTest(unittest.TestCase):
     def test_fused_variance_below_both_inputs(self):
         # 1 / (1/a + 1/b) < min(a, b): against the per-sensor variances of the fused stamps
         def variances(label):
-            return {round(r["time"], 4): (r["var0"], r["var1"]) for r in read_rows(self.csvs[label])}
+            return {round(r["time"], 4): (r["var0"], r["var1"])
+                    for r in read_rows(self.csvs[label])}
 
         vision, encoder = variances("vision_kf"), variances("encoder_kf")
         for r in self.rows:

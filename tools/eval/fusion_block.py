@@ -50,8 +50,9 @@ def merge_bags(inputs, output, keep=lambda topic: not topic.endswith("/state")):
     time (rosbag itself reads messages of equal time in the order of their connections,
     whatever the order they were written in; each topic keeps its own order). Only topics
     for which `keep(topic)` is true are written; by default every topic but the states
-    (each replay writes its whole state on /<name>/state). Returns {topic: count} of what was written. Raises ValueError when two inputs hold the
-    same topic: the merged stream would interleave two publishers on one topic."""
+    (each replay writes its whole state on /<name>/state). Returns {topic: count} of what
+    was written. Raises ValueError when two inputs hold the same topic: the merged stream
+    would interleave two publishers on one topic."""
     import rosbag  # Debian: python3-rosbag
 
     owner = {}
@@ -202,8 +203,9 @@ def find_executables(lib_dir=None):
     missing = [e for e in EXECUTABLES
                if not (lib_dir and os.access(os.path.join(lib_dir, e), os.X_OK))]
     if missing:
-        raise RuntimeError("%s not found: build them (CMakeLists.txt SF_SOCCER_FUSION_BLOCK_CONFIGS) "
-                           "and source devel/setup.bash, or give --lib-dir" % ", ".join(missing))
+        raise RuntimeError("%s not found: build them (CMakeLists.txt "
+                           "SF_SOCCER_FUSION_BLOCK_CONFIGS) and source devel/setup.bash, or "
+                           "give --lib-dir" % ", ".join(missing))
     return lib_dir
 
 

@@ -39,7 +39,8 @@ import fusion_block  # noqa: E402
 import pioneer_nodes  # noqa: E402
 import soccer_report  # noqa: E402  (vision gaps, zero-order hold of vision)
 
-DEFAULT_BAGS = [os.path.join(REPO, "bags", b) for b in ("soccer_seed1.bag", "soccer_lost_vision.bag")]
+DEFAULT_BAGS = [os.path.join(REPO, "bags", b)
+                for b in ("soccer_seed1.bag", "soccer_lost_vision.bag")]
 DEFAULT_PAGE = os.path.join(REPO, "doc", "multirate_experiments.md")
 SECTION = "soccer_comparison"
 EXE = "sf_soccer_kf"
@@ -102,7 +103,8 @@ def run_bag(bag, lib_dir, work_dir, timeout, log=print):
     evaluations = collections.OrderedDict(
         (label, evaluate.evaluate(tr, truth)) for label, tr in trajectories.items())
     identical = [label for label in KF_RUNS
-                 if label != METHODS[0] and filecmp.cmp(csvs[label], csvs[METHODS[0]], shallow=False)]
+                 if label != METHODS[0]
+                 and filecmp.cmp(csvs[label], csvs[METHODS[0]], shallow=False)]
     return BagResult(name, truth.t[-1] - truth.t[0], evaluations, timings,
                      soccer_report.gaps(vision.t), identical)
 
@@ -207,8 +209,10 @@ def main(argv=None):
     parser.add_argument("--bag", action="append", help="soccer bag (repeatable; default: "
                         "soccer_seed1.bag and soccer_lost_vision.bag)")
     doc_section.add_page_option(parser, DEFAULT_PAGE)
-    parser.add_argument("--work-dir", help="replay outputs (default: $SF_WS/results/soccer_comparison)")
-    parser.add_argument("--lib-dir", help="where the sf_soccer_* nodes are (default: the devel space)")
+    parser.add_argument("--work-dir",
+                        help="replay outputs (default: $SF_WS/results/soccer_comparison)")
+    parser.add_argument("--lib-dir",
+                        help="where the sf_soccer_* nodes are (default: the devel space)")
     parser.add_argument("--timeout", type=int, default=300, help="s per replay (default 300)")
     args = parser.parse_args(argv)
 
