@@ -288,6 +288,10 @@ def write(m, ctx, out_path, img_dir):
       "logged velocities, as in the thesis ([pioneer.md](pioneer.md#nodes-without-a-pose)). "
       "Plots show `%s`." % (n, m.bag_name(m.bags[0])))
     w("")
+    w("The alignment policies of issue 5 (AVERAGE, LAST, SAMPLED, HOLD, FILL) on these bags "
+      "at a 10 ms period, and the soccer robot's centralised filter against its fusion block, "
+      "are on their own page: [multirate_experiments.md](multirate_experiments.md).")
+    w("")
 
     # ---------------------------------------------------------------- summary
     best_ukf = min((mo for mo in MODELS_WITH_POSE if m.has(mo + "_ukf")),
