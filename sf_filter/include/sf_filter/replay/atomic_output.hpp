@@ -45,8 +45,7 @@ class AtomicOutput {
   void commit() {
     if (!enabled()) return;
     if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
-      throw ReplayError("cannot move " + temporary_ + " to " + path_ + ": " +
-                        std::strerror(errno));
+      throw ReplayError("cannot move " + temporary_ + " to " + path_ + ": " + std::strerror(errno));
     }
     committed_ = true;
   }

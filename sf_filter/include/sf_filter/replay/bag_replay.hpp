@@ -11,13 +11,14 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <fstream>
-#include <iostream>
-#include <new>
 #include <functional>
 #include <iomanip>
+#include <iostream>
 #include <map>
 #include <memory>
+#include <new>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -30,16 +31,16 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include "sf_filter/core/fusion_core.hpp"
-#include "sf_filter/replay/atomic_output.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
 #include "sf_filter/node/node_description.hpp"
+#include "sf_filter/replay/atomic_output.hpp"
 
 namespace sf_filter {
 
 struct ReplayOptions {
   std::string inputBag;
-  std::string csvPath;     ///< empty: no CSV
-  std::string outputBag;   ///< empty: no bag
+  std::string csvPath;                 ///< empty: no CSV
+  std::string outputBag;               ///< empty: no bag
   std::string nodeName = "sf_filter";  ///< namespace of the ~state topic in the output bag
   std::string frameId = "odom";
   std::string childFrameId = "base_link";
@@ -126,10 +127,9 @@ class BagReplay {
       if (!csv) throw writeError(csvFile);
       writeCsvHeader(csv);
     }
-    std::optional<rosbag::Bag> output;
+    OutputBag output;
     if (bagFile.enabled()) {
-      output.emplace();
-      writeOutput(bagFile, [&] { output->open(bagFile.temporary(), rosbag::bagmode::Write); });
+      writeOutput(bagFile, [&] { output.open(bagFile.temporary()); });
     }
     auto write = [&](const typename Core::Estimate& e) {
       ++summary_.estimates;
@@ -156,7 +156,7 @@ class BagReplay {
       csv.close();
       if (!csv) throw writeError(csvFile);
     }
-    if (output) writeOutput(bagFile, [&] { output->close(); });
+    if (output) writeOutput(bagFile, [&] { output.close(); });
     csvFile.commit();
     bagFile.commit();
     summary_.estimatorSeconds = core_.estimatorSeconds();
@@ -198,6 +198,29 @@ class BagReplay {
     std::vector<std::pair<std::string, std::string>> types;  ///< (datatype, md5sum)
   };
 
+  /// The output bag. When the replay fails it is abandoned, not closed: closing writes the
+  /// bag's index, and if that fails too (the disk is full) rosbag::Bag's destructor would throw
+  /// and terminate the program. Its temporary file is removed by its AtomicOutput.
+  class OutputBag {
+   public:
+    OutputBag() = default;
+    OutputBag(const OutputBag&) = delete;
+    OutputBag& operator=(const OutputBag&) = delete;
+    ~OutputBag() {
+      if (bag_ && std::uncaught_exceptions() > 0) bag_.release();  // NOLINT: abandoned on purpose
+    }
+    void open(const std::string& path) {
+      bag_ = std::make_unique<rosbag::Bag>();
+      bag_->open(path, rosbag::bagmode::Write);
+    }
+    void close() { bag_->close(); }
+    explicit operator bool() const { return bag_ != nullptr; }
+    rosbag::Bag& operator*() { return *bag_; }
+
+   private:
+    std::unique_ptr<rosbag::Bag> bag_;
+  };
+
   struct ExpectedType {
     std::string datatype, md5sum;
   };
@@ -210,8 +233,8 @@ class BagReplay {
     try {
       bag.open(path, rosbag::bagmode::Read);
     } catch (const rosbag::BagException& e) {
-      throw ReplayError("cannot read bag " + path + " (not a bag, or truncated or corrupt): " +
-                        e.what());
+      throw ReplayError("cannot read bag " + path +
+                        " (not a bag, or truncated or corrupt): " + e.what());
     } catch (const std::bad_alloc&) {
       throw ReplayError("cannot read bag " + path + ": corrupt (a record claims more memory " +
                         "than there is)");
@@ -227,8 +250,7 @@ class BagReplay {
     } catch (const rosbag::BagException& e) {
       throw ReplayError("bag " + path + " is corrupt or truncated: " + e.what());
     } catch (const ros::Exception& e) {  // a message that does not deserialise
-      throw ReplayError("bag " + path + " is corrupt, a message could not be decoded: " +
-                        e.what());
+      throw ReplayError("bag " + path + " is corrupt, a message could not be decoded: " + e.what());
     } catch (const std::bad_alloc&) {
       throw ReplayError("bag " + path + " is corrupt: a record claims more memory than there is");
     }
@@ -240,14 +262,14 @@ class BagReplay {
     try {
       write();
     } catch (const rosbag::BagException& e) {
-      throw ReplayError("cannot write " + file.path() + " (as " + file.temporary() + "): " +
-                        e.what());
+      throw ReplayError("cannot write " + file.path() + " (as " + file.temporary() +
+                        "): " + e.what());
     }
   }
 
   static ReplayError writeError(const AtomicOutput& file) {
-    return ReplayError("cannot write " + file.path() + " (as " + file.temporary() + "): " +
-                       std::strerror(errno));
+    return ReplayError("cannot write " + file.path() + " (as " + file.temporary() +
+                       "): " + std::strerror(errno));
   }
 
   /// Absolute topic name -> what the bag holds under it.
@@ -277,13 +299,13 @@ class BagReplay {
       if (it == recorded.end()) continue;
       for (const auto& [datatype, md5sum] : it->second.types) {
         if (datatype != type.datatype) {
-          throw ReplayError("bag " + options_.inputBag + ": topic " + topic + " holds " +
-                            datatype + ", the configuration reads " + type.datatype);
+          throw ReplayError("bag " + options_.inputBag + ": topic " + topic + " holds " + datatype +
+                            ", the configuration reads " + type.datatype);
         }
         if (md5sum != type.md5sum && md5sum != "*") {
-          throw ReplayError("bag " + options_.inputBag + ": topic " + topic + " holds " +
-                            datatype + " of another definition (md5sum " + md5sum +
-                            ", this build has " + type.md5sum + ")");
+          throw ReplayError("bag " + options_.inputBag + ": topic " + topic + " holds " + datatype +
+                            " of another definition (md5sum " + md5sum + ", this build has " +
+                            type.md5sum + ")");
         }
       }
     }
@@ -311,8 +333,8 @@ class BagReplay {
     if (missing.empty()) return topics;
     std::string list;
     for (const std::string& topic : missing) list += (list.empty() ? "" : ", ") + topic;
-    const std::string what = "bag " + options_.inputBag + " has no topic " + list +
-                             " that the configuration reads";
+    const std::string what =
+        "bag " + options_.inputBag + " has no topic " + list + " that the configuration reads";
     if (!options_.allowMissingTopics) {
       throw ReplayError(what + " (--allow-missing-topics replays without it)");
     }

@@ -48,7 +48,8 @@ inline int runContained(const std::function<int()>& body,
     std::exit(status);  // flushes the streams; the parent's handlers are not run twice
   }
   detail::containedChild = child;
-  struct sigaction forward {}, previous[3];
+  struct sigaction forward {
+  }, previous[3];
   forward.sa_handler = detail::forwardToChild;
   sigemptyset(&forward.sa_mask);
   const int interrupts[3] = {SIGINT, SIGTERM, SIGHUP};

@@ -18,8 +18,7 @@ class ReplayLibraryMessages : public console_bridge::OutputHandler {
  public:
   explicit ReplayLibraryMessages(std::string program) : program_(std::move(program)) {}
 
-  void log(const std::string& text, console_bridge::LogLevel, const char* filename,
-           int) override {
+  void log(const std::string& text, console_bridge::LogLevel, const char* filename, int) override {
     if (filename != nullptr && std::strstr(filename, "cpp_common") != nullptr) return;
     std::string line = text;
     for (char& c : line) {
