@@ -19,6 +19,7 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -180,6 +181,21 @@ void subscribeInputs(Sink& node, Aligner* aligner) {
                                        });
     }
   });
+}
+
+/// One line with what became of every input's values, logged by the node at shutdown (the
+/// soak test compares `received` with what its driver published).
+template <class Core>
+std::string inputCountersLine(const Core& core, const std::vector<std::string>& names) {
+  std::ostringstream line;
+  line << "input counters at shutdown:";
+  for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
+    const sf_filter::InputCounters& c = core.counters(i);
+    line << (i ? ";" : "") << " input " << i << " (" << names.at(static_cast<std::size_t>(i))
+         << "): received " << c.received << ", used " << c.used << ", dropped " << c.dropped()
+         << ", gated " << c.gated;
+  }
+  return line.str();
 }
 
 /// The input index of a replay option: an integer (its range is checked by the override).
@@ -357,8 +373,8 @@ int replayMain(int argc, char** argv) {
       if (!path.empty()) std::remove(sf_filter::partialPath(path).c_str());
     }
     if (signal == SIGINT || signal == SIGTERM || signal == SIGHUP) {
-      std::cerr << program << ": interrupted (" << strsignal(signal)
-                << "), no output written" << std::endl;
+      std::cerr << program << ": interrupted (" << strsignal(signal) << "), no output written"
+                << std::endl;
     } else {
       std::cerr << program << ": reading bag " << options.inputBag << " crashed the bag library ("
                 << strsignal(signal) << "): the bag is corrupt; no output written" << std::endl;
@@ -399,6 +415,9 @@ int main(int argc, char** argv) {
   subscribeInputs(*node, aligner ? &*aligner : nullptr);
   node->start();
   ros::spin();
+  // On stdout: ros::shutdown() has ended rosconsole, so ROS_INFO would print nothing now.
+  std::cout << ros::this_node::getName() << ": " << inputCountersLine(node->core(), inputNames())
+            << std::endl;
   return EXIT_SUCCESS;
 }
 
