@@ -11,7 +11,7 @@
 # compares the values received per input with the messages published.
 #
 # Usage (in a sourced catkin workspace that built sf_test_soak and sf_soak_driver):
-#   sf_filter/bench/soak_node.sh [--sim-duration 600] [--warmup S] [--window 4] [--port P]
+#   sf_filter/bench/soak_node.sh [--sim-duration 600] [--warmup S] [--window 1] [--port P]
 #     [--out DIR]
 # Prints key=value lines (also in DIR/report.txt; DIR/rss.csv holds the memory samples) and
 # exits 0 when every published input value was received and the driver saw no stall.
@@ -21,7 +21,7 @@ HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 
 SIM_DURATION=600
 WARMUP=""
-WINDOW=4
+WINDOW=1
 PORT=""
 OUT=""
 while [[ $# -gt 0 ]]; do
