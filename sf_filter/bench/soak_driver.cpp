@@ -27,11 +27,16 @@
 //   ~state_topic   the node's sf_pkg/StateEstimateStamped (/sf_test_soak/state)
 //   ~report        file to write the results to as key=value lines ("" for none)
 //   ~rss_csv       file for the memory samples: wall_s,sim_s,vmrss_kib ("" for none)
+//   ~wall_clock    publish in wall time at the input rate instead (false): no /clock, no
+//                  waiting for the node; sim_duration is then wall seconds, and the spacing
+//                  of the estimates' arrivals against the period is the node timer's jitter
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -61,12 +66,14 @@ double quantile(const std::vector<double>& sorted, double q) {
 }
 
 /// The node's estimates: period indices from their stamps, spacing, and the wall delay from
-/// the /clock that closed each period.
+/// the /clock that closed each period. In wall-clock mode the grid starts at the first
+/// estimate, the delay is arrival - stamp, and the arrival spacing is the timer's jitter.
 class EstimateRecorder {
  public:
-  EstimateRecorder(double start, double period, std::size_t periods)
-      : start_(start), period_(period), closedAt_(periods + 2, 0.0) {
+  EstimateRecorder(double start, double period, std::size_t periods, bool wallClock)
+      : start_(start), period_(period), wallClock_(wallClock), closedAt_(periods + 2, 0.0) {
     delays_.reserve(periods + 2);
+    arrivals_.reserve(periods + 2);
   }
 
   void closed(std::int64_t index, double wall) {
@@ -79,6 +86,7 @@ class EstimateRecorder {
   void record(const ros::Time& stamp) {
     const double wall = wallNow();
     const double s = stamp.toSec();
+    if (wallClock_ && count_ == 0) start_ = s;
     const auto index = static_cast<std::int64_t>(std::llround((s - start_) / period_));
     std::lock_guard<std::mutex> lock(mutex_);
     ++count_;
@@ -95,8 +103,11 @@ class EstimateRecorder {
     }
     last_ = std::max(last_, index);
     lastStamp_ = s;
-    if (index >= 0 && static_cast<std::size_t>(index) < closedAt_.size() &&
-        closedAt_[static_cast<std::size_t>(index)] > 0.0) {
+    if (wallClock_) {
+      delays_.push_back(wall - s);
+      arrivals_.push_back(wall);
+    } else if (index >= 0 && static_cast<std::size_t>(index) < closedAt_.size() &&
+               closedAt_[static_cast<std::size_t>(index)] > 0.0) {
       delays_.push_back(wall - closedAt_[static_cast<std::size_t>(index)]);
     }
     changed_.notify_all();
@@ -127,11 +138,21 @@ class EstimateRecorder {
     out << "estimate_delay_median_us=" << quantile(d, 0.5) * 1e6 << "\n";
     out << "estimate_delay_p99_us=" << quantile(d, 0.99) * 1e6 << "\n";
     out << "estimate_delay_max_us=" << d.back() * 1e6 << "\n";
+    if (arrivals_.size() < 2) return;
+    std::vector<double> jitter;  // |arrival spacing - period|
+    for (std::size_t i = 1; i < arrivals_.size(); ++i) {
+      jitter.push_back(std::abs(arrivals_[i] - arrivals_[i - 1] - period_));
+    }
+    std::sort(jitter.begin(), jitter.end());
+    out << "arrival_jitter_median_us=" << quantile(jitter, 0.5) * 1e6 << "\n";
+    out << "arrival_jitter_p99_us=" << quantile(jitter, 0.99) * 1e6 << "\n";
+    out << "arrival_jitter_max_us=" << jitter.back() * 1e6 << "\n";
   }
 
  private:
   double start_, period_;
-  std::vector<double> closedAt_, delays_;
+  bool wallClock_;
+  std::vector<double> closedAt_, delays_, arrivals_;
   std::mutex mutex_;
   std::condition_variable changed_;
   std::int64_t last_ = -1;
@@ -191,6 +212,8 @@ int main(int argc, char** argv) {
   pnh.param<std::string>("state_topic", stateTopic, "/sf_test_soak/state");
   pnh.param<std::string>("report", reportPath, "");
   pnh.param<std::string>("rss_csv", rssCsv, "");
+  bool wallClock = false;
+  pnh.param("wall_clock", wallClock, false);
   const auto stepsPerPeriod = static_cast<std::int64_t>(std::llround(period * inputRate));
   const auto stepsPerControl = static_cast<std::int64_t>(std::llround(inputRate / controlRate));
   const auto steps = static_cast<std::int64_t>(std::llround(simDuration * inputRate));
@@ -206,7 +229,7 @@ int main(int argc, char** argv) {
   auto velocityA = nh.advertise<geometry_msgs::Vector3Stamped>("soak/velocity_a", 1000);
   auto velocityB = nh.advertise<std_msgs::Float64>("soak/velocity_b", 1000);
   auto command = nh.advertise<std_msgs::Float64>("soak/command", 1000);
-  EstimateRecorder estimates(startTime, period, periods);
+  EstimateRecorder estimates(startTime, period, periods, wallClock);
   auto stateSub = nh.subscribe<sf_pkg::StateEstimateStamped>(
       stateTopic, 1000,
       [&](const sf_pkg::StateEstimateStamped::ConstPtr& m) { estimates.record(m->header.stamp); });
@@ -218,18 +241,18 @@ int main(int argc, char** argv) {
   const double connectDeadline = wallNow() + 30.0;
   rosgraph_msgs::Clock tick;
   tick.clock = ros::Time(startTime);
-  while (ros::ok() && (clock.getNumSubscribers() == 0 || positionA.getNumSubscribers() == 0 ||
-                       positionB.getNumSubscribers() == 0 || velocityA.getNumSubscribers() == 0 ||
-                       velocityB.getNumSubscribers() == 0 || command.getNumSubscribers() == 0 ||
-                       stateSub.getNumPublishers() == 0)) {
+  while (ros::ok() && ((!wallClock && clock.getNumSubscribers() == 0) ||
+                       positionA.getNumSubscribers() == 0 || positionB.getNumSubscribers() == 0 ||
+                       velocityA.getNumSubscribers() == 0 || velocityB.getNumSubscribers() == 0 ||
+                       command.getNumSubscribers() == 0 || stateSub.getNumPublishers() == 0)) {
     if (wallNow() > connectDeadline) {
       ROS_FATAL("the fusion node did not connect within 30 s");
       return 1;
     }
-    clock.publish(tick);
+    if (!wallClock) clock.publish(tick);
     ros::WallDuration(0.05).sleep();
   }
-  clock.publish(tick);
+  if (!wallClock) clock.publish(tick);
   ros::WallDuration(1.0).sleep();
 
   MemorySamples memory;
@@ -244,13 +267,28 @@ int main(int argc, char** argv) {
       nodePid > 0 ? sf_bench::readCpu(nodePid) : sf_bench::CpuSample{};
   std::uint64_t published[5] = {0, 0, 0, 0, 0}, clocks = 0;
   bool stalled = false;
+  timespec next{};
+  clock_gettime(CLOCK_MONOTONIC, &next);
+  if (wallClock) startTime = ros::Time::now().toSec();
   for (std::int64_t k = 1; k <= steps && ros::ok(); ++k) {
-    const double t = startTime + static_cast<double>(k) / inputRate;
+    if (wallClock) {  // absolute ticks of 1/input_rate: no drift
+      next.tv_nsec += static_cast<long>(std::lround(1e9 / inputRate));
+      while (next.tv_nsec >= 1000000000) {
+        next.tv_nsec -= 1000000000;
+        ++next.tv_sec;
+      }
+      while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) == EINTR) {
+      }
+    }
+    const double t =
+        wallClock ? ros::Time::now().toSec() : startTime + static_cast<double>(k) / inputRate;
     const ros::Time stamp(t);
-    tick.clock = stamp;
-    clock.publish(tick);
-    ++clocks;
-    if (k % stepsPerPeriod == 0) {
+    if (!wallClock) {
+      tick.clock = stamp;
+      clock.publish(tick);
+      ++clocks;
+    }
+    if (!wallClock && k % stepsPerPeriod == 0) {
       const std::int64_t closedPeriod = k / stepsPerPeriod;
       estimates.closed(closedPeriod, wallNow());
       if (!estimates.waitFor(closedPeriod - window, 10.0)) {
@@ -293,8 +331,8 @@ int main(int argc, char** argv) {
   // Close the last period and wait for its estimate.
   const std::int64_t lastPeriod = steps / stepsPerPeriod;
   tick.clock = ros::Time(startTime + static_cast<double>(steps + 1) / inputRate);
-  clock.publish(tick);
-  const bool last = !stalled && estimates.waitFor(lastPeriod, 10.0);
+  if (!wallClock) clock.publish(tick);
+  const bool last = wallClock || (!stalled && estimates.waitFor(lastPeriod, 10.0));
   const double wallEnd = wallNow();
   sampleMemory(startTime + simDuration);
   const sf_bench::CpuSample cpuEnd =

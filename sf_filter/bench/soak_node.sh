@@ -12,7 +12,10 @@
 #
 # Usage (in a sourced catkin workspace that built sf_test_soak and sf_soak_driver):
 #   sf_filter/bench/soak_node.sh [--sim-duration 600] [--warmup S] [--window 1] [--port P]
-#     [--out DIR]
+#     [--out DIR] [--wall-clock]
+# --wall-clock: no simulated time; the driver publishes at 1 kHz in wall time for
+# --sim-duration wall seconds without waiting for the node, and reports the jitter of the
+# estimates' arrival spacing against the 10 ms period (the node's ros::Timer).
 # Prints key=value lines (also in DIR/report.txt; DIR/rss.csv holds the memory samples) and
 # exits 0 when every published input value was received and the driver saw no stall.
 set -euo pipefail
@@ -24,6 +27,7 @@ WARMUP=""
 WINDOW=1
 PORT=""
 OUT=""
+WALL_CLOCK=false
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --sim-duration) SIM_DURATION=$2; shift 2 ;;
@@ -31,7 +35,8 @@ while [[ $# -gt 0 ]]; do
     --window) WINDOW=$2; shift 2 ;;
     --port) PORT=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    --wall-clock) WALL_CLOCK=true; shift ;;
+    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
     *) echo "unknown argument: $1" >&2; exit 2 ;;
   esac
 done
@@ -62,14 +67,14 @@ trap 'exit 130' INT TERM
 echo "machine=$(lscpu | sed -n 's/^Model name: *//p' | tr ' ' _), $(nproc) CPUs, load $(cut -d' ' -f1-3 /proc/loadavg | tr ' ' ,)"
 echo "out=$OUT"
 bench_start_roscore "$PORT"
-rosparam set /use_sim_time true
+$WALL_CLOCK || rosparam set /use_sim_time true
 
 "$NODE_EXE" __name:=sf_test_soak >"$OUT/node.log" 2>&1 &
 NODE_PID=$!
 sleep 1
 kill -0 "$NODE_PID" 2>/dev/null || { echo "sf_test_soak failed, see $OUT/node.log" >&2; exit 1; }
 "$DRIVER_EXE" _sim_duration:="$SIM_DURATION" _warmup:="$WARMUP" _window:="$WINDOW" \
-  _node_pid:="$NODE_PID" _report:="$OUT/driver.txt" _rss_csv:="$OUT/rss.csv" \
+  _node_pid:="$NODE_PID" _wall_clock:="$WALL_CLOCK" _report:="$OUT/driver.txt" _rss_csv:="$OUT/rss.csv" \
   >"$OUT/driver.log" 2>&1 &
 DRIVER_PID=$!
 DRIVER_STATUS=0
