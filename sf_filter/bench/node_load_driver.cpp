@@ -23,7 +23,6 @@
 //   ~report        file to write the results to as key=value lines ("" for none)
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -44,6 +43,7 @@
 #include <sf_pkg/StateEstimateStamped.h>
 
 #include "process_stats.hpp"
+#include "tick_clock.hpp"
 
 namespace {
 
@@ -186,13 +186,7 @@ int main(int argc, char** argv) {
   double lateSum = 0.0, lateMax = 0.0;
   std::uint64_t published = 0;
   for (std::uint64_t k = 0; k <= totalTicks && ros::ok(); ++k) {
-    next.tv_nsec += 10000000;
-    if (next.tv_nsec >= 1000000000) {
-      next.tv_nsec -= 1000000000;
-      ++next.tv_sec;
-    }
-    while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) == EINTR) {
-    }
+    sf_bench::sleepToNextTick(next, 10000000);
     const double late = monotonicNow() - (static_cast<double>(next.tv_sec) +
                                           1e-9 * static_cast<double>(next.tv_nsec));
     if (k == warmupTicks) {

@@ -31,7 +31,6 @@
 //                  waiting for the node; sim_duration is then wall seconds, and the spacing
 //                  of the estimates' arrivals against the period is the node timer's jitter
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
@@ -52,6 +51,7 @@
 #include <sf_pkg/StateEstimateStamped.h>
 
 #include "process_stats.hpp"
+#include "tick_clock.hpp"
 
 namespace {
 
@@ -271,15 +271,7 @@ int main(int argc, char** argv) {
   clock_gettime(CLOCK_MONOTONIC, &next);
   if (wallClock) startTime = ros::Time::now().toSec();
   for (std::int64_t k = 1; k <= steps && ros::ok(); ++k) {
-    if (wallClock) {  // absolute ticks of 1/input_rate: no drift
-      next.tv_nsec += static_cast<long>(std::lround(1e9 / inputRate));
-      while (next.tv_nsec >= 1000000000) {
-        next.tv_nsec -= 1000000000;
-        ++next.tv_sec;
-      }
-      while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) == EINTR) {
-      }
-    }
+    if (wallClock) sf_bench::sleepToNextTick(next, std::lround(1e9 / inputRate));
     const double t =
         wallClock ? ros::Time::now().toSec() : startTime + static_cast<double>(k) / inputRate;
     const ros::Time stamp(t);
