@@ -45,7 +45,8 @@ def executable():
 
 def write_small_bag(path, odom=True, imu_type="sensor_msgs/Imu", count=100, compression="none"):
     """A 2 s bag at 50 Hz in the node's topics: odom (nav_msgs/Odometry), imu/data as
-    sensor_msgs/Imu or (imu_type="geometry_msgs/Vector3Stamped") another type, or not at all
+    sensor_msgs/Imu, as another type (imu_type="geometry_msgs/Vector3Stamped"), as a
+    sensor_msgs/Imu of another definition (imu_type="other md5sum"), or not at all
     (imu_type=None), and the static transform base_link -> imu_link."""
     import rospy  # noqa: F401  (rosbag needs genpy's time types)
     import rosbag
@@ -54,6 +55,11 @@ def write_small_bag(path, odom=True, imu_type="sensor_msgs/Imu", count=100, comp
     from sensor_msgs.msg import Imu
     from tf2_msgs.msg import TFMessage
     import genpy
+
+    class OtherImu(Imu):
+        """sensor_msgs/Imu as recorded by a build with another definition of it."""
+        _md5sum = "0123456789abcdef0123456789abcdef"
+
     with rosbag.Bag(path, "w", compression=compression) as bag:
         t0 = genpy.Time(1700000000)
         static = TransformStamped()
@@ -71,8 +77,8 @@ def write_small_bag(path, odom=True, imu_type="sensor_msgs/Imu", count=100, comp
                 o.twist.twist.linear.x = 0.5
                 o.twist.twist.angular.z = 0.1
                 bag.write("odom", o, t)
-            if imu_type == "sensor_msgs/Imu":
-                m = Imu()
+            if imu_type in ("sensor_msgs/Imu", "other md5sum"):
+                m = Imu() if imu_type == "sensor_msgs/Imu" else OtherImu()
                 m.header.stamp = t
                 m.header.frame_id = "imu_link"
                 m.angular_velocity.z = 0.1
@@ -212,6 +218,12 @@ class ReplayFaultTest(unittest.TestCase):
         write_small_bag(bag, imu_type="geometry_msgs/Vector3Stamped")
         self.assertFails(self.replay(bag), bag, "/imu/data holds geometry_msgs/Vector3Stamped",
                          "sensor_msgs/Imu")
+
+    def test_same_type_of_another_definition(self):
+        bag = self.path("other_definition.bag")
+        write_small_bag(bag, imu_type="other md5sum")
+        self.assertFails(self.replay(bag), bag, "/imu/data holds sensor_msgs/Imu of another "
+                         "definition (md5sum 0123456789abcdef0123456789abcdef")
 
     def test_unwritable_outputs(self):
         missing_dir = self.path("no/such/dir/out.csv")
