@@ -5,9 +5,9 @@ messages, about 30 s of wall time on a 2-core machine). Checked against the driv
 counts: every published input value was received by the node (its per-input counters,
 logged at shutdown), every period was estimated once and on its grid, and the node's
 resident memory after the warm-up (the first 10 % of the run) grew by less than
-RSS_GROWTH_BOUND_KIB. Measured growth: 20-32 KiB (a few 4 KiB pages) over 9 simulated
-minutes; the bound is 8 times that and 10 times smaller than a leak of one byte per input
-message (2.2 MiB) or of 32 bytes per period (1.6 MiB).
+RSS_GROWTH_BOUND_KIB. Measured growth: 12-32 KiB (a few 4 KiB pages) over 9 simulated
+minutes; the bound is 8 times that and 6-8 times smaller than a leak of one byte per input
+message after the warm-up (2.1 MB) or of 32 bytes per period (1.7 MB).
 """
 
 import os
