@@ -55,32 +55,18 @@ if ! command -v catkin_find >/dev/null || ! catkin_find --first-only --libexec s
   echo "source the catkin workspace first (devel/setup.bash) and build $NODE, sf_node_load_driver" >&2
   exit 1
 fi
-exe() { catkin_find --first-only --libexec sf_pkg "$1"; }
-DRIVER_EXE=$(exe sf_node_load_driver)
-BENCH_EXE=$(exe sf_fusion_core_benchmark 2>/dev/null || true)
-
-if ss -ltn 2>/dev/null | awk '{print $4}' | grep -q ":${PORT}\$"; then
-  echo "port $PORT is in use; pick another with --port" >&2
-  exit 1
-fi
-
 [[ -n "$OUT" ]] || OUT=$(mktemp -d /tmp/sf_node_overhead.XXXXXX)
 mkdir -p "$OUT"
-export ROS_MASTER_URI=http://localhost:${PORT}
-export ROS_HOME=$OUT/ros_home
-export ROS_LOG_DIR=$OUT/log
-mkdir -p "$ROS_HOME" "$ROS_LOG_DIR"
+# shellcheck source=ros_bench_lib.sh
+source "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/ros_bench_lib.sh"
+exe() { bench_exe "$1"; }
+DRIVER_EXE=$(exe sf_node_load_driver)
+BENCH_EXE=$(exe sf_fusion_core_benchmark 2>/dev/null || true)
 
 ROSCORE_PID=""
 NODE_PID=""
 DRIVER_PID=""
-stop() {  # stop <pid> <signal>: signal, wait up to 5 s, then SIGKILL
-  local pid=$1 sig=$2
-  [[ -n "$pid" ]] && kill -0 "$pid" 2>/dev/null || return 0
-  kill "-$sig" "$pid" 2>/dev/null || true
-  for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || return 0; sleep 0.1; done
-  kill -KILL "$pid" 2>/dev/null || true
-}
+stop() { bench_stop "$@"; }
 cleanup() {
   stop "$DRIVER_PID" INT
   stop "$NODE_PID" INT
@@ -109,14 +95,7 @@ print("%.3f" % (runs[0]["cpu_time"] / 1000.0))' "$OUT/estimator_step.json")
   echo "estimator step alone (UKF_nav3ctrl_step, CPU time, median of 5): $ESTIMATOR_US us"
 fi
 
-roscore -p "$PORT" >"$OUT/roscore.log" 2>&1 &
-ROSCORE_PID=$!
-for _ in $(seq 100); do
-  rosparam get /rosdistro >/dev/null 2>&1 && break
-  kill -0 "$ROSCORE_PID" 2>/dev/null || { echo "roscore failed, see $OUT/roscore.log" >&2; exit 1; }
-  sleep 0.3
-done
-rosparam get /rosdistro >/dev/null 2>&1 || { echo "roscore did not come up" >&2; exit 1; }
+bench_start_roscore "$PORT"
 
 # measure <executable name> <report tag>: one node under the driver's load.
 measure() {

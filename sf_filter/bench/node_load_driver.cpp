@@ -21,11 +21,8 @@
 //   ~period        estimation period of the node [s] (0.1), for the per-period figures
 //   ~tcp_nodelay   subscribe to the outputs with TCP_NODELAY (false, as most subscribers do)
 //   ~report        file to write the results to as key=value lines ("" for none)
-#include <dirent.h>
-#include <unistd.h>
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -45,7 +42,13 @@
 #include <sf_pkg/OutputEntityStamped.h>
 #include <sf_pkg/StateEstimateStamped.h>
 
+#include "process_stats.hpp"
+#include "tick_clock.hpp"
+
 namespace {
+
+using sf_bench::CpuSample;
+using sf_bench::readCpu;
 
 double monotonicNow() {
   timespec ts{};
@@ -106,43 +109,6 @@ class DelayRecorder {
   double start_ = 0.0, end_ = 0.0, last_ = 0.0, period_ = 0.1;
   std::uint64_t gaps_ = 0;
 };
-
-struct CpuSample {
-  bool ok = false;
-  double statSeconds = 0.0;  ///< utime + stime of the process (all threads, ever)
-  double schedNs = 0.0;      ///< sum over the live threads of the time on CPU
-  int threads = 0;
-};
-
-CpuSample readCpu(int pid) {
-  CpuSample s;
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(stat, line)) return s;
-  const auto close = line.rfind(')');
-  if (close == std::string::npos) return s;
-  std::istringstream fields(line.substr(close + 2));  // from field 3 (state) on
-  std::vector<std::string> f;
-  for (std::string token; fields >> token;) f.push_back(token);
-  if (f.size() < 13) return s;
-  const double tick = static_cast<double>(sysconf(_SC_CLK_TCK));
-  s.statSeconds = (std::stod(f[11]) + std::stod(f[12])) / tick;  // fields 14 and 15
-  const std::string taskDir = "/proc/" + std::to_string(pid) + "/task";
-  if (DIR* dir = opendir(taskDir.c_str())) {
-    while (dirent* e = readdir(dir)) {
-      if (e->d_name[0] == '.') continue;
-      std::ifstream sched(taskDir + "/" + e->d_name + "/schedstat");
-      double ns = 0.0;
-      if (sched >> ns) {
-        s.schedNs += ns;
-        ++s.threads;
-      }
-    }
-    closedir(dir);
-  }
-  s.ok = true;
-  return s;
-}
 
 }  // namespace
 
@@ -220,13 +186,7 @@ int main(int argc, char** argv) {
   double lateSum = 0.0, lateMax = 0.0;
   std::uint64_t published = 0;
   for (std::uint64_t k = 0; k <= totalTicks && ros::ok(); ++k) {
-    next.tv_nsec += 10000000;
-    if (next.tv_nsec >= 1000000000) {
-      next.tv_nsec -= 1000000000;
-      ++next.tv_sec;
-    }
-    while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) == EINTR) {
-    }
+    sf_bench::sleepToNextTick(next, 10000000);
     const double late = monotonicNow() - (static_cast<double>(next.tv_sec) +
                                           1e-9 * static_cast<double>(next.tv_nsec));
     if (k == warmupTicks) {

@@ -12,10 +12,14 @@
 #if SF_CONFIG_OK
 
 #include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -29,6 +33,8 @@
 #include "sf_filter/node/fusion_node.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
 #include "sf_filter/replay/bag_replay.hpp"
+#include "sf_filter/replay/contained_run.hpp"
+#include "sf_filter/replay/library_messages.hpp"
 #include "sf_filter/replay/replay_frame_aligner.hpp"
 
 #ifdef POSE_OUT
@@ -180,6 +186,21 @@ void subscribeInputs(Sink& node, Aligner* aligner) {
   });
 }
 
+/// One line with what became of every input's values, logged by the node at shutdown (the
+/// soak test compares `received` with what its driver published).
+template <class Core>
+std::string inputCountersLine(const Core& core, const std::vector<std::string>& names) {
+  std::ostringstream line;
+  line << "input counters at shutdown:";
+  for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
+    const sf_filter::InputCounters& c = core.counters(i);
+    line << (i ? ";" : "") << " input " << i << " (" << names.at(static_cast<std::size_t>(i))
+         << "): received " << c.received << ", used " << c.used << ", dropped " << c.dropped()
+         << ", gated " << c.gated;
+  }
+  return line.str();
+}
+
 /// The input index of a replay option: an integer (its range is checked by the override).
 long inputIndex(const std::string& text) {
   std::size_t used = 0;
@@ -215,13 +236,14 @@ int replayMain(int argc, char** argv) {
       "       [--estimation-period MS] [--scale-q FACTOR] [--scale-r FACTOR] [--seed N]\n"
       "       [--frame-id FRAME] [--child-frame-id FRAME] [--base-frame FRAME]\n"
       "       [--align INPUT=POLICY]... [--gate INPUT=THRESHOLD]... [--align-by-stamp INPUT]...\n"
-      "       [--align-by-arrival INPUT]... [--max-lag MS]\n"
+      "       [--align-by-arrival INPUT]... [--max-lag MS] [--allow-missing-topics]\n"
       "Replays the bag through this node's filter without a ROS master, in recorded-time\n"
       "order, and writes the estimates. Without --csv and --bag only a summary is printed.\n"
       "--frame-id, --child-frame-id: frames of the output bag's odometry (default odom,\n"
       "base_link, like the node's ~frame_id, ~child_frame_id); --base-frame: the frame\n"
       "FRAME_ALIGNED_INPUTS are rotated into (default BASE_FRAME, like ~base_frame), with\n"
-      "the bag's /tf_static and /tf.\n"
+      "the bag's /tf_static and /tf. --allow-missing-topics: a configured topic missing from\n"
+      "the bag is a warning (its inputs are missing in every period), not an error.\n"
       "POLICY: AVERAGE, LAST, SAMPLED, 'HOLD LAGRANGE|BEZIER|TAYLOR ORDER [VARIANCE]' or\n"
       "'FILL OMEGA N [VARIANCE]'; THRESHOLD 0 removes a gate (doc/alignment_policies.md).";
   sf_filter::ReplayOptions options;
@@ -289,6 +311,8 @@ int replayMain(int argc, char** argv) {
         } catch (const std::invalid_argument& e) {
           throw std::invalid_argument(arg + " " + given + ": " + e.what());
         }
+      } else if (arg == "--allow-missing-topics") {
+        options.allowMissingTopics = true;
       } else if (arg == "--max-lag") {
         lagMs = sf_filter::checkedLagMs(std::stod(value()));
       } else {
@@ -307,52 +331,70 @@ int replayMain(int argc, char** argv) {
     std::cerr << program << ": " << e.what() << "\n" << usage << std::endl;
     return 2;
   }
-  try {
-    ros::Time::init();
-    sf_config::Parameters parameters = sf_config::defaultParameters(periodMs);
-    parameters.process_noise_covariance *= scaleQ;
-    parameters.measurement_noise_covariance *= scaleR;
-    if (seed) parameters.random_seed = static_cast<unsigned>(*seed);
-    std::optional<sf_filter::ReplayFrameAligner> aligner;
-    if constexpr (sf_config::kHasFrameAlignment) aligner.emplace(baseFrame, inputNames());
-    sf_filter::ReplayFrameAligner* const alignerPtr = aligner ? &*aligner : nullptr;
-    sf_filter::BagReplay<sf_filter::generated::Filter> replay(
-        sf_filter::generated::makeFilter(parameters), coreOptions(periodMs, inputs, lagMs),
-        describe(alignerPtr), options);
-    if (aligner) {
-      replay.readTransforms([alignerPtr](const tf2_msgs::TFMessage& msg, bool isStatic) {
-        alignerPtr->addTransforms(msg, isStatic);
-      });
+  // In a child process: a library crashing on a corrupt bag, or an interrupt, still ends
+  // with one line and without partial outputs (contained_run.hpp).
+  auto replayBag = [&]() -> int {
+    static sf_filter::ReplayLibraryMessages libraryMessages(program);
+    console_bridge::useOutputHandler(&libraryMessages);
+    try {
+      ros::Time::init();
+      sf_config::Parameters parameters = sf_config::defaultParameters(periodMs);
+      parameters.process_noise_covariance *= scaleQ;
+      parameters.measurement_noise_covariance *= scaleR;
+      if (seed) parameters.random_seed = static_cast<unsigned>(*seed);
+      std::optional<sf_filter::ReplayFrameAligner> aligner;
+      if constexpr (sf_config::kHasFrameAlignment) aligner.emplace(baseFrame, inputNames());
+      sf_filter::ReplayFrameAligner* const alignerPtr = aligner ? &*aligner : nullptr;
+      sf_filter::BagReplay<sf_filter::generated::Filter> replay(
+          sf_filter::generated::makeFilter(parameters), coreOptions(periodMs, inputs, lagMs),
+          describe(alignerPtr), options);
+      if (aligner) {
+        replay.readTransforms([alignerPtr](const tf2_msgs::TFMessage& msg, bool isStatic) {
+          alignerPtr->addTransforms(msg, isStatic);
+        });
+      }
+      subscribeInputs(replay, alignerPtr);
+      const auto start = std::chrono::steady_clock::now();
+      const sf_filter::ReplaySummary s = replay.run();
+      const double wall =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::uint64_t gated = 0, late = 0, substituted = 0;
+      for (sf_filter::Index i = 0; i < replay.core().inputCount(); ++i) {
+        gated += replay.core().counters(i).gated;
+        late += replay.core().counters(i).late;
+        substituted += replay.core().counters(i).substituted;
+      }
+      std::cout << options.nodeName << ": " << s.messages << " messages, " << s.estimates
+                << " estimates, " << s.dropped << " dropped values (" << late << " late), " << gated
+                << " gated, " << substituted << " substitutes, "
+                << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
+                << " us per estimation step, " << wall << " s in all" << std::endl;
+      printInputCounters(options.nodeName, replay.core());
+      if (aligner) {
+        std::cout << options.nodeName << ": " << aligner->transforms()
+                  << " transforms read from the bag's /tf_static and /tf ("
+                  << aligner->rejectedTransforms() << " refused by tf2), "
+                  << aligner->droppedTotal() << " values dropped: not rotatable into '"
+                  << aligner->baseFrame() << "'" << std::endl;
+      }
+    } catch (const std::exception& e) {
+      std::cerr << program << ": " << e.what() << std::endl;
+      return EXIT_FAILURE;
     }
-    subscribeInputs(replay, alignerPtr);
-    const auto start = std::chrono::steady_clock::now();
-    const sf_filter::ReplaySummary s = replay.run();
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::uint64_t gated = 0, late = 0, substituted = 0;
-    for (sf_filter::Index i = 0; i < replay.core().inputCount(); ++i) {
-      gated += replay.core().counters(i).gated;
-      late += replay.core().counters(i).late;
-      substituted += replay.core().counters(i).substituted;
+    return EXIT_SUCCESS;
+  };
+  return sf_filter::runContained(replayBag, [&](int signal) {
+    for (const std::string& path : {options.csvPath, options.outputBag}) {
+      if (!path.empty()) std::remove(sf_filter::partialPath(path).c_str());
     }
-    std::cout << options.nodeName << ": " << s.messages << " messages, " << s.estimates
-              << " estimates, " << s.dropped << " dropped values (" << late << " late), " << gated
-              << " gated, " << substituted << " substitutes, "
-              << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
-              << " us per estimation step, " << wall << " s in all" << std::endl;
-    printInputCounters(options.nodeName, replay.core());
-    if (aligner) {
-      std::cout << options.nodeName << ": " << aligner->transforms()
-                << " transforms read from the bag's /tf_static and /tf ("
-                << aligner->rejectedTransforms() << " refused by tf2), "
-                << aligner->droppedTotal() << " values dropped: not rotatable into '"
-                << aligner->baseFrame() << "'" << std::endl;
+    if (signal == SIGINT || signal == SIGTERM || signal == SIGHUP) {
+      std::cerr << program << ": interrupted (" << strsignal(signal) << "), no output written"
+                << std::endl;
+    } else {
+      std::cerr << program << ": reading bag " << options.inputBag << " crashed the bag library ("
+                << strsignal(signal) << "): the bag is corrupt; no output written" << std::endl;
     }
-  } catch (const std::exception& e) {
-    std::cerr << program << ": " << e.what() << std::endl;
-    return EXIT_FAILURE;
-  }
-  return EXIT_SUCCESS;
+  });
 }
 
 }  // namespace
@@ -392,6 +434,9 @@ int main(int argc, char** argv) {
   subscribeInputs(*node, aligner ? &*aligner : nullptr);
   node->start();
   ros::spin();
+  // On stdout: ros::shutdown() has ended rosconsole, so ROS_INFO would print nothing now.
+  std::cout << ros::this_node::getName() << ": " << inputCountersLine(node->core(), inputNames())
+            << std::endl;
   return EXIT_SUCCESS;
 }
 

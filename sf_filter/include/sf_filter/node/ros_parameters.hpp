@@ -26,18 +26,38 @@ class ParameterOverrideError : public std::runtime_error {
 
 namespace detail {
 
-inline double toDouble(const XmlRpc::XmlRpcValue& v, const std::string& name) {
+/// What a parameter value is, for the error messages: "a string (\"abc\")", "a list of 3".
+inline std::string describe(const XmlRpc::XmlRpcValue& v) {
+  switch (v.getType()) {
+    case XmlRpc::XmlRpcValue::TypeBoolean:
+      return std::string("a boolean (") + (static_cast<bool>(v) ? "true" : "false") + ")";
+    case XmlRpc::XmlRpcValue::TypeInt:
+      return "an integer (" + std::to_string(static_cast<int>(v)) + ")";
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      return "a number (" + std::to_string(static_cast<double>(v)) + ")";
+    case XmlRpc::XmlRpcValue::TypeString:
+      return "a string (\"" + static_cast<std::string>(v) + "\")";
+    case XmlRpc::XmlRpcValue::TypeArray:
+      return "a list of " + std::to_string(v.size());
+    case XmlRpc::XmlRpcValue::TypeStruct:
+      return "a dictionary";
+    default:
+      return "a value of another type";
+  }
+}
+
+/// `v` as a number; `where` names it in the message ("parameter ~x entry 2").
+inline double toDouble(const XmlRpc::XmlRpcValue& v, const std::string& where) {
   if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
   if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
-  throw ParameterOverrideError("parameter ~" + name +
-                               ": expected numbers, found a non-numeric entry");
+  throw ParameterOverrideError(where + ": expected a number, found " + describe(v));
 }
 
 /// One numeric entry of a per-input list; std::invalid_argument(`expected`) if it is not.
 inline double numberEntry(const XmlRpc::XmlRpcValue& v, const char* expected) {
   if (v.getType() != XmlRpc::XmlRpcValue::TypeDouble &&
       v.getType() != XmlRpc::XmlRpcValue::TypeInt) {
-    throw std::invalid_argument(expected);
+    throw std::invalid_argument(std::string(expected) + ", found " + describe(v));
   }
   return toDouble(v, "");
 }
@@ -55,7 +75,8 @@ bool readMatrixParameter(const ros::NodeHandle& pnh, const std::string& name,
   const std::string expected = std::to_string(rows * cols) + " numbers (" + std::to_string(rows) +
                                "x" + std::to_string(cols) + ", row-major)";
   if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
-    throw ParameterOverrideError("parameter ~" + name + ": expected a list of " + expected);
+    throw ParameterOverrideError("parameter ~" + name + ": expected a list of " + expected +
+                                 ", found " + detail::describe(value));
   }
   Derived result(rows, cols);
   if (value.size() > 0 && value[0].getType() == XmlRpc::XmlRpcValue::TypeArray) {
@@ -66,9 +87,14 @@ bool readMatrixParameter(const ros::NodeHandle& pnh, const std::string& name,
     for (int r = 0; r < value.size(); ++r) {
       if (value[r].getType() != XmlRpc::XmlRpcValue::TypeArray || value[r].size() != cols) {
         throw ParameterOverrideError("parameter ~" + name + ": row " + std::to_string(r) +
-                                     " must be a list of " + std::to_string(cols) + " numbers");
+                                     " must be a list of " + std::to_string(cols) +
+                                     " numbers, found " + detail::describe(value[r]));
       }
-      for (int c = 0; c < value[r].size(); ++c) result(r, c) = detail::toDouble(value[r][c], name);
+      for (int c = 0; c < value[r].size(); ++c) {
+        result(r, c) =
+            detail::toDouble(value[r][c], "parameter ~" + name + " row " + std::to_string(r) +
+                                              " entry " + std::to_string(c));
+      }
     }
   } else {
     if (value.size() != rows * cols) {
@@ -76,7 +102,8 @@ bool readMatrixParameter(const ros::NodeHandle& pnh, const std::string& name,
                                    std::to_string(value.size()));
     }
     for (int k = 0; k < value.size(); ++k) {
-      result(k / cols, k % cols) = detail::toDouble(value[k], name);
+      result(k / cols, k % cols) =
+          detail::toDouble(value[k], "parameter ~" + name + " entry " + std::to_string(k));
     }
   }
   out = result;
@@ -90,10 +117,11 @@ bool readScalarParameter(const ros::NodeHandle& pnh, const std::string& name, T&
   XmlRpc::XmlRpcValue value;
   if (!pnh.getParam(name, value)) return false;
   if constexpr (std::is_floating_point_v<T>) {
-    out = static_cast<T>(detail::toDouble(value, name));
+    out = static_cast<T>(detail::toDouble(value, "parameter ~" + name));
   } else {
     if (value.getType() != XmlRpc::XmlRpcValue::TypeInt) {
-      throw ParameterOverrideError("parameter ~" + name + ": expected an integer");
+      throw ParameterOverrideError("parameter ~" + name + ": expected an integer, found " +
+                                   detail::describe(value));
     }
     const int v = static_cast<int>(value);
     if (std::is_unsigned_v<T> && v < 0) {
@@ -115,7 +143,8 @@ inline void forEachInputEntry(const ros::NodeHandle& pnh, const std::string& nam
   if (!pnh.getParam(name, value)) return;
   const std::string expected = std::to_string(inputs) + " entries (one per TOPICS_IN entry)";
   if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
-    throw ParameterOverrideError("parameter ~" + name + ": expected a list of " + expected);
+    throw ParameterOverrideError("parameter ~" + name + ": expected a list of " + expected +
+                                 ", found " + detail::describe(value));
   }
   if (static_cast<std::size_t>(value.size()) != inputs) {
     throw ParameterOverrideError("parameter ~" + name + ": expected " + expected + ", found " +
@@ -221,12 +250,30 @@ inline FaultSettings loadFaultParameters(const ros::NodeHandle& pnh,
   return settings;
 }
 
+namespace detail {
+
+/// ~name, if set, must be of `type`. For the parameters FusionNode reads with
+/// NodeHandle::param(), which would silently use the default for a value of another type.
+inline void requireType(const ros::NodeHandle& pnh, const std::string& name,
+                        XmlRpc::XmlRpcValue::Type type, const char* expected) {
+  XmlRpc::XmlRpcValue value;
+  if (pnh.getParam(name, value) && value.getType() != type) {
+    throw ParameterOverrideError("parameter ~" + name + ": expected " + expected + ", found " +
+                                 describe(value));
+  }
+}
+
+}  // namespace detail
+
 /// The header's parameters with the private ROS parameters applied. `Parameters` is the
 /// generated sf_config::Parameters; `makeDefaults(period_ms)` evaluates the header's entries
 /// for a period (they may use T).
 template <class Parameters, class MakeDefaults>
 Parameters loadParameters(const ros::NodeHandle& pnh, MakeDefaults makeDefaults,
                           double headerPeriodMs) {
+  detail::requireType(pnh, "frame_id", XmlRpc::XmlRpcValue::TypeString, "a string");
+  detail::requireType(pnh, "child_frame_id", XmlRpc::XmlRpcValue::TypeString, "a string");
+  detail::requireType(pnh, "publish_tf", XmlRpc::XmlRpcValue::TypeBoolean, "a boolean");
   double period = headerPeriodMs;
   readScalarParameter(pnh, "estimation_period", period);
   if (!(period > 0.0)) {
@@ -248,11 +295,14 @@ Parameters loadParameters(const ros::NodeHandle& pnh, MakeDefaults makeDefaults,
     XmlRpc::XmlRpcValue value;
     pnh.getParam("weighting_coefficients", value);
     if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
-      throw ParameterOverrideError("parameter ~weighting_coefficients: expected a list");
+      throw ParameterOverrideError(
+          "parameter ~weighting_coefficients: expected a list of numbers, found " +
+          detail::describe(value));
     }
     p.weighting_coefficients.resize(value.size());
     for (int k = 0; k < value.size(); ++k) {
-      p.weighting_coefficients(k) = detail::toDouble(value[k], "weighting_coefficients");
+      p.weighting_coefficients(k) = detail::toDouble(
+          value[k], "parameter ~weighting_coefficients entry " + std::to_string(k));
     }
   }
   return p;

@@ -6,12 +6,19 @@
 // readTransforms() (see replay_frame_aligner.hpp).
 #pragma once
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <exception>
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <iostream>
 #include <map>
 #include <memory>
+#include <new>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -26,22 +33,20 @@
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
 #include "sf_filter/node/node_description.hpp"
+#include "sf_filter/replay/atomic_output.hpp"
 
 namespace sf_filter {
 
-/// A replay that cannot run (unreadable bag, missing topic, wrong type, unwritable output).
-class ReplayError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 struct ReplayOptions {
   std::string inputBag;
-  std::string csvPath;     ///< empty: no CSV
-  std::string outputBag;   ///< empty: no bag
+  std::string csvPath;                 ///< empty: no CSV
+  std::string outputBag;               ///< empty: no bag
   std::string nodeName = "sf_filter";  ///< namespace of the ~state topic in the output bag
   std::string frameId = "odom";
   std::string childFrameId = "base_link";
+  /// A configured topic missing from the bag: an error (false), or a warning, the input then
+  /// missing in every period (true; at least one configured topic must be there).
+  bool allowMissingTopics = false;
 };
 
 struct ReplaySummary {
@@ -49,32 +54,6 @@ struct ReplaySummary {
   std::uint64_t estimates = 0;
   std::uint64_t dropped = 0;
   double estimatorSeconds = 0.0;
-};
-
-/// An output file written under a temporary name and renamed into place only when the whole
-/// replay succeeded, so a failed run never leaves a partial result behind.
-class AtomicOutput {
- public:
-  explicit AtomicOutput(std::string path)
-      : path_(std::move(path)), temporary_(path_.empty() ? "" : path_ + ".partial") {}
-  AtomicOutput(const AtomicOutput&) = delete;
-  AtomicOutput& operator=(const AtomicOutput&) = delete;
-  ~AtomicOutput() {
-    if (!committed_ && !temporary_.empty()) std::remove(temporary_.c_str());
-  }
-  bool enabled() const { return !path_.empty(); }
-  const std::string& temporary() const { return temporary_; }
-  void commit() {
-    if (!enabled()) return;
-    if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
-      throw ReplayError("cannot move " + temporary_ + " to " + path_);
-    }
-    committed_ = true;
-  }
-
- private:
-  std::string path_, temporary_;
-  bool committed_ = false;
 };
 
 template <class Filter>
@@ -101,6 +80,8 @@ class BagReplay {
   template <class Message, class Dispatch>
   void subscribe(const std::string& topic, Dispatch dispatch) {
     const std::string name = absolute(topic);
+    expectedTypes_[name] = {ros::message_traits::DataType<Message>::value(),
+                            ros::message_traits::MD5Sum<Message>::value()};
     handlers_[name] = [this, name, dispatch](const rosbag::MessageInstance& m, double now) {
       dispatch(*instantiate<Message>(m, name), *this, now);
     };
@@ -124,44 +105,41 @@ class BagReplay {
   void readTransforms(TransformSink sink) { transformSink_ = std::move(sink); }
 
   /// Replays the whole bag. Throws ReplayError with a one-line reason on failure; outputs are
-  /// then not created.
+  /// then not created. The bag's topics and types are checked before any output is opened.
   ReplaySummary run() {
     rosbag::Bag input;
-    try {
-      input.open(options_.inputBag, rosbag::bagmode::Read);
-    } catch (const rosbag::BagException& e) {
-      throw ReplayError("cannot read bag " + options_.inputBag + ": " + e.what());
-    }
-    const std::map<std::string, std::string> recorded = recordedNames(input);
+    openInput(input);
+    const std::map<std::string, Recorded> recorded = readInput([&] { return connections(input); });
+    checkTypes(recorded);
     std::vector<std::string> topics = recordedTopics(recorded);
     std::string tfTopic;  // the bag's name of /tf, if read
     if (transformSink_) {
-      if (recorded.count(kTfStatic)) readStaticTransforms(input, recorded.at(kTfStatic));
-      if (recorded.count(kTf)) topics.push_back(tfTopic = recorded.at(kTf));
+      if (recorded.count(kTfStatic)) {
+        readInput([&] { readStaticTransforms(input, recorded.at(kTfStatic).name); });
+      }
+      if (recorded.count(kTf)) topics.push_back(tfTopic = recorded.at(kTf).name);
     }
 
     AtomicOutput csvFile(options_.csvPath), bagFile(options_.outputBag);
     std::ofstream csv;
     if (csvFile.enabled()) {
       csv.open(csvFile.temporary());
-      if (!csv) throw ReplayError("cannot write " + csvFile.temporary());
+      if (!csv) throw writeError(csvFile);
       writeCsvHeader(csv);
     }
-    std::optional<rosbag::Bag> output;
+    OutputBag output;
     if (bagFile.enabled()) {
-      output.emplace();
-      try {
-        output->open(bagFile.temporary(), rosbag::bagmode::Write);
-      } catch (const rosbag::BagException& e) {
-        throw ReplayError("cannot write bag " + bagFile.temporary() + ": " + e.what());
-      }
+      writeOutput(bagFile, [&] { output.open(bagFile.temporary()); });
     }
     auto write = [&](const typename Core::Estimate& e) {
       ++summary_.estimates;
-      if (csv.is_open()) writeCsvRow(csv, e);
-      if (output) writeBag(*output, e);
+      if (csv.is_open()) {
+        writeCsvRow(csv, e);
+        if (!csv) throw writeError(csvFile);
+      }
+      if (output) writeOutput(bagFile, [&] { writeBag(*output, e); });
     };
-    try {
+    readInput([&] {
       rosbag::View view(input, rosbag::TopicQuery(topics));
       for (const rosbag::MessageInstance& m : view) {
         if (!tfTopic.empty() && m.getTopic() == tfTopic) {
@@ -173,16 +151,12 @@ class BagReplay {
         handlers_.at(absolute(m.getTopic()))(m, now);
         ++summary_.messages;
       }
-    } catch (const rosbag::BagException& e) {
-      throw ReplayError("bag " + options_.inputBag + " is corrupt or truncated: " + e.what());
-    } catch (const ros::Exception& e) {
-      throw ReplayError("bag " + options_.inputBag + " could not be decoded: " + e.what());
-    }
+    });
     if (csv.is_open()) {
       csv.close();
-      if (!csv) throw ReplayError("writing " + csvFile.temporary() + " failed");
+      if (!csv) throw writeError(csvFile);
     }
-    if (output) output->close();
+    if (output) writeOutput(bagFile, [&] { output.close(); });
     csvFile.commit();
     bagFile.commit();
     summary_.estimatorSeconds = core_.estimatorSeconds();
@@ -217,15 +191,124 @@ class BagReplay {
     return msg;
   }
 
-  /// Absolute topic name -> the bag's name for it (a recorder may have stored names without
-  /// the leading slash).
-  static std::map<std::string, std::string> recordedNames(rosbag::Bag& bag) {
-    std::map<std::string, std::string> recorded;
+  /// A topic of the bag: its recorded name (a recorder may have stored names without the
+  /// leading slash) and the message types of its connections.
+  struct Recorded {
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> types;  ///< (datatype, md5sum)
+  };
+
+  /// The output bag. When the replay fails it is abandoned, not closed: closing writes the
+  /// bag's index, and if that fails too (the disk is full) rosbag::Bag's destructor would throw
+  /// and terminate the program. Its temporary file is removed by its AtomicOutput.
+  class OutputBag {
+   public:
+    OutputBag() = default;
+    OutputBag(const OutputBag&) = delete;
+    OutputBag& operator=(const OutputBag&) = delete;
+    ~OutputBag() {
+      if (bag_ && std::uncaught_exceptions() > 0) bag_.release();  // NOLINT: abandoned on purpose
+    }
+    void open(const std::string& path) {
+      bag_ = std::make_unique<rosbag::Bag>();
+      bag_->open(path, rosbag::bagmode::Write);
+    }
+    void close() { bag_->close(); }
+    explicit operator bool() const { return bag_ != nullptr; }
+    rosbag::Bag& operator*() { return *bag_; }
+
+   private:
+    std::unique_ptr<rosbag::Bag> bag_;
+  };
+
+  struct ExpectedType {
+    std::string datatype, md5sum;
+  };
+
+  void openInput(rosbag::Bag& bag) const {
+    const std::string& path = options_.inputBag;
+    if (::access(path.c_str(), R_OK) != 0) {
+      throw ReplayError("cannot read bag " + path + ": " + std::strerror(errno));
+    }
+    try {
+      bag.open(path, rosbag::bagmode::Read);
+    } catch (const rosbag::BagException& e) {
+      throw ReplayError("cannot read bag " + path +
+                        " (not a bag, or truncated or corrupt): " + e.what());
+    } catch (const std::bad_alloc&) {
+      throw ReplayError("cannot read bag " + path + ": corrupt (a record claims more memory " +
+                        "than there is)");
+    }
+  }
+
+  /// Runs `read` on the input bag; its library's exceptions become a ReplayError naming it.
+  template <class Read>
+  auto readInput(Read read) const {
+    const std::string& path = options_.inputBag;
+    try {
+      return read();
+    } catch (const rosbag::BagException& e) {
+      throw ReplayError("bag " + path + " is corrupt or truncated: " + e.what());
+    } catch (const ros::Exception& e) {  // a message that does not deserialise
+      throw ReplayError("bag " + path + " is corrupt, a message could not be decoded: " + e.what());
+    } catch (const std::bad_alloc&) {
+      throw ReplayError("bag " + path + " is corrupt: a record claims more memory than there is");
+    }
+  }
+
+  /// Runs `write` on an output bag; a failure becomes a ReplayError naming the output.
+  template <class Write>
+  static void writeOutput(const AtomicOutput& file, Write write) {
+    try {
+      write();
+    } catch (const rosbag::BagException& e) {
+      throw ReplayError("cannot write " + file.path() + " (as " + file.temporary() +
+                        "): " + e.what());
+    }
+  }
+
+  static ReplayError writeError(const AtomicOutput& file) {
+    return ReplayError("cannot write " + file.path() + " (as " + file.temporary() +
+                       "): " + std::strerror(errno));
+  }
+
+  /// Absolute topic name -> what the bag holds under it.
+  static std::map<std::string, Recorded> connections(rosbag::Bag& bag) {
+    std::map<std::string, Recorded> recorded;
     rosbag::View all(bag);
     for (const rosbag::ConnectionInfo* c : all.getConnections()) {
-      recorded[absolute(c->topic)] = c->topic;
+      Recorded& r = recorded[absolute(c->topic)];
+      r.name = c->topic;
+      r.types.emplace_back(c->datatype, c->md5sum);
     }
     return recorded;
+  }
+
+  /// Every connection of a topic read must hold the message type the configuration expects
+  /// (the same name and definition), checked before anything is written.
+  void checkTypes(const std::map<std::string, Recorded>& recorded) const {
+    std::map<std::string, ExpectedType> expected = expectedTypes_;
+    if (transformSink_) {
+      const ExpectedType tf{ros::message_traits::DataType<tf2_msgs::TFMessage>::value(),
+                            ros::message_traits::MD5Sum<tf2_msgs::TFMessage>::value()};
+      expected[kTf] = tf;
+      expected[kTfStatic] = tf;
+    }
+    for (const auto& [topic, type] : expected) {
+      const auto it = recorded.find(topic);
+      if (it == recorded.end()) continue;
+      for (const auto& [datatype, md5sum] : it->second.types) {
+        if (datatype != type.datatype) {
+          throw ReplayError("bag " + options_.inputBag + ": topic " + topic + " holds " + datatype +
+                            ", the configuration reads " + type.datatype);
+        }
+        if (md5sum != type.md5sum && md5sum != "*") {
+          throw ReplayError("bag " + options_.inputBag + ": topic " + topic + " holds " + datatype +
+                            " of another definition (md5sum " + md5sum + ", this build has " +
+                            type.md5sum + ")");
+        }
+      }
+    }
   }
 
   void readStaticTransforms(rosbag::Bag& bag, const std::string& topic) {
@@ -235,18 +318,28 @@ class BagReplay {
     }
   }
 
-  /// The bag's names of the topics the configuration reads; throws when one is missing.
-  std::vector<std::string> recordedTopics(
-      const std::map<std::string, std::string>& recorded) const {
-    std::vector<std::string> topics;
+  /// The bag's names of the topics the configuration reads. A missing one is an error, or
+  /// with allowMissingTopics a warning (an error still when none is there).
+  std::vector<std::string> recordedTopics(const std::map<std::string, Recorded>& recorded) const {
+    std::vector<std::string> topics, missing;
     for (const auto& handler : handlers_) {
       const auto it = recorded.find(handler.first);
       if (it == recorded.end()) {
-        throw ReplayError("bag " + options_.inputBag + " has no topic " + handler.first +
-                          " that the configuration reads");
+        missing.push_back(handler.first);
+      } else {
+        topics.push_back(it->second.name);
       }
-      topics.push_back(it->second);
     }
+    if (missing.empty()) return topics;
+    std::string list;
+    for (const std::string& topic : missing) list += (list.empty() ? "" : ", ") + topic;
+    const std::string what =
+        "bag " + options_.inputBag + " has no topic " + list + " that the configuration reads";
+    if (!options_.allowMissingTopics) {
+      throw ReplayError(what + " (--allow-missing-topics replays without it)");
+    }
+    if (topics.empty()) throw ReplayError(what + ": none of its topics is there");
+    std::cerr << "warning: " << what << ": its inputs are missing in every period" << std::endl;
     return topics;
   }
 
@@ -288,6 +381,7 @@ class BagReplay {
   NodeDescription description_;
   ReplayOptions options_;
   std::map<std::string, Handler> handlers_;
+  std::map<std::string, ExpectedType> expectedTypes_;
   TransformSink transformSink_;
   ReplaySummary summary_;
 };

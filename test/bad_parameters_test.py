@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""Bad private parameters of a fusion node (test/bad_parameters.test): sf_train_kf
+(config/train_kf.h: n = 2 states, m = 2 inputs, KF) is started once per case with one bad
+parameter under its own name; each must be refused at start with exit status 1 and a fatal
+message naming the parameter and what was expected (size or type), and no crash. A control
+case with valid overrides of the same parameters must start and keep running.
+"""
+
+import os
+import signal
+import subprocess
+import sys
+import time
+import unittest
+
+import rospy
+import rostest
+
+EXE_NAME = "sf_train_kf"
+
+# (parameter, value, words the fatal line must contain)
+CASES = [
+    ("process_noise_covariance", [0.001, 0.0, 0.01],
+     "parameter ~process_noise_covariance: expected 4 numbers (2x2, row-major), found 3"),
+    ("process_noise_covariance", [[0.001, 0.0], [0.0]],
+     "parameter ~process_noise_covariance: row 1 must be a list of 2 numbers, found a list of 1"),
+    ("process_noise_covariance", [[0.001, 0.0], [0.0, [0.01]]],
+     "parameter ~process_noise_covariance row 1 entry 1: expected a number, found a list of 1"),
+    ("process_noise_covariance", "0.001 0 0 0.01",
+     "parameter ~process_noise_covariance: expected a list of 4 numbers (2x2, row-major), "
+     "found a string"),
+    ("measurement_noise_covariance", [0.25, 0.0, 0.0, "x"],
+     "parameter ~measurement_noise_covariance entry 3: expected a number, found a string"),
+    ("initial_state", [0.0, 1.0, 2.0],
+     "parameter ~initial_state: expected 2 numbers (2x1, row-major), found 3"),
+    ("estimation_period", "fast",
+     "parameter ~estimation_period: expected a number, found a string (\"fast\")"),
+    ("estimation_period", [100],
+     "parameter ~estimation_period: expected a number, found a list of 1"),
+    ("estimation_period", 0, "parameter ~estimation_period: must be a positive number of ms"),
+    ("random_seed", 1.5, "parameter ~random_seed: expected an integer, found a number"),
+    ("random_seed", -3, "parameter ~random_seed: must not be negative"),
+    ("input_gate", [1.0], "parameter ~input_gate: expected 2 entries (one per TOPICS_IN entry), "
+     "found 1"),
+    ("input_alignment", "LAST", "parameter ~input_alignment: expected a list of 2 entries "
+     "(one per TOPICS_IN entry), found a string"),
+    ("align_by_stamp", [False, "yes"], "parameter ~align_by_stamp entry 1: expected true or false"),
+    ("frame_id", 5, "parameter ~frame_id: expected a string, found an integer (5)"),
+    ("publish_tf", "no", "parameter ~publish_tf: expected a boolean, found a string"),
+]
+
+
+def find_executable(name):
+    from catkin.find_in_workspaces import find_in_workspaces
+
+    found = find_in_workspaces(["libexec"], project="sf_pkg", path=name)
+    if not found:
+        raise RuntimeError("%s not found in the catkin workspaces" % name)
+    return found[0]
+
+
+class BadParametersTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.exe = find_executable(EXE_NAME)
+
+    def start(self, name, params):
+        for key, value in params.items():
+            rospy.set_param("/%s/%s" % (name, key), value)
+        return subprocess.Popen([self.exe, "__name:=" + name], stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, universal_newlines=True)
+
+    def test_each_bad_parameter_is_refused_at_start(self):
+        for k, (param, value, words) in enumerate(CASES):
+            with self.subTest(param=param, value=value):
+                name = "bad_%d" % k
+                proc = self.start(name, {param: value})
+                try:
+                    out, err = proc.communicate(timeout=20)
+                except subprocess.TimeoutExpired:
+                    proc.send_signal(signal.SIGINT)
+                    proc.communicate(timeout=10)
+                    self.fail("the node started with ~%s = %r" % (param, value))
+                self.assertEqual(proc.returncode, 1, out + err)
+                fatal = [line for line in err.splitlines() if "refusing to start" in line]
+                self.assertEqual(len(fatal), 1, err)
+                self.assertIn("/%s: refusing to start: %s" % (name, words), fatal[0])
+
+    def test_valid_overrides_start(self):
+        proc = self.start("good", {
+            "process_noise_covariance": [[0.001, 0], [0, 0.01]],
+            "measurement_noise_covariance": [0.25, 0.0, 0.0, 0.04],
+            "initial_state": [0, 1], "estimation_period": 50, "random_seed": 3,
+            "input_gate": [0, 9.0], "input_alignment": ["AVERAGE", "LAST"],
+            "align_by_stamp": [False, True], "frame_id": "map", "publish_tf": False})
+        time.sleep(5.0)
+        if proc.poll() is not None:
+            self.fail("the node exited: " + "".join(proc.communicate()))
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=20)
+        self.assertNotIn("refusing to start", err)
+
+
+if __name__ == "__main__":
+    rospy.init_node("bad_parameters_test")
+    rostest.rosrun("sf_pkg", "bad_parameters", BadParametersTest, sys.argv)
