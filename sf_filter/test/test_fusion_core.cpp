@@ -3,7 +3,10 @@
 // same Kalman filter stepped by hand with the measurement the thesis's alignment defines.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <iomanip>
 #include <limits>
 #include <vector>
 
@@ -125,6 +128,84 @@ TEST(FusionCore, TwoMessagesAtAPeriodEndAreNoJumpBackwards) {
   EXPECT_EQ(out.estimates.back().presentInputs, 2);
   // A real jump back, by more than the tolerance, still resets.
   EXPECT_EQ(core.advanceTo(end50 - 1e-5, out), sf_filter::ClockEvent::JumpedBackwards);
+}
+
+/// A ROS time as ros::Time::toSec() gives it.
+double rosSeconds(std::uint32_t sec, std::uint32_t nsec) {
+  return static_cast<double>(sec) + 1e-9 * static_cast<double>(nsec);
+}
+
+/// The clock readings of the online runs of launch/soccer_fusion_block.launch whose nodes
+/// reset (logged there): the schedule starts at the bag's first instant, the /clock rosbag
+/// play publishes during its -d delay; readings every millisecond (mid-period, so that only
+/// the last one matters) lead to the logged reading, which the timer and a subscription then
+/// both pass. With `lag`, the schedule is the lag earlier. Returns what the second one gave.
+sf_filter::ClockEvent secondReadingOfTheOnlineReset(double lag, std::uint32_t nsec) {
+  Core::Options options;
+  options.period = 0.001;
+  options.maxMeasurementLag = lag;
+  Core core(makeTrain(), options);
+  Collector out;
+  EXPECT_EQ(core.advanceTo(rosSeconds(1700000000, 0), out), sf_filter::ClockEvent::Started);
+  const std::uint64_t last = 4000000000ull + nsec;  // ns since the start
+  for (std::uint64_t ns = 500000; ns < last; ns += 1000000) {
+    const double reading = rosSeconds(static_cast<std::uint32_t>(1700000000 + ns / 1000000000),
+                                      static_cast<std::uint32_t>(ns % 1000000000));
+    EXPECT_EQ(core.advanceTo(reading, out), sf_filter::ClockEvent::Normal) << ns << " ns";
+  }
+  const double t = rosSeconds(1700000004, nsec);
+  EXPECT_EQ(core.advanceTo(t, out), sf_filter::ClockEvent::Normal);
+  const sf_filter::ClockEvent second = core.advanceTo(t, out);
+  EXPECT_EQ(core.clockResets(), second == sf_filter::ClockEvent::JumpedBackwards ? 1u : 0u);
+  return second;
+}
+
+TEST(FusionCore, TheSameClockReadingTwiceIsNoJumpBackwards) {
+  // The readings the nodes logged at their resets: 1700000004.576998915 in vision_kf (no lag)
+  // and 1700000004.487999034 in cwa_x (1.5 ms lag). Each lies within the tolerance (1 us)
+  // below a period's end, which makes it due, but above the start of the next period
+  // computed as its end minus the period (rounded 2.4e-7 s higher), so the same reading
+  // passed again looked like time running backwards and reset the filter.
+  EXPECT_EQ(secondReadingOfTheOnlineReset(0.0, 576998915), sf_filter::ClockEvent::Normal);
+  EXPECT_EQ(secondReadingOfTheOnlineReset(0.0015, 487999034), sf_filter::ClockEvent::Normal);
+}
+
+TEST(PeriodSchedule, AReadingItAdvancedToIsInTheCurrentPeriodAndNotBefore) {
+  // Over many readings near 1.7e9 s with a 1 ms period (jittered within 2 us of the period
+  // ends, where the rounding of the ends matters, and anywhere): after advancing by
+  // periodsDue(t), t is in the current period, neither due nor before it, and every period
+  // estimated had ended by t (by due()'s convention, with the same end times).
+  std::uint64_t state = 12345;
+  const auto next = [&state] {  // a fixed linear congruential sequence, so the test repeats
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return state >> 33;
+  };
+  const double period = 0.001;
+  for (int run = 0; run < 20; ++run) {
+    sf_filter::PeriodSchedule schedule(period);
+    const double start = rosSeconds(1700000000, static_cast<std::uint32_t>(next() % 1000000000));
+    schedule.start(start);
+    double t = start;
+    for (int i = 0; i < 20000; ++i) {
+      const std::uint64_t step = next() % 2000000;  // 0 .. 2 ms in ns
+      t += 1e-9 * static_cast<double>(step);
+      if (i % 2 == 0) {  // near an end of the schedule
+        const double k = std::round((t - start) / period);
+        const double jittered =
+            start + k * period + 1e-9 * (static_cast<double>(next() % 4000) - 2000.0);
+        t = std::max(t, jittered);  // a clock does not run backwards
+      }
+      const std::uint64_t due = schedule.periodsDue(t);
+      for (std::uint64_t d = 0; d < due; ++d) {
+        ASSERT_TRUE(schedule.due(t)) << "a period counted as due that had not ended";
+        schedule.advance();
+      }
+      ASSERT_FALSE(schedule.due(t)) << std::setprecision(17) << t;
+      ASSERT_FALSE(schedule.before(t)) << std::setprecision(17) << t << " after " << due;
+      ASSERT_TRUE(schedule.inCurrent(t)) << std::setprecision(17) << t;
+      ASSERT_EQ(schedule.indexOf(t), static_cast<std::int64_t>(schedule.index()));
+    }
+  }
 }
 
 TEST(FusionCore, DropsAndCountsNonFiniteValuesAndBadVariances) {

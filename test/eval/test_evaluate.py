@@ -275,6 +275,14 @@ class FilesAndFormatTest(unittest.TestCase):
         self.assertAlmostEqual(ev.parse_summary_timing("x, 1.5e+03 us per estimation step"), 1500.0)
         self.assertIsNone(ev.parse_summary_timing("no timing here"))
 
+    def test_summary_line_is_found_before_the_per_input_lines(self):
+        output = ("n: 10 messages, 4 estimates, 0 dropped values (0 late), 0 gated, 0 substitutes, "
+                  "1.5 us per estimation step, 0.1 s in all\n"
+                  "n: input 0: 10 received, 10 used, dropped: none, 0 gated, 0 periods timed out\n")
+        self.assertTrue(ev.summary_line(output).startswith("n: 10 messages, 4 estimates"))
+        self.assertEqual(ev.summary_line("only line\n"), "only line")
+        self.assertEqual(ev.summary_line(""), "")
+
     def test_table(self):
         truth = straight_line()
         times = [T0 + 0.1 * k for k in range(10)]

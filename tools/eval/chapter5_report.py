@@ -241,7 +241,7 @@ def main(argv=None):
                 print("error: %s" % exc, file=sys.stderr)
                 return 1
             replays[bag][run.label] = (csv_path, us)
-            print("  %-26s %s" % (run.label, summary.splitlines()[-1]), flush=True)
+            print("  %-26s %s" % (run.label, evaluate.summary_line(summary)), flush=True)
     load_after = os.getloadavg()
 
     # Evaluations: per bag and path.

@@ -170,6 +170,16 @@ def evaluate(estimate, truth, tolerance=DEFAULT_TIME_TOLERANCE):
 SUMMARY_TIME_RE = re.compile(r"([0-9.eE+-]+)\s*us per estimation step")
 
 
+def summary_line(text):
+    """The replay's summary line ("N messages, N estimates, ...") of its output; the per-input
+    counter lines follow it. The last line when there is no summary line."""
+    lines = text.splitlines()
+    for line in lines:
+        if " estimates, " in line:
+            return line
+    return lines[-1] if lines else ""
+
+
 def parse_summary_timing(text):
     """Mean time per estimation step [us] from a replay summary line, or None."""
     found = SUMMARY_TIME_RE.findall(text)

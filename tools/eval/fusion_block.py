@@ -128,9 +128,9 @@ def run_chain(bag, lib_dir, work_dir, timeout=120, log=print, record=False):
     for name, label in SENSOR_FILTERS:
         csvs[label] = os.path.join(work_dir, label + ".csv")
         stage_bags.append(os.path.join(work_dir, label + ".bag"))
-        summaries[label] = pioneer_nodes.replay(exe(name), bag, csvs[label],
-                                                ["--bag", stage_bags[-1], "--name", label],
-                                                timeout).splitlines()[-1]
+        output = pioneer_nodes.replay(exe(name), bag, csvs[label],
+                                      ["--bag", stage_bags[-1], "--name", label], timeout)
+        summaries[label] = evaluate.summary_line(output)
         log("  %-12s %s" % (label, summaries[label]))
     merged = os.path.join(work_dir, "sensor_filters.bag")
     counts = merge_bags(stage_bags, merged, keep=is_position)
@@ -140,9 +140,9 @@ def run_chain(bag, lib_dir, work_dir, timeout=120, log=print, record=False):
         label = "cwa_" + axis
         axis_csvs.append(os.path.join(work_dir, label + ".csv"))
         axis_bags.append(os.path.join(work_dir, label + ".bag"))
-        summaries[label] = pioneer_nodes.replay(exe(name), merged, axis_csvs[-1],
-                                                ["--bag", axis_bags[-1], "--name", label],
-                                                timeout).splitlines()[-1]
+        output = pioneer_nodes.replay(exe(name), merged, axis_csvs[-1],
+                                      ["--bag", axis_bags[-1], "--name", label], timeout)
+        summaries[label] = evaluate.summary_line(output)
         log("  %-12s %s" % (label, summaries[label]))
     csvs["fusion_block"] = os.path.join(work_dir, "fusion_block.csv")
     join_axes(axis_csvs[0], axis_csvs[1], csvs["fusion_block"])

@@ -90,7 +90,7 @@ def run_one(exe, bag, variant, work_dir, timeout):
     csv_path = os.path.join(work_dir, name)
     summary = pioneer_nodes.replay(exe, bag, csv_path, variant.args, timeout)
     ev = evaluate.evaluate(evaluate.load_result_csv(csv_path), evaluate.load_truth(bag))
-    return ev, evaluate.parse_summary_timing(summary), summary.splitlines()[-1]
+    return ev, evaluate.parse_summary_timing(summary), evaluate.summary_line(summary)
 
 
 def mean_sd(values):

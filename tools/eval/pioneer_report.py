@@ -165,7 +165,7 @@ def main(argv=None):
         with open(os.path.join(replay_dir, pioneer_nodes.slug(label) + ".txt"), "w") as f:
             f.write(" ".join([exe, "--replay", args.bag, "--csv", csv_path] + extra) + "\n")
             f.write(summary + "\n")
-        print("  %-24s %s" % (label, summary.splitlines()[-1] if summary else ""))
+        print("  %-24s %s" % (label, evaluate.summary_line(summary)))
         us = evaluate.parse_summary_timing(summary)
         for row_label, loader, plotted in paths_of(label, config, csv_path):
             if us is not None:

@@ -82,7 +82,7 @@ def run_bag(bag, lib_dir, work_dir, timeout, log=print):
         summary = pioneer_nodes.replay(os.path.join(lib_dir, EXE), bag, csvs[label], extra,
                                        timeout)
         timings[label] = evaluate.parse_summary_timing(summary)
-        log("  %-22s %-28s %s" % (name, label, summary.splitlines()[-1]))
+        log("  %-22s %-28s %s" % (name, label, evaluate.summary_line(summary)))
     chain, summaries = fusion_block.run_chain(bag, lib_dir, os.path.join(out, "fusion_block"),
                                               timeout, log=lambda s: log("  %-22s %s" % (name, s)))
     # time of one estimate of the block: its four nodes' steps

@@ -115,7 +115,7 @@ def report_bag(bag, exe, replay_dir, out_dir, timeout):
     summary = pioneer_nodes.replay(exe, bag, csv_path, [], timeout)
     with open(os.path.join(replay_dir, name + ".txt"), "w") as f:
         f.write(" ".join([exe, "--replay", bag, "--csv", csv_path]) + "\n" + summary + "\n")
-    print("  %-20s %s" % (name, summary.splitlines()[-1] if summary else ""))
+    print("  %-20s %s" % (name, evaluate.summary_line(summary)))
 
     truth = evaluate.load_truth(bag)
     kf = evaluate.load_result_csv(csv_path, ["x0", "x1"])

@@ -269,6 +269,8 @@ class FusionCore {
   const std::string& lastFailure() const { return lastFailure_; }
   std::uint64_t controlNonFinite() const { return controlNonFinite_; }
   double period() const { return options_.period; }
+  /// Periods a forward clock jump may span and still have each of them estimated.
+  std::uint64_t maxCatchUpPeriods() const { return options_.maxCatchUpPeriods; }
   double maxMeasurementLag() const { return options_.maxMeasurementLag; }
   /// Wall time spent in the estimator's steps, and their number (failed steps excluded).
   double estimatorSeconds() const { return estimatorSeconds_; }

@@ -40,32 +40,34 @@ class PeriodSchedule {
     while (start_ + static_cast<double>(k - 1) * period_ > t + kTolerance) --k;
     return k;
   }
-  double currentStart() const { return currentEnd() - period_; }
+  /// Start of the current period: the previous period's end, computed like every end (not
+  /// as currentEnd() - period, which rounds differently: by 2.4e-7 s at 1.7e9 s).
+  double currentStart() const { return endOf(index_ - 1); }
   bool due(double now) const { return started_ && now + kTolerance >= currentEnd(); }
   /// Whether time t lies in the current period (by the convention of indexOf()).
   bool inCurrent(double t) const {
-    const double end = currentEnd();
-    return t + kTolerance < end && t + kTolerance >= end - period_;
+    return t + kTolerance < currentEnd() && t + kTolerance >= currentStart();
   }
   /// Whether `time` lies before the current period by more than the tolerance: the clock ran
-  /// backwards. Within the tolerance it does not: a second message at the time of a period's
-  /// end that the first one made due belongs to the next period, although currentStart(),
-  /// computed as end - period, can round above that time (by 2.4e-7 s at 1.7e9 s).
+  /// backwards. This is the negation of due() for the previous period, with the same
+  /// expression for its end, so a reading that made a period due - the same reading passed
+  /// again by the next callback, or one within the tolerance below the end - never counts as
+  /// running backwards.
   bool before(double time) const { return started_ && time + kTolerance < currentStart(); }
   void advance() { ++index_; }
 
-  /// Number of whole periods between the current end and `now` (0 when not due).
+  /// Number of periods that have ended by `now` and are not estimated yet (0 when not due):
+  /// after advancing by them, `now` lies in the current period. Counted against the end
+  /// times themselves (indexOf), never by dividing the time since the current end by the
+  /// period, whose rounding can count a period that due() would not.
   std::uint64_t periodsDue(double now) const {
     if (!due(now)) return 0;
-    return static_cast<std::uint64_t>(std::floor((now + kTolerance - currentEnd()) / period_)) + 1;
+    return static_cast<std::uint64_t>(indexOf(now)) - index_;
   }
 
   /// Moves the schedule forward by whole periods so that `now` lies in the current period,
   /// keeping the phase (used after a long gap instead of estimating every missed period).
-  void skipTo(double now) {
-    if (!due(now)) return;
-    index_ += periodsDue(now);
-  }
+  void skipTo(double now) { index_ += periodsDue(now); }
 
  private:
   /// Period ends are sums of doubles; a clock reading within a microsecond of an end counts

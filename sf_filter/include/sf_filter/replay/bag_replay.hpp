@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -147,7 +148,7 @@ class BagReplay {
           continue;
         }
         const double now = m.getTime().toSec();
-        core_.advanceTo(now, write);
+        advanceClock(now, write);
         handlers_.at(absolute(m.getTopic()))(m, now);
         ++summary_.messages;
       }
@@ -166,6 +167,22 @@ class BagReplay {
   const Core& core() const { return core_; }
 
  private:
+  /// Advances the core's clock to the message time `now` as the online node's ros::Timer
+  /// would: the timer estimates every period while rosbag play's clock runs through a gap
+  /// between messages, so a gap longer than Options::maxCatchUpPeriods periods (which the
+  /// core would skip with one estimate) is crossed in steps of one period less than that,
+  /// each estimating every period it ends. Shorter gaps take one step, as before.
+  template <class Write>
+  void advanceClock(double now, Write& write) {
+    if (clockStarted_) {
+      const std::uint64_t periods = core_.maxCatchUpPeriods();
+      const double step = static_cast<double>(periods > 1 ? periods - 1 : 1) * core_.period();
+      while (now - core_.clock() > step) core_.advanceTo(core_.clock() + step, write);
+    }
+    core_.advanceTo(now, write);
+    clockStarted_ = true;
+  }
+
   static typename Core::Options makeOptions(double period) {
     typename Core::Options options;
     options.period = period;
@@ -384,6 +401,7 @@ class BagReplay {
   std::map<std::string, ExpectedType> expectedTypes_;
   TransformSink transformSink_;
   ReplaySummary summary_;
+  bool clockStarted_ = false;  ///< the core's clock has had its first reading
 };
 
 }  // namespace sf_filter

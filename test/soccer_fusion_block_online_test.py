@@ -1,0 +1,130 @@
+#!/usr/bin/python3
+"""The soccer fusion block online (test/soccer_fusion_block_online.test): four 1 ms nodes
+(vision_kf, encoder_kf, cwa_x, cwa_y) on the /clock of rosbag play --clock --hz=1000.
+
+A node whose clock appears to run backwards resets its filter and counts it in its
+/diagnostics ("clock resets"). The bag's clock only runs forwards, so every node must report
+0 resets after the bag has played; before the schedule fix (doc/filter_node.md, "Bad input,
+clock jumps and failures") the same clock reading passed twice near 1.7e9 s reset the nodes
+in most 10 s runs. Independent of the counter, the fused position must be more accurate
+against the bag's ground truth than the raw vision frames it is built from (each frame at its
+own stamp): a reset throws the block back to its initial belief (doc/fusion_block.md: fused
+RMSE 0.078 m in a run with a reset, against vision frames of about 0.016 m).
+"""
+
+import math
+import os
+import sys
+import threading
+import time
+import unittest
+
+import genpy.dynamic
+import rospy
+import rostest
+from rosgraph_msgs.msg import Clock
+
+PKG_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(PKG_DIR, "tools", "eval"))
+sys.dont_write_bytecode = True
+import evaluate  # noqa: E402
+import fusion_block  # noqa: E402  (sf_pkg/OutputEntityStamped without generated Python)
+
+NODES = ["vision_kf", "encoder_kf", "cwa_x", "cwa_y"]
+NAMESPACE = "fusion_block"
+STARTUP = 0.1  # s of bag time
+WALL_TIMEOUT = 45.0  # s for the bag to play (2 s delay + 10 s) and the last reports
+
+
+class AnyMessageDecoder:
+    """Decodes rospy.AnyMsg by the definition its publisher sent (python3-diagnostic-msgs,
+    the Python module of /diagnostics' type, is not among the packages the build installs)."""
+
+    def __init__(self):
+        self.cls = None
+        self.lock = threading.Lock()  # rospy calls back from one thread per publisher
+
+    def __call__(self, raw):
+        with self.lock:
+            if self.cls is None:
+                name = raw._connection_header["type"]
+                definition = raw._connection_header["message_definition"]
+                self.cls = genpy.dynamic.generate_dynamic(name, definition)[name]
+        return self.cls().deserialize(raw._buff)
+
+
+class SoccerFusionBlockOnlineTest(unittest.TestCase):
+    def test_no_clock_reset_and_fused_beats_vision(self):
+        bag = rospy.get_param("~bag")
+        duration = rospy.get_param("~duration")
+        truth = evaluate.load_truth(bag)
+        end = truth.t[0] + duration
+        vision = evaluate.load_pose_bag(bag, "vision/pose", with_heading=False)
+
+        reports = {}  # node -> (wall time, {key: value}) of its latest estimation status
+        latest_clock = [0.0]
+        fused = ({}, {})  # x, y: stamp -> value (finite variance only)
+        rospy.Subscriber("/clock", Clock, lambda m: latest_clock.__setitem__(
+            0, max(latest_clock[0], m.clock.to_sec())))
+
+        decode = AnyMessageDecoder()
+
+        def on_diagnostics(raw):
+            msg = decode(raw)
+            for status in msg.status:
+                for node in NODES:
+                    if status.name == "%s/%s: estimation" % (NAMESPACE, node):
+                        reports[node] = (time.monotonic(),
+                                         {kv.key: kv.value for kv in status.values})
+        rospy.Subscriber("/diagnostics", rospy.AnyMsg, on_diagnostics)
+        OutputEntityStamped = fusion_block.output_entity_class()
+        for k, axis in enumerate("xy"):
+            def on_fused(msg, k=k):
+                if math.isfinite(msg.variance):
+                    fused[k][msg.header.stamp.to_sec()] = msg.value
+            rospy.Subscriber("/%s/fused/position/%s" % (NAMESPACE, axis), OutputEntityStamped,
+                             on_fused)
+
+        start = time.monotonic()
+        while time.monotonic() - start < WALL_TIMEOUT and latest_clock[0] < end - 0.01:
+            time.sleep(0.1)
+        self.assertGreaterEqual(latest_clock[0], end - 0.01, "the bag did not play to its end")
+        played = time.monotonic()
+        # every node's report after the end (diagnostics come every 1 s of wall time)
+        while (time.monotonic() - start < WALL_TIMEOUT
+               and not all(n in reports and reports[n][0] > played + 0.1 for n in NODES)):
+            time.sleep(0.1)
+        for node in NODES:
+            self.assertIn(node, reports, "no /diagnostics from %s" % node)
+            self.assertGreater(reports[node][0], played, "no report of %s after the end" % node)
+        resets = {n: int(reports[n][1]["clock resets"]) for n in NODES}
+        estimates = {n: int(reports[n][1].get("estimates", "-1")) for n in NODES}
+
+        # Left out: the first STARTUP s, in which the CWA nodes publish their initial belief
+        # (value 0, finite variance) for the periods before their first input (the offline
+        # evaluation leaves out the first estimate for the same reason; online there are a
+        # few, as the nodes start on the clock of the player's delay).
+        stamps = sorted(t for t in set(fused[0]) & set(fused[1]) if t >= truth.t[0] + STARTUP)
+        self.assertTrue(stamps, "no fused position received")
+        online = evaluate.make_trajectory(stamps, [fused[0][t] for t in stamps],
+                                          [fused[1][t] for t in stamps])
+        ev_fused = evaluate.evaluate(online, truth)
+        frames = [i for i, t in enumerate(vision.t) if stamps[0] <= t <= stamps[-1]]
+        ev_vision = evaluate.evaluate(evaluate.make_trajectory(
+            [vision.t[i] for i in frames], [vision.x[i] for i in frames],
+            [vision.y[i] for i in frames]), truth)
+        print("clock resets %s; estimates %s; %d fused positions over %.3f s, RMSE %.4f m; "
+              "%d vision frames, RMSE %.4f m" % (
+                  resets, estimates, len(stamps), stamps[-1] - stamps[0], ev_fused.rmse_pos,
+                  len(frames), ev_vision.rmse_pos))
+        self.assertEqual(resets, {n: 0 for n in NODES})
+        # the block fuses over (nearly) the whole bag: one position per 1 ms period, of which
+        # the recorder-free subscriber may lose some at 1 kHz
+        self.assertGreater(stamps[-1] - stamps[0], duration - STARTUP - 1.0)
+        self.assertGreater(len(stamps), 0.5 * (duration - STARTUP) / 0.001)
+        self.assertLess(ev_fused.rmse_pos, ev_vision.rmse_pos)
+
+
+if __name__ == "__main__":
+    rospy.init_node("soccer_fusion_block_online_test")
+    rostest.rosrun("sf_pkg", "soccer_fusion_block_online", SoccerFusionBlockOnlineTest, sys.argv)
