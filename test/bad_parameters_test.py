@@ -47,6 +47,8 @@ CASES = [
     ("align_by_stamp", [False, "yes"], "parameter ~align_by_stamp entry 1: expected true or false"),
     ("frame_id", 5, "parameter ~frame_id: expected a string, found an integer (5)"),
     ("publish_tf", "no", "parameter ~publish_tf: expected a boolean, found a string"),
+    ("queue_size", "big", "parameter ~queue_size: expected an integer, found a string"),
+    ("queue_size", 0, "parameter ~queue_size: expected 1 to 1000000 messages, found 0"),
 ]
 
 

@@ -21,6 +21,7 @@
 #include "sf_filter/node/estimate_messages.hpp"
 #include "sf_filter/node/fusion_diagnostics.hpp"
 #include "sf_filter/node/node_description.hpp"
+#include "sf_filter/node/ros_parameters.hpp"
 
 namespace sf_filter {
 
@@ -46,19 +47,27 @@ class FusionNode {
     pnh_.param<std::string>("frame_id", frameId_, "odom");
     pnh_.param<std::string>("child_frame_id", childFrameId_, "base_link");
     pnh_.param("publish_tf", publishTf_, true);
-    for (const auto& out : description_.outputs) {
-      outputs_.push_back(nh_.advertise<sf_pkg::OutputEntityStamped>(out.first, 10));
+    // Room for a stall of the spinner thread: 1000 messages hold 1 s of a 1 kHz sensor (100
+    // lost values in a 160 ms stall of the soak test on a loaded machine).
+    pnh_.param("queue_size", queueSize_, 1000);
+    if (queueSize_ < 1 || queueSize_ > 1000000) {
+      throw ParameterOverrideError("parameter ~queue_size: expected 1 to 1000000 messages, found " +
+                                   std::to_string(queueSize_));
     }
-    state_ = pnh_.advertise<sf_pkg::StateEstimateStamped>("state", 10);
-    if (description_.pose) odometry_ = nh_.advertise<nav_msgs::Odometry>("odometry/filtered", 10);
+    for (const auto& out : description_.outputs) {
+      outputs_.push_back(nh_.advertise<sf_pkg::OutputEntityStamped>(out.first, queueSize_));
+    }
+    state_ = pnh_.advertise<sf_pkg::StateEstimateStamped>("state", queueSize_);
+    if (description_.pose)
+      odometry_ = nh_.advertise<nav_msgs::Odometry>("odometry/filtered", queueSize_);
     logConfiguration();
   }
 
   /// Subscribes `topic`; `dispatch(msg, node, now)` hands each used field to measurement().
   template <class Message, class Dispatch>
   void subscribe(const std::string& topic, Dispatch dispatch) {
-    subscribers_.push_back(
-        nh_.subscribe<Message>(topic, 100, [this, dispatch](const typename Message::ConstPtr& msg) {
+    subscribers_.push_back(nh_.subscribe<Message>(
+        topic, queueSize_, [this, dispatch](const typename Message::ConstPtr& msg) {
           const double now = ros::Time::now().toSec();
           advance(now);
           dispatch(*msg, *this, now);
@@ -222,6 +231,7 @@ class FusionNode {
   tf2_ros::TransformBroadcaster broadcaster_;
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
+  int queueSize_ = 1000;  ///< ~queue_size: of every subscription and publication
   std::uint64_t gatedReported_ = 0;
   std::vector<bool> timedOut_;  ///< per input: its timeout was logged
 };

@@ -274,6 +274,7 @@ Parameters loadParameters(const ros::NodeHandle& pnh, MakeDefaults makeDefaults,
   detail::requireType(pnh, "frame_id", XmlRpc::XmlRpcValue::TypeString, "a string");
   detail::requireType(pnh, "child_frame_id", XmlRpc::XmlRpcValue::TypeString, "a string");
   detail::requireType(pnh, "publish_tf", XmlRpc::XmlRpcValue::TypeBoolean, "a boolean");
+  detail::requireType(pnh, "queue_size", XmlRpc::XmlRpcValue::TypeInt, "an integer");
   double period = headerPeriodMs;
   readScalarParameter(pnh, "estimation_period", period);
   if (!(period > 0.0)) {
