@@ -27,8 +27,9 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
  public:
   UnscentedKalmanFilter(Model model, const Matrix<N, N>& Q, const Matrix<M, M>& R,
                         const Vector<N>& x0, const Matrix<N, N>& P0,
-                        const UnscentedParameters& params = {})
-      : Base("UnscentedKalmanFilter", Q, R, x0, P0, model.controlSize()),
+                        const UnscentedParameters& params = {},
+                        const AngularComponents& angles = {})
+      : Base("UnscentedKalmanFilter", Q, R, x0, P0, model.controlSize(), angles),
         model_(std::move(model)),
         transform_(Q.rows(), params),
         params_(params) {
@@ -41,7 +42,7 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
     const Index count = transform_.pointCount();
     Vector<N> x(n);
     Matrix<N, N> P(n, n);
-    predict(x, P);
+    const bool repairedPrediction = predict(x, P);
 
     if (z.anyAvailable()) {
       const Index m = this->measurementSize();
@@ -51,9 +52,13 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
       Matrix<M, M> Pzz(m, m);
       predictMeasurementPoints(x, P, points, expected, zMean, Pzz);
       Matrix<N, M> Pxz(n, m);
-      transform_.crossCovariance(points, x, expected, zMean, Pxz);
+      // The state deviations of fresh sigma points are the columns of the root, exactly: not
+      // wrapped, even when an angle's spread exceeds pi.
+      transform_.crossCovariance(points, x, expected, zMean, Pxz, AngleMask<N>(n),
+                                 this->angleMeasurements_);
 
       Vector<M> y = z.value - zMean;
+      this->angleMeasurements_.wrap(y);
       Matrix<M, N> PxzT = Pxz.transpose();
       neutraliseMissing(z, y, PxzT);
       Pxz = PxzT.transpose();
@@ -72,7 +77,7 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
       x += K * y;
       P -= K * Szz * K.transpose();
     }
-    this->commit(x, P);
+    this->commit(x, P, repairedPrediction);
   }
 
   /// z^ and Pzz of the unscented transform of the predicted belief for the next step with
@@ -87,6 +92,7 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
     Matrix<M, S> expected(m, count);
     predictMeasurementPoints(x, P, points, expected, out.mean, out.covariance);
     out.noise = this->R_;
+    out.angular = this->angleMeasurements_.mask();
   }
 
   const Model& model() const { return model_; }
@@ -95,7 +101,10 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
 
  private:
   /// Time update: sigma points of the current belief propagated through f; P includes Q.
-  void predict(Vector<N>& x, Matrix<N, N>& P) const {
+  /// Returns true if P had lost positive semi-definiteness and was repaired (a negative
+  /// central covariance weight, beta < 0 or a small alpha with a strongly nonlinear f, can
+  /// make the unscented covariance indefinite); the correction needs its square root.
+  bool predict(Vector<N>& x, Matrix<N, N>& P) const {
     const Index n = this->stateSize();
     const Index count = transform_.pointCount();
     Matrix<N, S> points(n, count), propagated(n, count);
@@ -106,9 +115,15 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
       model_.transition(in, this->u_, out);
       propagated.col(i) = out;
     }
-    transform_.mean(propagated, x);
-    transform_.crossCovariance(propagated, x, propagated, x, P);
+    transform_.mean(propagated, x, this->angleStates_);
+    transform_.crossCovariance(propagated, x, propagated, x, P, this->angleStates_,
+                               this->angleStates_);
     P += this->Q_;
+    symmetrize(P);
+    if (!x.allFinite() || !P.allFinite()) {
+      throw NumericalError(this->method_ + ": the time update became non-finite; step rejected");
+    }
+    return repairCovariance(P);
   }
 
   /// Fresh sigma points of the predicted belief (x, P), their images under h, and the
@@ -125,8 +140,9 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
       model_.observation(in, zi);
       expected.col(i) = zi;
     }
-    transform_.mean(expected, zMean);
-    transform_.crossCovariance(expected, zMean, expected, zMean, Pzz);
+    transform_.mean(expected, zMean, this->angleMeasurements_);
+    transform_.crossCovariance(expected, zMean, expected, zMean, Pzz, this->angleMeasurements_,
+                               this->angleMeasurements_);
   }
 
   Model model_;

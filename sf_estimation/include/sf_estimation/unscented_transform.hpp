@@ -6,6 +6,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "sf_estimation/angles.hpp"
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
 #include "sf_estimation/types.hpp"
@@ -68,15 +69,35 @@ class UnscentedTransform {
     points.template middleCols<N>(1 + n_, n_) = (-root).colwise() + mean;
   }
 
+  /// Weighted mean of the points, taken as the central point (column 0) plus the weighted
+  /// mean of the other points' deviations from it. Mathematically this is sum_i Wm_i p_i (the
+  /// weights sum to 1); numerically it avoids cancelling a large offset against the huge,
+  /// opposite weights of a small alpha (Wm_0 = -1e6 for alpha = 1e-3, n = 1): a state at 1e9
+  /// with a variance of 1 would otherwise get its mean wrong by 1e9 * 1e6 * 1e-16 = 0.1, and
+  /// its covariance negative. Angle rows average wrapped deviations (angles.hpp, meanAround):
+  /// exact on the circle as long as every point lies within pi of the central one.
   template <int Rows>
-  void mean(const Points<Rows>& points, Vector<Rows>& result) const {
-    result.noalias() = points * meanWeights_;
+  void mean(const Points<Rows>& points, Vector<Rows>& result,
+            const AngleMask<Rows>& angles = AngleMask<Rows>()) const {
+    const Vector<Rows> reference = points.col(0);
+    Points<Rows> deviations = points.colwise() - reference;
+    angles.wrap(deviations);
+    result.noalias() = deviations * meanWeights_;
+    result += reference;
+    angles.wrap(result);
   }
 
-  /// sum_i Wc_i (a_i - aMean)(b_i - bMean)^T; with a = b this is the covariance.
+  /// sum_i Wc_i (a_i - aMean)(b_i - bMean)^T; with a = b this is the covariance. The
+  /// deviations of the rows marked in aAngles / bAngles are wrapped to (-pi, pi].
   template <int RowsA, int RowsB>
   void crossCovariance(const Points<RowsA>& a, const Vector<RowsA>& aMean, const Points<RowsB>& b,
-                       const Vector<RowsB>& bMean, Matrix<RowsA, RowsB>& result) const {
+                       const Vector<RowsB>& bMean, Matrix<RowsA, RowsB>& result,
+                       const AngleMask<RowsA>& aAngles = AngleMask<RowsA>(),
+                       const AngleMask<RowsB>& bAngles = AngleMask<RowsB>()) const {
+    Points<RowsA> deviationsA = a.colwise() - aMean;
+    aAngles.wrap(deviationsA);
+    Points<RowsB> deviationsB = b.colwise() - bMean;
+    bAngles.wrap(deviationsB);
     if constexpr (N != Dynamic && RowsA != Dynamic && RowsB != Dynamic) {
       // At fixed sizes each entry is one dot product over the points, of deviations stored
       // transposed so that the dot runs over contiguous memory. As one matrix product Eigen
@@ -84,9 +105,9 @@ class UnscentedTransform {
       // the arithmetic. With the same points on both sides the result is a covariance:
       // symmetric, so only its lower triangle is computed.
       using Deviations = Eigen::Matrix<double, PointCount, RowsA>;
-      const Deviations da = (a.colwise() - aMean).transpose();
+      const Deviations da = deviationsA.transpose();
       const Eigen::Matrix<double, PointCount, RowsB> weightedDb =
-          covarianceWeights_.asDiagonal() * (b.colwise() - bMean).transpose();
+          covarianceWeights_.asDiagonal() * deviationsB.transpose();
       bool symmetric = false;
       if constexpr (RowsA == RowsB) symmetric = &a == &b && &aMean == &bMean;
       for (Index j = 0; j < result.cols(); ++j) {
@@ -96,9 +117,8 @@ class UnscentedTransform {
         }
       }
     } else {
-      const Points<RowsA> weighted = (a.colwise() - aMean) * covarianceWeights_.asDiagonal();
-      const Points<RowsB> db = b.colwise() - bMean;
-      result.noalias() = weighted * db.transpose();
+      const Points<RowsA> weighted = deviationsA * covarianceWeights_.asDiagonal();
+      result.noalias() = weighted * deviationsB.transpose();
     }
   }
 
