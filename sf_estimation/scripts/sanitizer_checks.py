@@ -10,7 +10,8 @@ catkin_test_results.
 
   sanitizer_checks.py fuzz --build-dir DIR [--seconds 60] [--corpus DIR] [--junit FILE]
       builds sf_estimation_fuzz (-DSF_ESTIMATION_FUZZ=ON) and runs it for the given time on
-      the corpus directory (default DIR/corpus, kept between runs so it grows); prints the
+      the corpus directory (default DIR/corpus, kept between runs so it grows) plus the
+      inputs that once failed (sf_estimation/fuzz/regressions); prints the
       executions, the corpus size and the coverage libFuzzer reports. A crash, hang (10 s per
       input), leak, sanitizer report or an exception other than estimation::EstimationError
       fails the check; libFuzzer then leaves the input as DIR/crash-* (or leak-*, timeout-*).
@@ -28,6 +29,8 @@ import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.dirname(HERE)  # sf_estimation/
+# Inputs that once failed (fixed since), read as seeds; new inputs go to the first corpus.
+REGRESSIONS = os.path.join(SOURCE, "fuzz", "regressions")
 SANITIZER_ENV = {
     "ASAN_OPTIONS": "abort_on_error=1:detect_leaks=1:strict_string_checks=1",
     "UBSAN_OPTIONS": "print_stacktrace=1:halt_on_error=1",
@@ -107,7 +110,7 @@ def fuzz(args):
     env = dict(os.environ, **SANITIZER_ENV)
     cmd = [os.path.join(args.build_dir, "sf_estimation_fuzz"), "-max_total_time=%d" % args.seconds,
            "-timeout=10", "-rss_limit_mb=2048", "-max_len=4096", "-print_final_stats=1",
-           "-artifact_prefix=" + os.path.join(args.build_dir, ""), corpus]
+           "-artifact_prefix=" + os.path.join(args.build_dir, ""), corpus, REGRESSIONS]
     start = time.time()
     proc = run(cmd, cwd=args.build_dir, env=env, stdout=subprocess.PIPE,
                stderr=subprocess.STDOUT, universal_newlines=True)

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scalar_models.hpp"
 #include "sf_estimation/angles.hpp"
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/estimator_factory.hpp"
@@ -118,22 +119,7 @@ TEST(UnscentedTransformAngles, ResultantOfSigmaPointsFlipsPastTwoRadSquared) {
 // Innovations of angle measurements.
 // -------------------------------------------------------------------------------------------
 
-/// theta' = theta, z = theta (a compass on a robot that does not turn).
-struct Compass {
-  static constexpr int StateSize = 1, MeasurementSize = 1, ControlSize = 0;
-  Index stateSize() const { return 1; }
-  Index measurementSize() const { return 1; }
-  Index controlSize() const { return 0; }
-  template <class S>
-  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
-                  Eigen::Matrix<S, 1, 1>& next) const {
-    next = x;
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
-    z = x;
-  }
-};
+using Compass = sftest::IdentityModel;
 
 const AngularComponents kCompassAngles{{0}, {0}};
 

@@ -7,9 +7,11 @@
 #include <iostream>
 #include <limits>
 #include <random>
+#include <utility>
 
 #include <gtest/gtest.h>
 
+#include "scalar_models.hpp"
 #include "sf_estimation/estimator_factory.hpp"
 #include "sf_estimation/kalman_filter.hpp"
 #include "sf_estimation/numerical_repairs.hpp"
@@ -109,22 +111,7 @@ TEST(CovarianceRepair, ReportedThroughTheFactory) {
   EXPECT_EQ(ukf->numericalRepairs().total(), 1u);
 }
 
-/// x' = x, z = x (a scalar random walk measured directly).
-struct Direct {
-  static constexpr int StateSize = 1, MeasurementSize = 1, ControlSize = 0;
-  Index stateSize() const { return 1; }
-  Index measurementSize() const { return 1; }
-  Index controlSize() const { return 0; }
-  template <class S>
-  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
-                  Eigen::Matrix<S, 1, 1>& next) const {
-    next = x;
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
-    z = x;
-  }
-};
+using Direct = sftest::IdentityModel;  // a scalar random walk measured directly
 
 TEST(ParticleWeights, AllWeightsVanishedDropsTheMeasurement) {
   // z = 1e200 with R = 1: every squared residual overflows to infinity, every likelihood is
@@ -205,9 +192,10 @@ struct ConstantVelocity {
 
 TEST(BadlyScaledUkf, StateFarFromTheOriginMatchesTheKalmanFilter) {
   // A position of 1e9 m (a global coordinate) known to 1 m, default alpha = 1e-3: the sigma
-  // point weights are about +-2.5e5. The plain weighted sum sum Wm_i x_i loses the mean to
-  // rounding of 1e9 * 5e5 * 1e-16 = 0.05 m per step and makes the covariance negative; the
-  // UKF averages deviations from the central point and must equal the (linear, exact) KF.
+  // points lie 1.4e-3 m from the mean, stored to 1.2e-7 m, and the weights (about 2.5e5)
+  // multiply that rounding: the mean is off by centimetres and the covariance by tens of per
+  // cent. The UKF widens alpha for such a state (UnscentedTransform::alphaFor: covariance
+  // error below 1e-6 relative by construction) and must then equal the (linear, exact) KF.
   const double T = 0.1, s0 = 1e9;
   const Matrix<2, 2> Q = Eigen::Vector2d(1e-4, 1e-4).asDiagonal();
   const Matrix<1, 1> R = Matrix<1, 1>::Constant(1.0);
@@ -220,17 +208,28 @@ TEST(BadlyScaledUkf, StateFarFromTheOriginMatchesTheKalmanFilter) {
   estimation::KalmanFilter<2, 1> kf(A, Matrix<2, 0>(), H, Q, R, x0, P0);
   estimation::UnscentedKalmanFilter<ConstantVelocity> ukf(ConstantVelocity{}, Q, R, x0, P0);
 
-  // The failure the test guards against, shown on the first time update's sigma points.
+  // The failure the repair prevents, on the first time update's sigma points.
   estimation::UnscentedTransform<2> ut(2, estimation::UnscentedParameters{});
-  Eigen::Matrix<double, 2, 5> points, propagated;
-  ut.sigmaPoints(x0, P0, points);
-  for (Index i = 0; i < 5; ++i) propagated.col(i) = A * points.col(i);
-  const Vector<2> plainMean = propagated * ut.meanWeights();
-  const Vector<2> exactMean = A * x0;
-  Vector<2> mean;
-  ut.mean(propagated, mean);
-  EXPECT_GT(std::abs(plainMean(0) - exactMean(0)), 1e-3);
-  EXPECT_LT(std::abs(mean(0) - exactMean(0)), 1e-6);
+  const auto timeUpdate = [&](const estimation::UnscentedTransform<2>& transform) {
+    Eigen::Matrix<double, 2, 5> points, propagated;
+    transform.sigmaPoints(x0, P0, points);
+    for (Index i = 0; i < 5; ++i) propagated.col(i) = A * points.col(i);
+    Vector<2> mean;
+    Matrix<2, 2> P;
+    transform.mean(propagated, mean);
+    transform.crossCovariance(propagated, mean, propagated, mean, P);
+    const Matrix<2, 2> exact = A * P0 * A.transpose();
+    return std::make_pair(std::abs(mean(0) - s0 - 0.2), std::abs(P(0, 0) - exact(0, 0)) / exact(0, 0));
+  };
+  const auto plain = timeUpdate(ut);
+  EXPECT_GT(plain.first + plain.second, 1e-3);
+  estimation::UnscentedParameters widened;
+  widened.alpha = ut.alphaFor(x0, P0);
+  EXPECT_GT(widened.alpha, 0.1);  // 1e6 * 2.2e-16 * 1e9 / sqrt(2 * 1) = 0.157
+  EXPECT_LT(widened.alpha, 0.2);
+  const auto wide = timeUpdate(estimation::UnscentedTransform<2>(2, widened));
+  EXPECT_LT(wide.first, 1e-6);
+  EXPECT_LT(wide.second, 1e-6);
 
   std::mt19937_64 rng(5);
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -245,12 +244,22 @@ TEST(BadlyScaledUkf, StateFarFromTheOriginMatchesTheKalmanFilter) {
         std::max(worstCovariance, (ukf.covariance() - kf.covariance()).cwiseAbs().maxCoeff() /
                                       kf.covariance().cwiseAbs().maxCoeff());
   }
-  std::cout << "[ measured ] state at 1e9: max |UKF - KF| state " << worstMean
-            << ", covariance rel. " << worstCovariance << "\n";
-  // 1e9 is represented to 1.2e-7; a few ulps of the position per step stay far below 1e-4 m.
-  EXPECT_LT(worstMean, 1e-4);
-  EXPECT_LT(worstCovariance, 1e-6);
+  std::cout << "[ measured ] state at 1e9: plain alpha: mean error " << plain.first
+            << " m, variance rel. " << plain.second << "; widened alpha " << widened.alpha
+            << ": max |UKF - KF| state " << worstMean << ", covariance rel. " << worstCovariance
+            << ", " << ukf.numericalRepairs().sigmaSpread << " widened steps\n";
+  // Bounds: 1e-6 relative on the covariance by construction (10x margin), and the mean to a
+  // small fraction of its standard deviation (about 0.3 m).
+  EXPECT_LT(worstMean, 1e-3);
+  EXPECT_LT(worstCovariance, 1e-5);
   EXPECT_EQ(ukf.numericalRepairs().covariance, 0u);
+  EXPECT_GE(ukf.numericalRepairs().sigmaSpread, 2000u);
+
+  // A state near the origin never needs it.
+  estimation::UnscentedKalmanFilter<ConstantVelocity> near(ConstantVelocity{}, Q, R,
+                                                           Vector<2>(0.0, 2.0), P0);
+  near.estimate(Measurement<1>::complete(Vector<1>::Constant(0.3)));
+  EXPECT_EQ(near.numericalRepairs().sigmaSpread, 0u);
 }
 
 }  // namespace

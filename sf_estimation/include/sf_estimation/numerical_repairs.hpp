@@ -8,6 +8,9 @@
 //  - particle filter: a particle whose likelihood is not a number gets weight zero; a step in
 //    which every weight vanished drops its measurement (the weights stay as before it, as
 //    for a missing measurement). Counted in NumericalRepairs::weights.
+//  - unscented Kalman filter: sigma points too close to a state far from the origin to be
+//    resolved in floating point get a larger alpha for that step
+//    (UnscentedTransform::alphaFor). Counted in NumericalRepairs::sigmaSpread.
 // A failure that cannot be repaired (an innovation covariance that is not positive definite,
 // a non-finite prediction) rejects the step with NumericalError and leaves the filter as it
 // was.
@@ -27,8 +30,9 @@ namespace estimation {
 struct NumericalRepairs {
   std::uint64_t covariance = 0;  ///< covariances projected back to positive semi-definite
   std::uint64_t weights = 0;     ///< PF steps whose measurement made every weight vanish
+  std::uint64_t sigmaSpread = 0;  ///< UKF steps that widened alpha to resolve a badly scaled state
 
-  std::uint64_t total() const { return covariance + weights; }
+  std::uint64_t total() const { return covariance + weights + sigmaSpread; }
 };
 
 /// Relative tolerance on negative LDLT pivots: rounding in a covariance update stays far

@@ -2,6 +2,9 @@
 // weighted mean, covariance and cross-covariance of transformed points.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -45,6 +48,26 @@ class UnscentedTransform {
   }
 
   Index pointCount() const { return 2 * n_ + 1; }
+  const UnscentedParameters& parameters() const { return params_; }
+
+  /// Spread the sigma points of (mean, P) need to resolve every state: a point is stored to
+  /// about eps |x_i|, and the transform's sums amplify that by its weights, so that the
+  /// relative error of the covariance is about eps |x_i| / (alpha sqrt(n + kappa) sigma_i).
+  /// Returns the smallest alpha that keeps it below 1 / kResolution for every state (capped
+  /// at 1), or the configured alpha when that suffices. A state far from the origin with a
+  /// small variance (a global coordinate, a time stamp) needs a larger alpha than 1e-3.
+  static constexpr double kResolution = 1e6;
+  double alphaFor(const Vector<N>& mean, const Matrix<N, N>& P) const {
+    const double nk = static_cast<double>(n_) + params_.kappa;
+    double alpha = params_.alpha;
+    for (Index i = 0; i < n_; ++i) {
+      if (!(P(i, i) > 0.0)) continue;
+      const double needed = kResolution * std::numeric_limits<double>::epsilon() *
+                            std::abs(mean(i)) / std::sqrt(nk * P(i, i));
+      alpha = std::max(alpha, std::min(1.0, needed));
+    }
+    return alpha;
+  }
   double lambda() const { return lambda_; }
   const Vector<PointCount>& meanWeights() const { return meanWeights_; }
   const Vector<PointCount>& covarianceWeights() const { return covarianceWeights_; }
