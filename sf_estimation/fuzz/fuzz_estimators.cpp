@@ -51,9 +51,10 @@ class Generator {
 
   /// Mostly moderate numbers, sometimes the values that break arithmetic.
   double number() {
-    static const double special[] = {0.0, 1.0, -1.0, 1e-300, -1e-300, 1e300, -1e300, 4.9e-324,
-                                     1e154, 3.14159265358979, -3.14159265358979, 1e9,
-                                     std::nan(""), kInf, -kInf};
+    static const double special[] = {
+        0.0,          1.0,      -1.0,  1e-300,           -1e-300,           1e300,
+        -1e300,       4.9e-324, 1e154, 3.14159265358979, -3.14159265358979, 1e9,
+        std::nan(""), kInf,     -kInf};
     if (in_.ConsumeIntegralInRange(0, 7) == 0) return in_.PickValueInArray(special);
     return in_.ConsumeFloatingPointInRange(-10.0, 10.0);
   }
@@ -88,7 +89,7 @@ class Generator {
     Eigen::VectorXd v(in_.ConsumeIntegralInRange(0, 3));
     for (Index i = 0; i < v.size(); ++i) {
       v(i) = in_.ConsumeIntegralInRange(0, 7) == 0 ? number()
-                                                    : in_.ConsumeIntegralInRange<int>(-1, bound);
+                                                   : in_.ConsumeIntegralInRange<int>(-1, bound);
     }
     return v;
   }
@@ -112,12 +113,24 @@ class Generator {
         for (Index j = 0; j < x.size() && j < F.cols(); ++j) s += F(i % F.rows(), j) * x(j);
         for (Index j = 0; j < u.size() && j < Bu.cols(); ++j) s += Bu(i % Bu.rows(), j) * u(j);
         switch (shape) {
-          case 0: next(i) = s; break;
-          case 1: next(i) = sin(s) + x(i % x.size()); break;
-          case 2: next(i) = s * s; break;
-          case 3: next(i) = exp(s); break;
-          case 4: next(i) = atan2(sin(s), cos(s)); break;
-          default: next(i) = tanh(s) + sqrt(x(i % x.size()) * x(i % x.size()) + 1e-9); break;
+          case 0:
+            next(i) = s;
+            break;
+          case 1:
+            next(i) = sin(s) + x(i % x.size());
+            break;
+          case 2:
+            next(i) = s * s;
+            break;
+          case 3:
+            next(i) = exp(s);
+            break;
+          case 4:
+            next(i) = atan2(sin(s), cos(s));
+            break;
+          default:
+            next(i) = tanh(s) + sqrt(x(i % x.size()) * x(i % x.size()) + 1e-9);
+            break;
         }
       }
     };
@@ -141,14 +154,16 @@ class Generator {
     if (n == 0 || m == 0 || F.rows() == 0 || G.rows() == 0 || (l > 0 && Bu.rows() == 0)) {
       // No coefficient to index: a model of zeros (still of the declared sizes).
       auto zeroTransition = [](const auto& x, const auto&, auto& next) {
-        for (Index i = 0; i < next.size(); ++i) next(i) = typename std::decay_t<decltype(x)>::Scalar(0.0);
+        for (Index i = 0; i < next.size(); ++i)
+          next(i) = typename std::decay_t<decltype(x)>::Scalar(0.0);
       };
       auto zeroObservation = [](const auto& x, auto& z) {
         for (Index i = 0; i < z.size(); ++i) z(i) = typename std::decay_t<decltype(x)>::Scalar(0.0);
       };
       return makeFunctionModel(declaredN, declaredM, declaredL, zeroTransition, zeroObservation);
     }
-    FunctionModel model = makeFunctionModel(declaredN, declaredM, declaredL, transition, observation);
+    FunctionModel model =
+        makeFunctionModel(declaredN, declaredM, declaredL, transition, observation);
     if (!withJacobians) model.setJacobians({}, {});
     return model;
   }
@@ -180,9 +195,15 @@ class Generator {
     const Index count = sizeNear(size);
     for (Index i = 0; i < count; ++i) {
       switch (in_.ConsumeIntegralInRange(0, 3)) {
-        case 0: values.add(InputValue::missing()); break;
-        case 1: values.add(InputValue(number(), number(), number())); break;
-        default: values.add(InputValue(number(), in_.ConsumeFloatingPointInRange(0.0, 100.0))); break;
+        case 0:
+          values.add(InputValue::missing());
+          break;
+        case 1:
+          values.add(InputValue(number(), number(), number()));
+          break;
+        default:
+          values.add(InputValue(number(), in_.ConsumeFloatingPointInRange(0.0, 100.0)));
+          break;
       }
     }
     return values;
@@ -194,10 +215,27 @@ class Generator {
   FuzzedDataProvider& in_;
 };
 
-const std::vector<std::string> kNames = {
-    "A", "B", "H", "Q", "R", "x0", "P0", "model", "alpha", "beta", "kappa", "particles", "seed",
-    "resampling-threshold", "input-count", "window-size", "weights", "variances", "angle-states",
-    "angle-measurements", "bogus"};
+const std::vector<std::string> kNames = {"A",
+                                         "B",
+                                         "H",
+                                         "Q",
+                                         "R",
+                                         "x0",
+                                         "P0",
+                                         "model",
+                                         "alpha",
+                                         "beta",
+                                         "kappa",
+                                         "particles",
+                                         "seed",
+                                         "resampling-threshold",
+                                         "input-count",
+                                         "window-size",
+                                         "weights",
+                                         "variances",
+                                         "angle-states",
+                                         "angle-measurements",
+                                         "bogus"};
 
 void checkOutput(const Output& out) {
   for (const OutputValue& v : out) {
@@ -244,7 +282,8 @@ bool predict(IEstimator& estimator, Generator& g) {
     z.available(i) = g.flag();
   }
   if (m > 0) {
-    static_cast<void>(squaredMahalanobisDistance(p, g.small(0, static_cast<int>(m) - 1), g.number()));
+    static_cast<void>(
+        squaredMahalanobisDistance(p, g.small(0, static_cast<int>(m) - 1), g.number()));
   }
   z.validate(m);  // the caller's check before a distance
   static_cast<void>(squaredMahalanobisDistance(p, z));
@@ -254,9 +293,10 @@ bool predict(IEstimator& estimator, Generator& g) {
 void run(FuzzedDataProvider& provider) {
   Generator g(provider);
   const std::vector<std::string>& methods = EstimatorFactory::methods();
-  const std::string method = g.small(0, 15) == 0 ? std::string("NoSuchMethod")
-                                                 : methods[static_cast<std::size_t>(
-                                                       g.small(0, static_cast<int>(methods.size()) - 1))];
+  const std::string method =
+      g.small(0, 15) == 0
+          ? std::string("NoSuchMethod")
+          : methods[static_cast<std::size_t>(g.small(0, static_cast<int>(methods.size()) - 1))];
   const Index n = g.small(0, 4), m = g.small(0, 4), l = g.small(0, 2);
   ParameterMap map;
   for (const std::string& name : kNames) {
@@ -269,8 +309,12 @@ void run(FuzzedDataProvider& provider) {
   for (int step = 0; step < 48 && g.remaining() > 0; ++step) {
     try {
       switch (g.small(0, 7)) {
-        case 0: estimator->setControlInput(g.input(l)); break;
-        case 1: estimator->reset(); break;
+        case 0:
+          estimator->setControlInput(g.input(l));
+          break;
+        case 1:
+          estimator->reset();
+          break;
         case 2:
           if (!predict<KalmanFilter<Dynamic, Dynamic, Dynamic>>(*estimator, g) &&
               !predict<ExtendedKalmanFilter<FunctionModel>>(*estimator, g) &&

@@ -18,12 +18,18 @@ namespace {
 
 const char* typeName(const Parameter& p) {
   switch (p.index()) {
-    case 0: return "int";
-    case 1: return "double";
-    case 2: return "string";
-    case 3: return "vector (Eigen::VectorXd)";
-    case 4: return "matrix (Eigen::MatrixXd)";
-    default: return "model (FunctionModel)";
+    case 0:
+      return "int";
+    case 1:
+      return "double";
+    case 2:
+      return "string";
+    case 3:
+      return "vector (Eigen::VectorXd)";
+    case 4:
+      return "matrix (Eigen::MatrixXd)";
+    default:
+      return "model (FunctionModel)";
   }
 }
 
@@ -103,13 +109,16 @@ class ParameterReader {
   }
 
   /// 'angle-states' and 'angle-measurements' (doc/estimation.md, "Angles").
-  AngularComponents angles() const { return {indices("angle-states"), indices("angle-measurements")}; }
+  AngularComponents angles() const {
+    return {indices("angle-states"), indices("angle-measurements")};
+  }
 
   FunctionModel model() const {
     const Parameter& p = find("model", "FunctionModel (see makeFunctionModel)");
     if (const auto* m = std::get_if<FunctionModel>(&p)) {
       if (!m->hasTransition() || !m->hasObservation()) {
-        throw ParameterError(method_ + ": parameter 'model' has no transition or observation function");
+        throw ParameterError(method_ +
+                             ": parameter 'model' has no transition or observation function");
       }
       return *m;
     }
@@ -127,8 +136,8 @@ class ParameterReader {
   }
   ParameterError wrongType(const std::string& name, const std::string& expected,
                            const Parameter& p) const {
-    return ParameterError(method_ + ": parameter '" + name + "' must be " + article(expected) + " " + expected +
-                          ", got " + typeName(p));
+    return ParameterError(method_ + ": parameter '" + name + "' must be " + article(expected) +
+                          " " + expected + ", got " + typeName(p));
   }
 
   std::string method_;
@@ -161,8 +170,9 @@ std::unique_ptr<IEstimator> wrap(Filter filter) {
 }
 
 std::unique_ptr<IEstimator> createKalman(const ParameterMap& map) {
-  const ParameterReader in("KalmanFilter", map,
-                           {"A", "B", "H", "Q", "R", "x0", "P0", "angle-states", "angle-measurements"});
+  const ParameterReader in(
+      "KalmanFilter", map,
+      {"A", "B", "H", "Q", "R", "x0", "P0", "angle-states", "angle-measurements"});
   const Eigen::MatrixXd A = in.matrix("A", "(n x n)");
   const Eigen::MatrixXd H = in.matrix("H", "(m x n)");
   const Eigen::MatrixXd B = in.has("B") ? in.matrix("B", "(n x l)") : Eigen::MatrixXd(A.rows(), 0);
@@ -175,10 +185,12 @@ std::unique_ptr<IEstimator> createExtendedKalman(const ParameterMap& map) {
                            {"model", "Q", "R", "x0", "P0", "angle-states", "angle-measurements"});
   FunctionModel model = in.model();
   if (!model.hasJacobians()) {
-    throw ParameterError("ExtendedKalmanFilter: parameter 'model' has no Jacobians; build it "
-                         "with makeFunctionModel() from generic lambdas or pass them");
+    throw ParameterError(
+        "ExtendedKalmanFilter: parameter 'model' has no Jacobians; build it "
+        "with makeFunctionModel() from generic lambdas or pass them");
   }
-  const GaussianParameters g("ExtendedKalmanFilter", in, model.stateSize(), model.measurementSize());
+  const GaussianParameters g("ExtendedKalmanFilter", in, model.stateSize(),
+                             model.measurementSize());
   return wrap(ExtendedKalmanFilter<FunctionModel>(model, g.Q, g.R, g.x0, g.P0, in.angles()));
 }
 
@@ -187,7 +199,8 @@ std::unique_ptr<IEstimator> createUnscentedKalman(const ParameterMap& map) {
                            {"model", "Q", "R", "x0", "P0", "alpha", "beta", "kappa", "angle-states",
                             "angle-measurements"});
   FunctionModel model = in.model();
-  const GaussianParameters g("UnscentedKalmanFilter", in, model.stateSize(), model.measurementSize());
+  const GaussianParameters g("UnscentedKalmanFilter", in, model.stateSize(),
+                             model.measurementSize());
   UnscentedParameters ut;
   ut.alpha = in.number("alpha", ut.alpha);
   ut.beta = in.number("beta", ut.beta);
@@ -235,9 +248,8 @@ std::unique_ptr<IEstimator> createConfidenceWeighted(const ParameterMap& map) {
 
 const std::vector<std::string>& EstimatorFactory::methods() {
   static const std::vector<std::string> names = {
-      "KalmanFilter",  "ExtendedKalmanFilter", "UnscentedKalmanFilter",
-      "ParticleFilterSIR", "MovingAverage",   "MovingMedian",
-      "ConfidenceWeightedAveraging"};
+      "KalmanFilter",  "ExtendedKalmanFilter", "UnscentedKalmanFilter",      "ParticleFilterSIR",
+      "MovingAverage", "MovingMedian",         "ConfidenceWeightedAveraging"};
   return names;
 }
 

@@ -33,8 +33,8 @@ using estimation::wrapAngle;
 constexpr double kPi = 3.14159265358979323846;
 
 TEST(AngleWrap, HandValues) {
-  EXPECT_EQ(wrapAngle(kPi), kPi);    // (-pi, pi]: pi stays
-  EXPECT_EQ(wrapAngle(-kPi), kPi);   // -pi becomes pi
+  EXPECT_EQ(wrapAngle(kPi), kPi);   // (-pi, pi]: pi stays
+  EXPECT_EQ(wrapAngle(-kPi), kPi);  // -pi becomes pi
   EXPECT_DOUBLE_EQ(wrapAngle(1.5 * kPi), -0.5 * kPi);
   EXPECT_DOUBLE_EQ(wrapAngle(-1.5 * kPi), 0.5 * kPi);
   EXPECT_EQ(wrapAngle(0.25), 0.25);
@@ -246,7 +246,8 @@ GyroRun runGyroOnly(const estimation::UnscentedParameters& ut, const AngularComp
   GyroRun run;
   for (int k = 0; k < 6000; ++k) {
     omega += 1e-3 * normal(rng);
-    const Measurement<1> z = Measurement<1>::complete(Vector<1>::Constant(omega + 0.01 * normal(rng)));
+    const Measurement<1> z =
+        Measurement<1>::complete(Vector<1>::Constant(omega + 0.01 * normal(rng)));
     ekf.estimate(z);
     try {
       ukf.estimate(z);
@@ -257,11 +258,11 @@ GyroRun runGyroOnly(const estimation::UnscentedParameters& ut, const AngularComp
     ++run.steps;
     run.finite = run.finite && ukf.state().allFinite() && ukf.covariance().allFinite();
     if (!run.finite) break;
-    run.maxHeadingDifference = std::max(
-        run.maxHeadingDifference, std::abs(wrapAngle(ukf.state()(0) - ekf.state()(0))));
+    run.maxHeadingDifference =
+        std::max(run.maxHeadingDifference, std::abs(wrapAngle(ukf.state()(0) - ekf.state()(0))));
     run.maxVarianceRelDiff =
-        std::max(run.maxVarianceRelDiff,
-                 std::abs(ukf.covariance()(0, 0) - ekf.covariance()(0, 0)) / ekf.covariance()(0, 0));
+        std::max(run.maxVarianceRelDiff, std::abs(ukf.covariance()(0, 0) - ekf.covariance()(0, 0)) /
+                                             ekf.covariance()(0, 0));
     run.maxHeadingVariance = std::max(run.maxHeadingVariance, ekf.covariance()(0, 0));
   }
   return run;
@@ -278,9 +279,10 @@ TEST(AngleLongRun, GyroOnlyHeadingUkfFollowsEkf) {
     estimation::UnscentedParameters ut;
     ut.alpha = alpha;
     const GyroRun run = runGyroOnly(ut, heading);
-    std::cout << "[ measured ] alpha " << alpha << ": " << run.steps << " steps, heading variance up to "
-              << run.maxHeadingVariance << " rad^2, max |UKF - EKF| heading "
-              << run.maxHeadingDifference << " rad, variance rel. " << run.maxVarianceRelDiff << "\n";
+    std::cout << "[ measured ] alpha " << alpha << ": " << run.steps
+              << " steps, heading variance up to " << run.maxHeadingVariance
+              << " rad^2, max |UKF - EKF| heading " << run.maxHeadingDifference
+              << " rad, variance rel. " << run.maxVarianceRelDiff << "\n";
     EXPECT_FALSE(run.failed);
     EXPECT_TRUE(run.finite);
     EXPECT_EQ(run.steps, 6000);
@@ -312,9 +314,12 @@ TEST(AngleFactory, ParametersReachTheFilterAndAreChecked) {
   const Eigen::MatrixXd one = Eigen::MatrixXd::Identity(1, 1);
   const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(1, 1);
   const Eigen::VectorXd x0 = Eigen::VectorXd::Constant(1, 3.1), index0 = Eigen::VectorXd::Zero(1);
-  estimation::ParameterMap kf = {{"A", one},         {"H", one},
-                                 {"Q", zero},        {"R", one},
-                                 {"x0", x0},         {"angle-states", index0},
+  estimation::ParameterMap kf = {{"A", one},
+                                 {"H", one},
+                                 {"Q", zero},
+                                 {"R", one},
+                                 {"x0", x0},
+                                 {"angle-states", index0},
                                  {"angle-measurements", index0}};
   auto filter = EstimatorFactory::create("KalmanFilter", kf);
   estimation::Input z;

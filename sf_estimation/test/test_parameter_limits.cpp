@@ -29,8 +29,9 @@ TEST(ParameterLimits, ParticlesWindowAndInputCount) {
       [](const auto& x, auto& z) { z(0) = x(0); });
   const Eigen::MatrixXd one = Eigen::MatrixXd::Identity(1, 1);
   estimation::ParameterMap pf = {{"model", model}, {"Q", one}, {"R", one}, {"particles", 1000000}};
-  EXPECT_EQ(refusal("ParticleFilterSIR", {{"model", model}, {"Q", one}, {"R", one}, {"particles", 3}}),
-            "accepted");
+  EXPECT_EQ(
+      refusal("ParticleFilterSIR", {{"model", model}, {"Q", one}, {"R", one}, {"particles", 3}}),
+      "accepted");
   pf["particles"] = 1000001;
   EXPECT_NE(refusal("ParticleFilterSIR", pf).find("'particles' must be from 1 to 1000000"),
             std::string::npos);

@@ -56,8 +56,9 @@ class AbstractKalmanFilter {
   }
 
   std::string description() const {
-    return method_ + "(n=" + std::to_string(stateSize()) + ", m=" +
-           std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) + ")";
+    return method_ + "(n=" + std::to_string(stateSize()) +
+           ", m=" + std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) +
+           ")";
   }
 
  protected:

@@ -12,8 +12,8 @@
 namespace estimation {
 
 template <class Model>
-class ExtendedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize,
-                                                         Model::ControlSize> {
+class ExtendedKalmanFilter
+    : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize, Model::ControlSize> {
   static constexpr int N = Model::StateSize;
   static constexpr int M = Model::MeasurementSize;
   static constexpr int L = Model::ControlSize;

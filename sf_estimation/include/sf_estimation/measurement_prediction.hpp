@@ -59,9 +59,9 @@ struct MeasurementPrediction {
   }
 };
 
-/// y^T S^-1 y with y = z - z^ (wrapped for angles) over the present entries of z (the missing ones take no part):
-/// chi-square distributed with as many degrees of freedom as entries are present, if the
-/// filter's model is right. Throws NumericalError when S is not positive definite.
+/// y^T S^-1 y with y = z - z^ (wrapped for angles) over the present entries of z (the missing ones
+/// take no part): chi-square distributed with as many degrees of freedom as entries are present, if
+/// the filter's model is right. Throws NumericalError when S is not positive definite.
 template <int M>
 double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction,
                                   const Measurement<M>& z) {

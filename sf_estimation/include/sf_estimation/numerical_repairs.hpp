@@ -28,8 +28,8 @@ namespace estimation {
 
 /// Counts of repairs since the filter was constructed (reset() keeps them).
 struct NumericalRepairs {
-  std::uint64_t covariance = 0;  ///< covariances projected back to positive semi-definite
-  std::uint64_t weights = 0;     ///< PF steps whose measurement made every weight vanish
+  std::uint64_t covariance = 0;   ///< covariances projected back to positive semi-definite
+  std::uint64_t weights = 0;      ///< PF steps whose measurement made every weight vanish
   std::uint64_t sigmaSpread = 0;  ///< UKF steps that widened alpha to resolve a badly scaled state
 
   std::uint64_t total() const { return covariance + weights + sigmaSpread; }

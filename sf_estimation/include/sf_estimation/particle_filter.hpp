@@ -144,8 +144,8 @@ class ParticleFilterSIR {
   }
 
   std::string description() const {
-    return "ParticleFilterSIR(n=" + std::to_string(stateSize()) + ", m=" +
-           std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) +
+    return "ParticleFilterSIR(n=" + std::to_string(stateSize()) +
+           ", m=" + std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) +
            ", particles=" + std::to_string(particleCount()) + ")";
   }
 
@@ -232,8 +232,9 @@ class ParticleFilterSIR {
     sample += out;
     angleStates_.wrap(sample);
     if (!sample.allFinite()) {
-      throw NumericalError("ParticleFilterSIR: the state transition produced a non-finite "
-                           "particle; step rejected");
+      throw NumericalError(
+          "ParticleFilterSIR: the state transition produced a non-finite "
+          "particle; step rejected");
     }
   }
 
@@ -263,8 +264,8 @@ class ParticleFilterSIR {
       whitened.noalias() = *whitening * residual;
       const double squaredDistance = whitened.squaredNorm();
       // A likelihood that is not a number (h gave NaN or inf for this particle) is zero.
-      newLogWeights_(i) = std::isnan(squaredDistance) ? -kInfinity
-                                                      : newLogWeights_(i) - 0.5 * squaredDistance;
+      newLogWeights_(i) =
+          std::isnan(squaredDistance) ? -kInfinity : newLogWeights_(i) - 0.5 * squaredDistance;
     }
   }
 
@@ -382,8 +383,6 @@ class ParticleFilterSIR {
     }
   }
 
-
-
   Model model_;
   Matrix<N, N> Q_;
   Matrix<M, M> R_;
@@ -391,7 +390,7 @@ class ParticleFilterSIR {
   Matrix<N, N> P0_;
   ParticleFilterParameters params_;
   Matrix<N, N> noiseRoot_;
-  bool noisePerRow_ = false;                 // see findNoiseSources()
+  bool noisePerRow_ = false;  // see findNoiseSources()
   Eigen::Matrix<Index, N, 1> noiseSource_;
   Vector<N> noiseScale_;
   Eigen::LLT<Matrix<M, M>> maskedNoise_;

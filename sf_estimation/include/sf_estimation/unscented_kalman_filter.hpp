@@ -17,8 +17,8 @@
 namespace estimation {
 
 template <class Model>
-class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize,
-                                                          Model::ControlSize> {
+class UnscentedKalmanFilter
+    : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize, Model::ControlSize> {
   static constexpr int N = Model::StateSize;
   static constexpr int M = Model::MeasurementSize;
   static constexpr int L = Model::ControlSize;
@@ -142,9 +142,8 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
   /// Fresh sigma points of the predicted belief (x, P), their images under h, and the
   /// images' mean and covariance (without R).
   void predictMeasurementPoints(const UnscentedTransform<N>& transform, const Vector<N>& x,
-                                const Matrix<N, N>& P, Matrix<N, S>& points,
-                                Matrix<M, S>& expected, Vector<M>& zMean,
-                                Matrix<M, M>& Pzz) const {
+                                const Matrix<N, N>& P, Matrix<N, S>& points, Matrix<M, S>& expected,
+                                Vector<M>& zMean, Matrix<M, M>& Pzz) const {
     const Index n = this->stateSize(), m = this->measurementSize();
     transform.sigmaPoints(x, P, points);
     Vector<N> in(n);

@@ -32,13 +32,15 @@ class UnscentedTransform {
   UnscentedTransform(Index n, const UnscentedParameters& p) : n_(n), params_(p) {
     if (!(p.alpha > 0.0) || !std::isfinite(p.alpha) || !std::isfinite(p.beta) ||
         !std::isfinite(p.kappa)) {
-      throw ParameterError("UnscentedKalmanFilter: parameter 'alpha' must be positive and "
-                           "alpha, beta, kappa finite");
+      throw ParameterError(
+          "UnscentedKalmanFilter: parameter 'alpha' must be positive and "
+          "alpha, beta, kappa finite");
     }
     lambda_ = p.alpha * p.alpha * (static_cast<double>(n) + p.kappa) - static_cast<double>(n);
     if (!(static_cast<double>(n) + lambda_ > 0.0)) {
-      throw ParameterError("UnscentedKalmanFilter: n + lambda = alpha^2 (n + kappa) must be "
-                           "positive; check 'alpha' and 'kappa'");
+      throw ParameterError(
+          "UnscentedKalmanFilter: n + lambda = alpha^2 (n + kappa) must be "
+          "positive; check 'alpha' and 'kappa'");
     }
     const Index count = 2 * n + 1;
     meanWeights_.setConstant(count, 0.5 / (static_cast<double>(n) + lambda_));

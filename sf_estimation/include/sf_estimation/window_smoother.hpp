@@ -78,7 +78,8 @@ class WindowSmoother {
 
   static Index checkedWindowSize(Index windowSize) {
     if (windowSize < 1 || windowSize > kMaxWindowSize) {
-      throw ParameterError(std::string(Derived::kName) + ": parameter 'windowSize' must be from 1 to " +
+      throw ParameterError(std::string(Derived::kName) +
+                           ": parameter 'windowSize' must be from 1 to " +
                            std::to_string(kMaxWindowSize) + ", got " + std::to_string(windowSize));
     }
     return windowSize;
@@ -92,7 +93,8 @@ class WindowSmoother {
  private:
   static Index checkedInputCount(Index inputCount) {
     if (inputCount < 1 || inputCount > kMaxInputCount) {
-      throw ParameterError(std::string(Derived::kName) + ": parameter 'inputCount' must be from 1 to " +
+      throw ParameterError(std::string(Derived::kName) +
+                           ": parameter 'inputCount' must be from 1 to " +
                            std::to_string(kMaxInputCount) + ", got " + std::to_string(inputCount));
     }
     return inputCount;

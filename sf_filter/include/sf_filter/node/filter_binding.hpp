@@ -26,7 +26,8 @@ inline estimation::AngularComponents angularComponents() {
     if (sf_config::kAngleStates[i]) angles.states.push_back(static_cast<estimation::Index>(i));
   }
   for (std::size_t i = 0; i < sf_config::kAngleInputs.size(); ++i) {
-    if (sf_config::kAngleInputs[i]) angles.measurements.push_back(static_cast<estimation::Index>(i));
+    if (sf_config::kAngleInputs[i])
+      angles.measurements.push_back(static_cast<estimation::Index>(i));
   }
   return angles;
 }
@@ -46,8 +47,8 @@ using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
 inline Filter makeFilter(const sf_config::Parameters& p) {
   sf_config::Model model;
   model.T = periodSeconds(p);
-  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance,
-                p.initial_state, p.initial_error_covariance, angularComponents());
+  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
+                p.initial_error_covariance, angularComponents());
 }
 #elif METHOD == UNSCENTED_KALMAN_FILTER
 using Filter = estimation::UnscentedKalmanFilter<sf_config::Model>;
@@ -58,8 +59,8 @@ inline Filter makeFilter(const sf_config::Parameters& p) {
   ut.alpha = p.ukf_alpha;
   ut.beta = p.ukf_beta;
   ut.kappa = p.ukf_kappa;
-  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance,
-                p.initial_state, p.initial_error_covariance, ut, angularComponents());
+  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
+                p.initial_error_covariance, ut, angularComponents());
 }
 #elif METHOD == PARTICLE_FILTER_SIR
 using Filter = estimation::ParticleFilterSIR<sf_config::Model>;
@@ -70,8 +71,8 @@ inline Filter makeFilter(const sf_config::Parameters& p) {
   pf.particles = p.number_of_particles;
   pf.seed = p.random_seed;
   pf.resamplingThreshold = p.resampling_threshold;
-  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance,
-                p.initial_state, p.initial_error_covariance, pf, angularComponents());
+  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
+                p.initial_error_covariance, pf, angularComponents());
 }
 #elif METHOD == MOVING_AVERAGE
 using Filter = estimation::MovingAverage;

@@ -152,7 +152,6 @@ constexpr bool kHasAngleInputs =
 /// ANGLE_STATES per state variable: true for an angle.
 inline constexpr std::array<bool, kStateSize> kAngleStates = angles_detail::makeAngleStates();
 /// ANGLE_INPUTS per input (TOPICS_IN order): true for a measured angle.
-inline constexpr std::array<bool, kMeasurementSize> kAngleInputs =
-    angles_detail::makeAngleInputs();
+inline constexpr std::array<bool, kMeasurementSize> kAngleInputs = angles_detail::makeAngleInputs();
 
 }  // namespace sf_config
