@@ -1,9 +1,11 @@
 // ANGLE_STATES and ANGLE_INPUTS from a configuration header to the filter: the generated
 // flags (sf_filter/config/detail/angles.hpp) and the filter makeFilter() builds from them,
 // for test/config_errors/valid_angles.h (a UKF, heading x[2], compass as input 0).
+// The configuration header first: configuration.hpp reads its macros.
+#include "valid_angles.h"
+
 #include <sf_filter/config/configuration.hpp>
 #include <sf_filter/node/filter_binding.hpp>
-#include "valid_angles.h"
 
 #include <cmath>
 
