@@ -19,7 +19,8 @@ SF_VERBOSE="${SF_VERBOSE:-0}"
 SF_PACKAGE=sf_pkg
 
 # Debian packages needed to build, test and run the package.
-# rosbash provides rosrun (ros-core only recommends it).
+# rosbash provides rosrun (ros-core only recommends it). clang and libclang-rt-14-dev build
+# sf_estimation's sanitizer and libFuzzer checks (sf_estimation/scripts/sanitizer_checks.py).
 SF_DEB_PACKAGES=(
   ros-core-dev catkin libroscpp-dev librosbag-dev python3-rostest rosbash
   libtf2-ros-dev libtf2-geometry-msgs-dev
@@ -28,6 +29,7 @@ SF_DEB_PACKAGES=(
   libeigen3-dev libboost-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
   cmake g++
+  clang libclang-rt-14-dev
 )
 
 sf_log() { printf '[sf_pkg] %s\n' "$*" >&2; }

@@ -1,6 +1,7 @@
 #include "sf_estimation/estimator_factory.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "sf_estimation/confidence_weighted_averaging.hpp"
@@ -17,12 +18,18 @@ namespace {
 
 const char* typeName(const Parameter& p) {
   switch (p.index()) {
-    case 0: return "int";
-    case 1: return "double";
-    case 2: return "string";
-    case 3: return "vector (Eigen::VectorXd)";
-    case 4: return "matrix (Eigen::MatrixXd)";
-    default: return "model (FunctionModel)";
+    case 0:
+      return "int";
+    case 1:
+      return "double";
+    case 2:
+      return "string";
+    case 3:
+      return "vector (Eigen::VectorXd)";
+    case 4:
+      return "matrix (Eigen::MatrixXd)";
+    default:
+      return "model (FunctionModel)";
   }
 }
 
@@ -85,11 +92,33 @@ class ParameterReader {
     throw wrongType(name, "integer", p);
   }
 
+  /// A vector of indices, each an integer-valued finite number (the range is checked by the
+  /// filter); empty when the parameter is not given.
+  std::vector<Index> indices(const std::string& name) const {
+    if (!has(name)) return {};
+    const Eigen::VectorXd v = vector(name, "of indices");
+    std::vector<Index> result;
+    for (Index k = 0; k < v.size(); ++k) {
+      if (!std::isfinite(v(k)) || v(k) != std::floor(v(k)) || std::abs(v(k)) > 1e9) {
+        throw ParameterError(method_ + ": parameter '" + name + "' entry " + std::to_string(k) +
+                             " is not an integer index");
+      }
+      result.push_back(static_cast<Index>(v(k)));
+    }
+    return result;
+  }
+
+  /// 'angle-states' and 'angle-measurements' (doc/estimation.md, "Angles").
+  AngularComponents angles() const {
+    return {indices("angle-states"), indices("angle-measurements")};
+  }
+
   FunctionModel model() const {
     const Parameter& p = find("model", "FunctionModel (see makeFunctionModel)");
     if (const auto* m = std::get_if<FunctionModel>(&p)) {
       if (!m->hasTransition() || !m->hasObservation()) {
-        throw ParameterError(method_ + ": parameter 'model' has no transition or observation function");
+        throw ParameterError(method_ +
+                             ": parameter 'model' has no transition or observation function");
       }
       return *m;
     }
@@ -107,8 +136,8 @@ class ParameterReader {
   }
   ParameterError wrongType(const std::string& name, const std::string& expected,
                            const Parameter& p) const {
-    return ParameterError(method_ + ": parameter '" + name + "' must be " + article(expected) + " " + expected +
-                          ", got " + typeName(p));
+    return ParameterError(method_ + ": parameter '" + name + "' must be " + article(expected) +
+                          " " + expected + ", got " + typeName(p));
   }
 
   std::string method_;
@@ -141,41 +170,48 @@ std::unique_ptr<IEstimator> wrap(Filter filter) {
 }
 
 std::unique_ptr<IEstimator> createKalman(const ParameterMap& map) {
-  const ParameterReader in("KalmanFilter", map, {"A", "B", "H", "Q", "R", "x0", "P0"});
+  const ParameterReader in(
+      "KalmanFilter", map,
+      {"A", "B", "H", "Q", "R", "x0", "P0", "angle-states", "angle-measurements"});
   const Eigen::MatrixXd A = in.matrix("A", "(n x n)");
   const Eigen::MatrixXd H = in.matrix("H", "(m x n)");
   const Eigen::MatrixXd B = in.has("B") ? in.matrix("B", "(n x l)") : Eigen::MatrixXd(A.rows(), 0);
   const GaussianParameters g("KalmanFilter", in, A.rows(), H.rows());
-  return wrap(KalmanFilter<Dynamic, Dynamic, Dynamic>(A, B, H, g.Q, g.R, g.x0, g.P0));
+  return wrap(KalmanFilter<Dynamic, Dynamic, Dynamic>(A, B, H, g.Q, g.R, g.x0, g.P0, in.angles()));
 }
 
 std::unique_ptr<IEstimator> createExtendedKalman(const ParameterMap& map) {
-  const ParameterReader in("ExtendedKalmanFilter", map, {"model", "Q", "R", "x0", "P0"});
+  const ParameterReader in("ExtendedKalmanFilter", map,
+                           {"model", "Q", "R", "x0", "P0", "angle-states", "angle-measurements"});
   FunctionModel model = in.model();
   if (!model.hasJacobians()) {
-    throw ParameterError("ExtendedKalmanFilter: parameter 'model' has no Jacobians; build it "
-                         "with makeFunctionModel() from generic lambdas or pass them");
+    throw ParameterError(
+        "ExtendedKalmanFilter: parameter 'model' has no Jacobians; build it "
+        "with makeFunctionModel() from generic lambdas or pass them");
   }
-  const GaussianParameters g("ExtendedKalmanFilter", in, model.stateSize(), model.measurementSize());
-  return wrap(ExtendedKalmanFilter<FunctionModel>(model, g.Q, g.R, g.x0, g.P0));
+  const GaussianParameters g("ExtendedKalmanFilter", in, model.stateSize(),
+                             model.measurementSize());
+  return wrap(ExtendedKalmanFilter<FunctionModel>(model, g.Q, g.R, g.x0, g.P0, in.angles()));
 }
 
 std::unique_ptr<IEstimator> createUnscentedKalman(const ParameterMap& map) {
   const ParameterReader in("UnscentedKalmanFilter", map,
-                           {"model", "Q", "R", "x0", "P0", "alpha", "beta", "kappa"});
+                           {"model", "Q", "R", "x0", "P0", "alpha", "beta", "kappa", "angle-states",
+                            "angle-measurements"});
   FunctionModel model = in.model();
-  const GaussianParameters g("UnscentedKalmanFilter", in, model.stateSize(), model.measurementSize());
+  const GaussianParameters g("UnscentedKalmanFilter", in, model.stateSize(),
+                             model.measurementSize());
   UnscentedParameters ut;
   ut.alpha = in.number("alpha", ut.alpha);
   ut.beta = in.number("beta", ut.beta);
   ut.kappa = in.number("kappa", ut.kappa);
-  return wrap(UnscentedKalmanFilter<FunctionModel>(model, g.Q, g.R, g.x0, g.P0, ut));
+  return wrap(UnscentedKalmanFilter<FunctionModel>(model, g.Q, g.R, g.x0, g.P0, ut, in.angles()));
 }
 
 std::unique_ptr<IEstimator> createParticle(const ParameterMap& map) {
   const ParameterReader in("ParticleFilterSIR", map,
                            {"model", "Q", "R", "x0", "P0", "particles", "seed",
-                            "resampling-threshold"});
+                            "resampling-threshold", "angle-states", "angle-measurements"});
   FunctionModel model = in.model();
   const GaussianParameters g("ParticleFilterSIR", in, model.stateSize(), model.measurementSize());
   ParticleFilterParameters pf;
@@ -184,7 +220,7 @@ std::unique_ptr<IEstimator> createParticle(const ParameterMap& map) {
   if (seed < 0) throw ParameterError("ParticleFilterSIR: parameter 'seed' must be >= 0");
   pf.seed = static_cast<std::uint64_t>(seed);
   pf.resamplingThreshold = in.number("resampling-threshold", pf.resamplingThreshold);
-  return wrap(ParticleFilterSIR<FunctionModel>(model, g.Q, g.R, g.x0, g.P0, pf));
+  return wrap(ParticleFilterSIR<FunctionModel>(model, g.Q, g.R, g.x0, g.P0, pf, in.angles()));
 }
 
 std::unique_ptr<IEstimator> createMovingAverage(const ParameterMap& map) {
@@ -212,9 +248,8 @@ std::unique_ptr<IEstimator> createConfidenceWeighted(const ParameterMap& map) {
 
 const std::vector<std::string>& EstimatorFactory::methods() {
   static const std::vector<std::string> names = {
-      "KalmanFilter",  "ExtendedKalmanFilter", "UnscentedKalmanFilter",
-      "ParticleFilterSIR", "MovingAverage",   "MovingMedian",
-      "ConfidenceWeightedAveraging"};
+      "KalmanFilter",  "ExtendedKalmanFilter", "UnscentedKalmanFilter",      "ParticleFilterSIR",
+      "MovingAverage", "MovingMedian",         "ConfidenceWeightedAveraging"};
   return names;
 }
 

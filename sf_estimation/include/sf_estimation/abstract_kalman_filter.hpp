@@ -4,7 +4,9 @@
 
 #include <string>
 
+#include "sf_estimation/angles.hpp"
 #include "sf_estimation/measurement.hpp"
+#include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/parameter_checks.hpp"
 #include "sf_estimation/types.hpp"
 
@@ -26,6 +28,11 @@ class AbstractKalmanFilter {
   const Vector<L>& control() const { return u_; }
   const Matrix<N, N>& processNoise() const { return Q_; }
   const Matrix<M, M>& measurementNoise() const { return R_; }
+  /// Which state variables and measurements are angles (wrapped to (-pi, pi]).
+  const AngleMask<N>& angleStates() const { return angleStates_; }
+  const AngleMask<M>& angleMeasurements() const { return angleMeasurements_; }
+  /// Covariances repaired so far (numerical_repairs.hpp); reset() keeps the count.
+  const NumericalRepairs& numericalRepairs() const { return repairs_; }
 
   void setControl(const Vector<L>& u) {
     validateControl(u, controlSize());
@@ -38,24 +45,32 @@ class AbstractKalmanFilter {
     P_ = P0_;
   }
 
-  /// Replaces the current belief (e.g. after an external re-initialisation).
+  /// Replaces the current belief (e.g. after an external re-initialisation); angle states
+  /// are wrapped.
   void setBelief(const Vector<N>& x, const Matrix<N, N>& P) {
     requireSize(method_, "x", x, stateSize(), 1);
     requireCovariance(method_, "P", P, stateSize(), false);
     x_ = x;
+    angleStates_.wrap(x_);
     P_ = P;
   }
 
   std::string description() const {
-    return method_ + "(n=" + std::to_string(stateSize()) + ", m=" +
-           std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) + ")";
+    return method_ + "(n=" + std::to_string(stateSize()) +
+           ", m=" + std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) +
+           ")";
   }
 
  protected:
   AbstractKalmanFilter(std::string method, const Matrix<N, N>& Q, const Matrix<M, M>& R,
-                       const Vector<N>& x0, const Matrix<N, N>& P0, Index controlSize)
+                       const Vector<N>& x0, const Matrix<N, N>& P0, Index controlSize,
+                       const AngularComponents& angles)
       : method_(std::move(method)), x_(x0), x0_(x0), P_(P0), P0_(P0), Q_(Q), R_(R) {
     const Index n = Q.rows();
+    if (n < 1) {
+      throw ParameterError(method_ + ": the state must have at least one variable (Q is " +
+                           sizeText(Q.rows(), Q.cols()) + ")");
+    }
     requireCovariance(method_, "Q", Q, n, false);
     requireCovariance(method_, "R", R, R.rows(), true);
     requireSize(method_, "x0", x0, n, 1);
@@ -64,17 +79,29 @@ class AbstractKalmanFilter {
       throw ParameterError(method_ + ": control size must be " + std::to_string(L));
     }
     u_ = Vector<L>::Zero(controlSize);
+    angleStates_ = AngleMask<N>(angles.states, n, method_, "state");
+    angleMeasurements_ = AngleMask<M>(angles.measurements, R.rows(), method_, "measurement");
+    angleStates_.wrap(x0_);
+    x_ = x0_;
   }
 
-  /// Makes (x, P) the new belief after checking it is finite; otherwise the filter keeps
-  /// its previous belief and a NumericalError says why.
-  void commit(const Vector<N>& x, Matrix<N, N>& P) {
+  /// Makes (x, P) the new belief: angle states wrapped, P symmetrised and, if it lost
+  /// positive semi-definiteness, repaired (counted). A non-finite x or P is refused with
+  /// NumericalError and the filter keeps its previous belief. `repairedBefore` counts a
+  /// repair the step already made (the UKF's predicted covariance).
+  void commit(Vector<N>& x, Matrix<N, N>& P, bool repairedBefore = false) {
     symmetrize(P);
     if (!x.allFinite() || !P.allFinite()) {
       throw NumericalError(method_ + ": the estimate became non-finite; step rejected");
     }
+    const bool repaired = repairCovariance(P);
+    if (!P.allFinite()) {
+      throw NumericalError(method_ + ": the covariance repair failed; step rejected");
+    }
+    angleStates_.wrap(x);
     x_ = x;
     P_ = P;
+    repairs_.covariance += (repaired ? 1 : 0) + (repairedBefore ? 1 : 0);
   }
 
   std::string method_;
@@ -82,6 +109,9 @@ class AbstractKalmanFilter {
   Matrix<N, N> P_, P0_, Q_;
   Matrix<M, M> R_;
   Vector<L> u_;
+  AngleMask<N> angleStates_;
+  AngleMask<M> angleMeasurements_;
+  NumericalRepairs repairs_;
 };
 
 }  // namespace estimation

@@ -4,6 +4,7 @@
 #include <ostream>
 #include <string>
 
+#include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/value.hpp"
 
 namespace estimation {
@@ -28,6 +29,10 @@ class IEstimator {
 
   /// Restores the initial state and covariance.
   virtual void reset() = 0;
+
+  /// What the method repaired so far to keep estimating (numerical_repairs.hpp): counts that
+  /// a caller can log. Zero for methods that never need a repair.
+  virtual NumericalRepairs numericalRepairs() const { return {}; }
 };
 
 inline std::ostream& operator<<(std::ostream& os, const IEstimator& estimator) {

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "sf_estimation/errors.hpp"
@@ -24,6 +25,14 @@
 #include "sf_estimation/measurement.hpp"
 
 namespace estimation {
+
+/// True if Filter counts its repairs (Kalman filters, particle filter).
+template <class Filter, class = void>
+struct HasNumericalRepairs : std::false_type {};
+template <class Filter>
+struct HasNumericalRepairs<Filter,
+                           std::void_t<decltype(std::declval<const Filter&>().numericalRepairs())>>
+    : std::true_type {};
 
 template <class Filter>
 class EstimatorAdapter : public IEstimator {
@@ -77,6 +86,13 @@ class EstimatorAdapter : public IEstimator {
   void reset() override {
     filter_.reset();
     fillOutput(0.0);
+  }
+  NumericalRepairs numericalRepairs() const override {
+    if constexpr (HasNumericalRepairs<Filter>::value) {
+      return filter_.numericalRepairs();
+    } else {
+      return {};
+    }
   }
 
   const Filter& filter() const { return filter_; }

@@ -12,8 +12,8 @@
 namespace estimation {
 
 template <class Model>
-class ExtendedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize,
-                                                         Model::ControlSize> {
+class ExtendedKalmanFilter
+    : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize, Model::ControlSize> {
   static constexpr int N = Model::StateSize;
   static constexpr int M = Model::MeasurementSize;
   static constexpr int L = Model::ControlSize;
@@ -21,8 +21,10 @@ class ExtendedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model
 
  public:
   ExtendedKalmanFilter(Model model, const Matrix<N, N>& Q, const Matrix<M, M>& R,
-                       const Vector<N>& x0, const Matrix<N, N>& P0)
-      : Base("ExtendedKalmanFilter", Q, R, x0, P0, model.controlSize()), model_(std::move(model)) {
+                       const Vector<N>& x0, const Matrix<N, N>& P0,
+                       const AngularComponents& angles = {})
+      : Base("ExtendedKalmanFilter", Q, R, x0, P0, model.controlSize(), angles),
+        model_(std::move(model)) {
     checkModelSizes(this->method_, model_, this->stateSize(), this->measurementSize());
   }
 
@@ -43,6 +45,7 @@ class ExtendedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model
       Vector<M> expected(m);
       model_.observation(x, expected);
       Vector<M> y = z.value - expected;
+      this->angleMeasurements_.wrap(y);
       neutraliseMissing(z, y, H);
       Matrix<M, M> R(m, m);
       effectiveMeasurementNoise(this->R_, z, R);
@@ -61,8 +64,10 @@ class ExtendedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model
     Matrix<M, N> H(m, n);
     observationJacobian(model_, x, H);
     model_.observation(x, out.mean);
+    this->angleMeasurements_.wrap(out.mean);
     out.covariance = H * P * H.transpose();
     out.noise = this->R_;
+    out.angular = this->angleMeasurements_.mask();
   }
 
   const Model& model() const { return model_; }

@@ -14,8 +14,8 @@ class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
  public:
   KalmanFilter(const Matrix<N, N>& A, const Matrix<N, L>& B, const Matrix<M, N>& H,
                const Matrix<N, N>& Q, const Matrix<M, M>& R, const Vector<N>& x0,
-               const Matrix<N, N>& P0)
-      : Base("KalmanFilter", Q, R, x0, P0, B.cols()), A_(A), B_(B), H_(H) {
+               const Matrix<N, N>& P0, const AngularComponents& angles = {})
+      : Base("KalmanFilter", Q, R, x0, P0, B.cols(), angles), A_(A), B_(B), H_(H) {
     requireSize(this->method_, "A", A, this->stateSize(), this->stateSize());
     requireSize(this->method_, "B", B, this->stateSize(), this->controlSize());
     requireSize(this->method_, "H", H, this->measurementSize(), this->stateSize());
@@ -35,6 +35,7 @@ class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
     predict(x, P);
     if (z.anyAvailable()) {
       Vector<M> y = z.value - H_ * x;
+      this->angleMeasurements_.wrap(y);
       Matrix<M, N> H = H_;
       neutraliseMissing(z, y, H);
       Matrix<M, M> R(z.size(), z.size());
@@ -51,8 +52,10 @@ class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
     Matrix<N, N> P(this->stateSize(), this->stateSize());
     predict(x, P);
     out.mean = H_ * x;
+    this->angleMeasurements_.wrap(out.mean);
     out.covariance = H_ * P * H_.transpose();
     out.noise = this->R_;
+    out.angular = this->angleMeasurements_.mask();
   }
 
   const Matrix<N, N>& transitionMatrix() const { return A_; }

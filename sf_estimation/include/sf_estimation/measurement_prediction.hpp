@@ -15,6 +15,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "sf_estimation/angles.hpp"
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/measurement_noise.hpp"
@@ -27,11 +28,21 @@ struct MeasurementPrediction {
   Vector<M> mean;           ///< z^, the predicted measurement
   Matrix<M, M> covariance;  ///< covariance of h(x(k|k-1)): H P(k|k-1) H^T for a Kalman filter
   Matrix<M, M> noise;       ///< R, the configured measurement noise
+  Mask<M> angular;          ///< true: the entry is an angle, its innovation is wrapped
 
   explicit MeasurementPrediction(Index size = (M == Dynamic ? 0 : M))
       : mean(Vector<M>::Zero(size)),
         covariance(Matrix<M, M>::Zero(size, size)),
-        noise(Matrix<M, M>::Zero(size, size)) {}
+        noise(Matrix<M, M>::Zero(size, size)),
+        angular(Mask<M>::Constant(size, false)) {}
+
+  bool isAngle(Index i) const { return i < angular.size() && angular(i); }
+
+  /// value - z^_i, wrapped to (-pi, pi] for an angle.
+  double innovation(Index i, double value) const {
+    const double y = value - mean(i);
+    return isAngle(i) ? wrapAngle(y) : y;
+  }
 
   Index size() const { return mean.size(); }
 
@@ -48,19 +59,17 @@ struct MeasurementPrediction {
   }
 };
 
-/// y^T S^-1 y with y = z - z^ over the present entries of z (the missing ones take no part):
-/// chi-square distributed with as many degrees of freedom as entries are present, if the
-/// filter's model is right. Throws NumericalError when S is not positive definite.
+/// y^T S^-1 y with y = z - z^ (wrapped for angles) over the present entries of z (the missing ones
+/// take no part): chi-square distributed with as many degrees of freedom as entries are present, if
+/// the filter's model is right. Throws NumericalError when S is not positive definite.
 template <int M>
 double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction,
                                   const Measurement<M>& z) {
   const Index m = prediction.size();
   Matrix<M, M> S(m, m);
   prediction.innovationCovariance(z, S);
-  Vector<M> y = z.value - prediction.mean;
-  for (Index i = 0; i < m; ++i) {
-    if (!z.available(i)) y(i) = 0.0;
-  }
+  Vector<M> y(m);
+  for (Index i = 0; i < m; ++i) y(i) = z.available(i) ? prediction.innovation(i, z.value(i)) : 0.0;
   const Eigen::LLT<Matrix<M, M>> factor(S);
   if (factor.info() != Eigen::Success) {
     throw NumericalError("innovation covariance is not positive definite; no Mahalanobis distance");
@@ -79,7 +88,7 @@ double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction, In
     throw NumericalError("innovation variance of measurement " + std::to_string(entry) +
                          " is not positive; no Mahalanobis distance");
   }
-  const double y = value - prediction.mean(entry);
+  const double y = prediction.innovation(entry, value);
   return y * y / s;
 }
 

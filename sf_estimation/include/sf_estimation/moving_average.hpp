@@ -32,8 +32,9 @@ class MovingAverage : public WindowSmoother<MovingAverage> {
 
   /// Equal weights.
   MovingAverage(Index inputCount, Index windowSize)
-      : MovingAverage(inputCount, windowSize, Eigen::VectorXd::Ones(std::max<Index>(windowSize, 0)),
-                      false) {}
+      : MovingAverage(inputCount, windowSize,
+                      Eigen::VectorXd::Ones(WindowSmoother::checkedWindowSize(windowSize)), false) {
+  }
 
   /// weights[0] applies to the newest value, weights[windowSize - 1] to the oldest. They must
   /// be finite, non-negative, with a positive sum; they need not sum to 1.

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "sf_estimation/errors.hpp"
+#include "sf_estimation/types.hpp"
 
 namespace estimation {
 
@@ -34,12 +35,12 @@ template <class Derived>
 void requireCovariance(const std::string& method, const std::string& name,
                        const Eigen::MatrixBase<Derived>& value, Index size, bool strict) {
   requireSize(method, name, value, size, size);
+  if (size == 0) return;  // maxCoeff() of an empty matrix is undefined
   const double scale = std::max(1.0, value.cwiseAbs().maxCoeff());
   if (!value.isApprox(value.transpose(), 1e-9) &&
       (value - value.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) {
     throw ParameterError(method + ": parameter '" + name + "' must be symmetric");
   }
-  if (size == 0) return;
   Eigen::LDLT<Eigen::MatrixXd> ldlt(value.eval());
   const Eigen::VectorXd d = ldlt.vectorD();
   if (ldlt.info() != Eigen::Success || d.minCoeff() < -1e-12 * scale) {

@@ -7,22 +7,28 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <string>
 #include <utility>
 
 #include <Eigen/Cholesky>
 
+#include "sf_estimation/angles.hpp"
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/measurement_noise.hpp"
 #include "sf_estimation/measurement_prediction.hpp"
 #include "sf_estimation/model.hpp"
+#include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/parameter_checks.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
 
 namespace estimation {
 
 struct ParticleFilterParameters {
+  /// Upper limit of `particles`, so that a mistyped count is refused instead of exhausting
+  /// memory (three n x particles buffers: 168 MB for n = 7).
+  static constexpr Index kMaxParticles = 1000000;
   Index particles = 1000;
   std::uint64_t seed = 42;
   /// Resample when N_eff < threshold * particles (0 = never, 1 = every step).
@@ -41,25 +47,34 @@ class ParticleFilterSIR {
   static constexpr int M = MeasurementSize;
   static constexpr int L = ControlSize;
   using Particles = Eigen::Matrix<double, N, Dynamic>;
+  static constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
  public:
   ParticleFilterSIR(Model model, const Matrix<N, N>& Q, const Matrix<M, M>& R, const Vector<N>& x0,
-                    const Matrix<N, N>& P0, const ParticleFilterParameters& params = {})
+                    const Matrix<N, N>& P0, const ParticleFilterParameters& params = {},
+                    const AngularComponents& angles = {})
       : model_(std::move(model)), Q_(Q), R_(R), x0_(x0), P0_(P0), params_(params) {
     const std::string method = "ParticleFilterSIR";
     const Index n = Q.rows();
+    if (n < 1) {
+      throw ParameterError(method + ": the state must have at least one variable (Q is " +
+                           sizeText(Q.rows(), Q.cols()) + ")");
+    }
     requireCovariance(method, "Q", Q, n, false);
     requireCovariance(method, "R", R, R.rows(), true);
     requireSize(method, "x0", x0, n, 1);
     requireCovariance(method, "P0", P0, n, false);
     checkModelSizes(method, model_, n, R.rows());
-    if (params.particles < 1) {
-      throw ParameterError(method + ": parameter 'particles' must be at least 1, got " +
+    if (params.particles < 1 || params.particles > ParticleFilterParameters::kMaxParticles) {
+      throw ParameterError(method + ": parameter 'particles' must be from 1 to " +
+                           std::to_string(ParticleFilterParameters::kMaxParticles) + ", got " +
                            std::to_string(params.particles));
     }
     if (!(params.resamplingThreshold >= 0.0 && params.resamplingThreshold <= 1.0)) {
       throw ParameterError(method + ": parameter 'resampling-threshold' must be in [0, 1]");
     }
+    angleStates_ = AngleMask<N>(angles.states, n, method, "state");
+    angleMeasurements_ = AngleMask<M>(angles.measurements, R.rows(), method, "measurement");
     noiseRoot_ = probability::covarianceSquareRoot(Q);
     findNoiseSources();
     const Index m = R.rows(), p = params.particles;
@@ -92,6 +107,10 @@ class ParticleFilterSIR {
   /// Effective sample size after the last step, before any resampling.
   double effectiveSampleSize() const { return effectiveSampleSize_; }
   bool resampledLastStep() const { return resampled_; }
+  const AngleMask<N>& angleStates() const { return angleStates_; }
+  const AngleMask<M>& angleMeasurements() const { return angleMeasurements_; }
+  /// Steps whose measurement made every particle weight vanish (numerical_repairs.hpp).
+  const NumericalRepairs& numericalRepairs() const { return repairs_; }
 
   void setControl(const Vector<L>& u) {
     validateControl(u, controlSize());
@@ -105,6 +124,7 @@ class ParticleFilterSIR {
     probability::fillStandardNormal(engine_, noise_);
     particles_.noalias() = root * noise_;
     particles_.colwise() += x0_;
+    angleStates_.wrap(particles_);
     logWeights_.setConstant(-std::log(static_cast<double>(particleCount())));
     weights_.setConstant(1.0 / static_cast<double>(particleCount()));
     updateMoments();
@@ -124,8 +144,8 @@ class ParticleFilterSIR {
   }
 
   std::string description() const {
-    return "ParticleFilterSIR(n=" + std::to_string(stateSize()) + ", m=" +
-           std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) +
+    return "ParticleFilterSIR(n=" + std::to_string(stateSize()) +
+           ", m=" + std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) +
            ", particles=" + std::to_string(particleCount()) + ")";
   }
 
@@ -137,7 +157,7 @@ class ParticleFilterSIR {
     const Index n = stateSize(), m = measurementSize(), p = particleCount();
     probability::RandomEngine engine = engine_;
     Vector<N> in(n), transitioned(n), noise(n), sample(n);
-    Vector<M> expected(m), deviation(m);
+    Vector<M> expected(m), deviation(m), after(m);
     out.mean.setZero();
     out.covariance.setZero();
     double weightSum = 0.0;
@@ -148,13 +168,20 @@ class ParticleFilterSIR {
       if (w == 0.0) continue;
       model_.observation(sample, expected);
       weightSum += w;
+      // For an angle the running mean moves by the wrapped deviation: the mean on the
+      // circle in the chart around the running mean.
       deviation = expected - out.mean;
+      angleMeasurements_.wrap(deviation);
       out.mean += (w / weightSum) * deviation;
-      out.covariance.noalias() += w * deviation * (expected - out.mean).transpose();
+      angleMeasurements_.wrap(out.mean);
+      after = expected - out.mean;
+      angleMeasurements_.wrap(after);
+      out.covariance.noalias() += w * deviation * after.transpose();
     }
     out.covariance /= weightSum;
     symmetrize(out.covariance);
     out.noise = R_;
+    out.angular = angleMeasurements_.mask();
   }
 
   const Model& model() const { return model_; }
@@ -175,6 +202,10 @@ class ParticleFilterSIR {
     // Weight: log w_i += log N(z; h(x_i), R) over the present entries.
     newLogWeights_ = logWeights_;
     if (z.anyAvailable()) weigh(z);
+    // Every weight vanished (the likelihood is zero or not a number for every particle): the
+    // measurement is dropped, the weights stay those before it.
+    const bool weightsVanished = !(newLogWeights_.maxCoeff() > -kInfinity);
+    if (weightsVanished) newLogWeights_ = logWeights_;
     normaliseWeights();
 
     particles_.swap(scratch_);
@@ -183,6 +214,7 @@ class ParticleFilterSIR {
     resampled_ = effectiveSampleSize_ < params_.resamplingThreshold * static_cast<double>(p);
     if (resampled_) resample();
     updateMoments();
+    if (weightsVanished) ++repairs_.weights;
   }
 
   /// sample = f(in, u) + w with w ~ N(0, Q) drawn from `engine`; `out` and `noise` are
@@ -198,9 +230,11 @@ class ParticleFilterSIR {
       sample.noalias() = noiseRoot_ * noise;
     }
     sample += out;
+    angleStates_.wrap(sample);
     if (!sample.allFinite()) {
-      throw NumericalError("ParticleFilterSIR: the state transition produced a non-finite "
-                           "particle; step rejected");
+      throw NumericalError(
+          "ParticleFilterSIR: the state transition produced a non-finite "
+          "particle; step rejected");
     }
   }
 
@@ -223,11 +257,15 @@ class ParticleFilterSIR {
       in = scratch_.col(i);  // the freshly sampled particles, not yet committed
       model_.observation(in, expected);
       residual = z.value - expected;
+      angleMeasurements_.wrap(residual);
       for (Index j = 0; !complete && j < m; ++j) {
         if (!z.available(j)) residual(j) = 0.0;
       }
       whitened.noalias() = *whitening * residual;
-      newLogWeights_(i) -= 0.5 * whitened.squaredNorm();
+      const double squaredDistance = whitened.squaredNorm();
+      // A likelihood that is not a number (h gave NaN or inf for this particle) is zero.
+      newLogWeights_(i) =
+          std::isnan(squaredDistance) ? -kInfinity : newLogWeights_(i) - 0.5 * squaredDistance;
     }
   }
 
@@ -286,6 +324,7 @@ class ParticleFilterSIR {
     constexpr double kLogFloor = -700.0;
     const double largest = newLogWeights_.maxCoeff();
     if (!std::isfinite(largest) || newLogWeights_.hasNaN()) {
+      // Not reachable: step() restores the previous (normalised) weights first.
       throw NumericalError("ParticleFilterSIR: all particle weights vanished; step rejected");
     }
     double sum = 0.0;
@@ -302,13 +341,27 @@ class ParticleFilterSIR {
   /// over the particles, one at a time: Eigen evaluates the mean's n x p times p product as n
   /// strided dot products, and the covariance as one n x p x n product would need the
   /// deviations scaled and stored first, both slower at these sizes.
+  /// Angle states: the circular mean atan2(sum w sin, sum w cos) of the particles, and
+  /// deviations from it wrapped to (-pi, pi].
   void updateMoments() {
     state_.setZero();
     forEachDistinctParticle([&](Index i, double w) { state_ += w * particles_.col(i); });
+    if (angleStates_.any()) {
+      for (Index r = 0; r < stateSize(); ++r) {
+        if (!angleStates_(r)) continue;
+        double s = 0.0, c = 0.0;
+        forEachDistinctParticle([&](Index i, double w) {
+          s += w * std::sin(particles_(r, i));
+          c += w * std::cos(particles_(r, i));
+        });
+        state_(r) = std::atan2(s, c);
+      }
+    }
     Vector<N> deviation(stateSize()), weighted(stateSize());
     covariance_.setZero();
     forEachDistinctParticle([&](Index i, double w) {
       deviation = particles_.col(i) - state_;
+      angleStates_.wrap(deviation);
       weighted = w * deviation;
       covariance_.noalias() += weighted * deviation.transpose();
     });
@@ -330,8 +383,6 @@ class ParticleFilterSIR {
     }
   }
 
-
-
   Model model_;
   Matrix<N, N> Q_;
   Matrix<M, M> R_;
@@ -339,7 +390,7 @@ class ParticleFilterSIR {
   Matrix<N, N> P0_;
   ParticleFilterParameters params_;
   Matrix<N, N> noiseRoot_;
-  bool noisePerRow_ = false;                 // see findNoiseSources()
+  bool noisePerRow_ = false;  // see findNoiseSources()
   Eigen::Matrix<Index, N, 1> noiseSource_;
   Vector<N> noiseScale_;
   Eigen::LLT<Matrix<M, M>> maskedNoise_;
@@ -353,6 +404,9 @@ class ParticleFilterSIR {
   Matrix<N, N> covariance_;
   double effectiveSampleSize_ = 0.0;
   bool resampled_ = false;
+  AngleMask<N> angleStates_;
+  AngleMask<M> angleMeasurements_;
+  NumericalRepairs repairs_;
 };
 
 }  // namespace estimation

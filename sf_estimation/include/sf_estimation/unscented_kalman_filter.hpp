@@ -5,6 +5,7 @@
 // carry the same omega, so gyro and wheels would be ignored).
 #pragma once
 
+#include <optional>
 #include <utility>
 
 #include "sf_estimation/abstract_kalman_filter.hpp"
@@ -16,8 +17,8 @@
 namespace estimation {
 
 template <class Model>
-class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize,
-                                                          Model::ControlSize> {
+class UnscentedKalmanFilter
+    : public AbstractKalmanFilter<Model::StateSize, Model::MeasurementSize, Model::ControlSize> {
   static constexpr int N = Model::StateSize;
   static constexpr int M = Model::MeasurementSize;
   static constexpr int L = Model::ControlSize;
@@ -27,8 +28,9 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
  public:
   UnscentedKalmanFilter(Model model, const Matrix<N, N>& Q, const Matrix<M, M>& R,
                         const Vector<N>& x0, const Matrix<N, N>& P0,
-                        const UnscentedParameters& params = {})
-      : Base("UnscentedKalmanFilter", Q, R, x0, P0, model.controlSize()),
+                        const UnscentedParameters& params = {},
+                        const AngularComponents& angles = {})
+      : Base("UnscentedKalmanFilter", Q, R, x0, P0, model.controlSize(), angles),
         model_(std::move(model)),
         transform_(Q.rows(), params),
         params_(params) {
@@ -41,7 +43,8 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
     const Index count = transform_.pointCount();
     Vector<N> x(n);
     Matrix<N, N> P(n, n);
-    predict(x, P);
+    bool widened = false;
+    const bool repairedPrediction = predict(x, P, widened);
 
     if (z.anyAvailable()) {
       const Index m = this->measurementSize();
@@ -49,11 +52,18 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
       Matrix<M, S> expected(m, count);
       Vector<M> zMean(m);
       Matrix<M, M> Pzz(m, m);
-      predictMeasurementPoints(x, P, points, expected, zMean, Pzz);
+      std::optional<UnscentedTransform<N>> wide;
+      const UnscentedTransform<N>& transform = transformFor(x, P, wide);
+      widened = widened || wide.has_value();
+      predictMeasurementPoints(transform, x, P, points, expected, zMean, Pzz);
       Matrix<N, M> Pxz(n, m);
-      transform_.crossCovariance(points, x, expected, zMean, Pxz);
+      // The state deviations of fresh sigma points are the columns of the root, exactly: not
+      // wrapped, even when an angle's spread exceeds pi.
+      transform.crossCovariance(points, x, expected, zMean, Pxz, AngleMask<N>(n),
+                                this->angleMeasurements_);
 
       Vector<M> y = z.value - zMean;
+      this->angleMeasurements_.wrap(y);
       Matrix<M, N> PxzT = Pxz.transpose();
       neutraliseMissing(z, y, PxzT);
       Pxz = PxzT.transpose();
@@ -72,7 +82,8 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
       x += K * y;
       P -= K * Szz * K.transpose();
     }
-    this->commit(x, P);
+    this->commit(x, P, repairedPrediction);
+    if (widened) ++this->repairs_.sigmaSpread;
   }
 
   /// z^ and Pzz of the unscented transform of the predicted belief for the next step with
@@ -82,11 +93,15 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
     const Index count = transform_.pointCount();
     Vector<N> x(n);
     Matrix<N, N> P(n, n);
-    predict(x, P);
+    bool widened = false;
+    predict(x, P, widened);
     Matrix<N, S> points(n, count);
     Matrix<M, S> expected(m, count);
-    predictMeasurementPoints(x, P, points, expected, out.mean, out.covariance);
+    std::optional<UnscentedTransform<N>> wide;
+    predictMeasurementPoints(transformFor(x, P, wide), x, P, points, expected, out.mean,
+                             out.covariance);
     out.noise = this->R_;
+    out.angular = this->angleMeasurements_.mask();
   }
 
   const Model& model() const { return model_; }
@@ -95,38 +110,65 @@ class UnscentedKalmanFilter : public AbstractKalmanFilter<Model::StateSize, Mode
 
  private:
   /// Time update: sigma points of the current belief propagated through f; P includes Q.
-  void predict(Vector<N>& x, Matrix<N, N>& P) const {
+  /// Returns true if P had lost positive semi-definiteness and was repaired (a negative
+  /// central covariance weight, beta < 0 or a small alpha with a strongly nonlinear f, can
+  /// make the unscented covariance indefinite); the correction needs its square root.
+  /// `widened` is set when the sigma points needed a larger alpha (transformFor).
+  bool predict(Vector<N>& x, Matrix<N, N>& P, bool& widened) const {
     const Index n = this->stateSize();
     const Index count = transform_.pointCount();
     Matrix<N, S> points(n, count), propagated(n, count);
-    transform_.sigmaPoints(this->x_, this->P_, points);
+    std::optional<UnscentedTransform<N>> wide;
+    const UnscentedTransform<N>& transform = transformFor(this->x_, this->P_, wide);
+    widened = wide.has_value();
+    transform.sigmaPoints(this->x_, this->P_, points);
     Vector<N> in(n), out(n);
     for (Index i = 0; i < count; ++i) {
       in = points.col(i);
       model_.transition(in, this->u_, out);
       propagated.col(i) = out;
     }
-    transform_.mean(propagated, x);
-    transform_.crossCovariance(propagated, x, propagated, x, P);
+    transform.mean(propagated, x, this->angleStates_);
+    transform.crossCovariance(propagated, x, propagated, x, P, this->angleStates_,
+                              this->angleStates_);
     P += this->Q_;
+    symmetrize(P);
+    if (!x.allFinite() || !P.allFinite()) {
+      throw NumericalError(this->method_ + ": the time update became non-finite; step rejected");
+    }
+    return repairCovariance(P);
   }
 
   /// Fresh sigma points of the predicted belief (x, P), their images under h, and the
   /// images' mean and covariance (without R).
-  void predictMeasurementPoints(const Vector<N>& x, const Matrix<N, N>& P, Matrix<N, S>& points,
-                                Matrix<M, S>& expected, Vector<M>& zMean,
-                                Matrix<M, M>& Pzz) const {
+  void predictMeasurementPoints(const UnscentedTransform<N>& transform, const Vector<N>& x,
+                                const Matrix<N, N>& P, Matrix<N, S>& points, Matrix<M, S>& expected,
+                                Vector<M>& zMean, Matrix<M, M>& Pzz) const {
     const Index n = this->stateSize(), m = this->measurementSize();
-    transform_.sigmaPoints(x, P, points);
+    transform.sigmaPoints(x, P, points);
     Vector<N> in(n);
     Vector<M> zi(m);
-    for (Index i = 0; i < transform_.pointCount(); ++i) {
+    for (Index i = 0; i < transform.pointCount(); ++i) {
       in = points.col(i);
       model_.observation(in, zi);
       expected.col(i) = zi;
     }
-    transform_.mean(expected, zMean);
-    transform_.crossCovariance(expected, zMean, expected, zMean, Pzz);
+    transform.mean(expected, zMean, this->angleMeasurements_);
+    transform.crossCovariance(expected, zMean, expected, zMean, Pzz, this->angleMeasurements_,
+                              this->angleMeasurements_);
+  }
+
+  /// The configured transform, or, when its sigma points of (x, P) would be too close to x to
+  /// be resolved in floating point (UnscentedTransform::alphaFor), one with the alpha that
+  /// resolves them, built in `wide` for this step.
+  const UnscentedTransform<N>& transformFor(const Vector<N>& x, const Matrix<N, N>& P,
+                                            std::optional<UnscentedTransform<N>>& wide) const {
+    const double alpha = transform_.alphaFor(x, P);
+    if (alpha <= params_.alpha) return transform_;
+    UnscentedParameters widened = params_;
+    widened.alpha = alpha;
+    wide.emplace(this->stateSize(), widened);
+    return *wide;
   }
 
   Model model_;

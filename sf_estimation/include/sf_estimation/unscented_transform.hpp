@@ -2,10 +2,14 @@
 // weighted mean, covariance and cross-covariance of transformed points.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include <Eigen/Cholesky>
 
+#include "sf_estimation/angles.hpp"
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
 #include "sf_estimation/types.hpp"
@@ -28,13 +32,15 @@ class UnscentedTransform {
   UnscentedTransform(Index n, const UnscentedParameters& p) : n_(n), params_(p) {
     if (!(p.alpha > 0.0) || !std::isfinite(p.alpha) || !std::isfinite(p.beta) ||
         !std::isfinite(p.kappa)) {
-      throw ParameterError("UnscentedKalmanFilter: parameter 'alpha' must be positive and "
-                           "alpha, beta, kappa finite");
+      throw ParameterError(
+          "UnscentedKalmanFilter: parameter 'alpha' must be positive and "
+          "alpha, beta, kappa finite");
     }
     lambda_ = p.alpha * p.alpha * (static_cast<double>(n) + p.kappa) - static_cast<double>(n);
     if (!(static_cast<double>(n) + lambda_ > 0.0)) {
-      throw ParameterError("UnscentedKalmanFilter: n + lambda = alpha^2 (n + kappa) must be "
-                           "positive; check 'alpha' and 'kappa'");
+      throw ParameterError(
+          "UnscentedKalmanFilter: n + lambda = alpha^2 (n + kappa) must be "
+          "positive; check 'alpha' and 'kappa'");
     }
     const Index count = 2 * n + 1;
     meanWeights_.setConstant(count, 0.5 / (static_cast<double>(n) + lambda_));
@@ -44,6 +50,26 @@ class UnscentedTransform {
   }
 
   Index pointCount() const { return 2 * n_ + 1; }
+  const UnscentedParameters& parameters() const { return params_; }
+
+  /// Spread the sigma points of (mean, P) need to resolve every state: a point is stored to
+  /// about eps |x_i|, and the transform's sums amplify that by its weights, so that the
+  /// relative error of the covariance is about eps |x_i| / (alpha sqrt(n + kappa) sigma_i).
+  /// Returns the smallest alpha that keeps it below 1 / kResolution for every state (capped
+  /// at 1), or the configured alpha when that suffices. A state far from the origin with a
+  /// small variance (a global coordinate, a time stamp) needs a larger alpha than 1e-3.
+  static constexpr double kResolution = 1e6;
+  double alphaFor(const Vector<N>& mean, const Matrix<N, N>& P) const {
+    const double nk = static_cast<double>(n_) + params_.kappa;
+    double alpha = params_.alpha;
+    for (Index i = 0; i < n_; ++i) {
+      if (!(P(i, i) > 0.0)) continue;
+      const double needed = kResolution * std::numeric_limits<double>::epsilon() *
+                            std::abs(mean(i)) / std::sqrt(nk * P(i, i));
+      alpha = std::max(alpha, std::min(1.0, needed));
+    }
+    return alpha;
+  }
   double lambda() const { return lambda_; }
   const Vector<PointCount>& meanWeights() const { return meanWeights_; }
   const Vector<PointCount>& covarianceWeights() const { return covarianceWeights_; }
@@ -68,15 +94,35 @@ class UnscentedTransform {
     points.template middleCols<N>(1 + n_, n_) = (-root).colwise() + mean;
   }
 
+  /// Weighted mean of the points, taken as the central point (column 0) plus the weighted
+  /// mean of the other points' deviations from it. Mathematically this is sum_i Wm_i p_i (the
+  /// weights sum to 1); numerically it avoids cancelling a large offset against the huge,
+  /// opposite weights of a small alpha (Wm_0 = -1e6 for alpha = 1e-3, n = 1): a state at 1e9
+  /// with a variance of 1 would otherwise get its mean wrong by 1e9 * 1e6 * 1e-16 = 0.1, and
+  /// its covariance negative. Angle rows average wrapped deviations (angles.hpp, meanAround):
+  /// exact on the circle as long as every point lies within pi of the central one.
   template <int Rows>
-  void mean(const Points<Rows>& points, Vector<Rows>& result) const {
-    result.noalias() = points * meanWeights_;
+  void mean(const Points<Rows>& points, Vector<Rows>& result,
+            const AngleMask<Rows>& angles = AngleMask<Rows>()) const {
+    const Vector<Rows> reference = points.col(0);
+    Points<Rows> deviations = points.colwise() - reference;
+    angles.wrap(deviations);
+    result.noalias() = deviations * meanWeights_;
+    result += reference;
+    angles.wrap(result);
   }
 
-  /// sum_i Wc_i (a_i - aMean)(b_i - bMean)^T; with a = b this is the covariance.
+  /// sum_i Wc_i (a_i - aMean)(b_i - bMean)^T; with a = b this is the covariance. The
+  /// deviations of the rows marked in aAngles / bAngles are wrapped to (-pi, pi].
   template <int RowsA, int RowsB>
   void crossCovariance(const Points<RowsA>& a, const Vector<RowsA>& aMean, const Points<RowsB>& b,
-                       const Vector<RowsB>& bMean, Matrix<RowsA, RowsB>& result) const {
+                       const Vector<RowsB>& bMean, Matrix<RowsA, RowsB>& result,
+                       const AngleMask<RowsA>& aAngles = AngleMask<RowsA>(),
+                       const AngleMask<RowsB>& bAngles = AngleMask<RowsB>()) const {
+    Points<RowsA> deviationsA = a.colwise() - aMean;
+    aAngles.wrap(deviationsA);
+    Points<RowsB> deviationsB = b.colwise() - bMean;
+    bAngles.wrap(deviationsB);
     if constexpr (N != Dynamic && RowsA != Dynamic && RowsB != Dynamic) {
       // At fixed sizes each entry is one dot product over the points, of deviations stored
       // transposed so that the dot runs over contiguous memory. As one matrix product Eigen
@@ -84,9 +130,9 @@ class UnscentedTransform {
       // the arithmetic. With the same points on both sides the result is a covariance:
       // symmetric, so only its lower triangle is computed.
       using Deviations = Eigen::Matrix<double, PointCount, RowsA>;
-      const Deviations da = (a.colwise() - aMean).transpose();
+      const Deviations da = deviationsA.transpose();
       const Eigen::Matrix<double, PointCount, RowsB> weightedDb =
-          covarianceWeights_.asDiagonal() * (b.colwise() - bMean).transpose();
+          covarianceWeights_.asDiagonal() * deviationsB.transpose();
       bool symmetric = false;
       if constexpr (RowsA == RowsB) symmetric = &a == &b && &aMean == &bMean;
       for (Index j = 0; j < result.cols(); ++j) {
@@ -96,9 +142,8 @@ class UnscentedTransform {
         }
       }
     } else {
-      const Points<RowsA> weighted = (a.colwise() - aMean) * covarianceWeights_.asDiagonal();
-      const Points<RowsB> db = b.colwise() - bMean;
-      result.noalias() = weighted * db.transpose();
+      const Points<RowsA> weighted = deviationsA * covarianceWeights_.asDiagonal();
+      result.noalias() = weighted * deviationsB.transpose();
     }
   }
 

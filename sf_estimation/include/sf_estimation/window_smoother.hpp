@@ -71,11 +71,16 @@ class WindowSmoother {
     reset();
   }
 
+  /// Upper limits, so that a mistyped size is refused instead of exhausting memory (the
+  /// windows hold inputs x window values, the covariance inputs^2): at most 80 MB.
+  static constexpr Index kMaxInputCount = 1000;
+  static constexpr Index kMaxWindowSize = 10000;
+
   static Index checkedWindowSize(Index windowSize) {
-    if (windowSize < 1) {
+    if (windowSize < 1 || windowSize > kMaxWindowSize) {
       throw ParameterError(std::string(Derived::kName) +
-                           ": parameter 'windowSize' must be at least 1, got " +
-                           std::to_string(windowSize));
+                           ": parameter 'windowSize' must be from 1 to " +
+                           std::to_string(kMaxWindowSize) + ", got " + std::to_string(windowSize));
     }
     return windowSize;
   }
@@ -87,10 +92,10 @@ class WindowSmoother {
 
  private:
   static Index checkedInputCount(Index inputCount) {
-    if (inputCount < 1) {
+    if (inputCount < 1 || inputCount > kMaxInputCount) {
       throw ParameterError(std::string(Derived::kName) +
-                           ": parameter 'inputCount' must be at least 1, got " +
-                           std::to_string(inputCount));
+                           ": parameter 'inputCount' must be from 1 to " +
+                           std::to_string(kMaxInputCount) + ", got " + std::to_string(inputCount));
     }
     return inputCount;
   }

@@ -56,6 +56,7 @@
 //   INPUT_GATE                               o    o    o    o    x    x    x
 //   ALIGN_BY_STAMP, MAX_MEASUREMENT_LAG      o    o    o    o    o    o    o
 //   INPUT_TIMEOUT, INPUT_RANGE               o    o    o    o    o    o    o
+//   ANGLE_STATES, ANGLE_INPUTS               o    o    o    o    x    x    x
 //   R required (#error if missing), o optional, c required if TOPICS_IN_CTRL is defined,
 //   x not allowed (#error), - not used (a "#pragma GCC warning" says it is ignored).
 //   T, x and u must not be macros (#error): the expressions use them.
@@ -110,6 +111,10 @@
 //                               no HOLD/FILL substitute, diagnostic WARN). Default none.
 //   INPUT_RANGE                 ((i)(minimum)(maximum)) per input, minimum < maximum: values
 //                               outside are dropped and counted.           Default none.
+//   ANGLE_STATES                (i)(j)...: state variables x[i] that are angles in radians;
+//                               wrapped to (-pi, pi], averaged on the circle. Default none.
+//   ANGLE_INPUTS                (i)(j)...: TOPICS_IN entries measuring an angle in radians;
+//                               their innovations are wrapped.             Default none.
 //
 // STATE SIZE n: rows of STATE_TRANSITION_MATRIX (KF); entries of STATE_TRANSITION_MODEL
 //   (EKF, UKF, PF); m (MA, MM: one averaged output per input); 1 (CWA: one fused value).
@@ -181,6 +186,9 @@
 //     inline constexpr std::array<InputRange, m> kInputRanges ({minimum, maximum}).
 //   std::vector<sf_filter::InputOptions> defaultInputOptions();  // all of the above per input
 //
+//   Angles (detail/angles.hpp): constexpr bool kHasAngleStates, kHasAngleInputs;
+//     inline constexpr std::array<bool, n> kAngleStates; std::array<bool, m> kAngleInputs.
+//
 //   One subscription per distinct topic: subscribe for every input with owns_subscription and,
 //   in its callback, read every input J with J::first_same_topic == owner index:
 //     sf_config::forEachInput([&](auto in) {
@@ -234,6 +242,7 @@
 #else
 /// 1: the configuration is usable (size/value mistakes may still be reported by static_assert).
 #define SF_CONFIG_OK 1
+#include "sf_filter/config/detail/angles.hpp"
 #include "sf_filter/config/detail/checks.hpp"
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/input_alignment.hpp"

@@ -3,6 +3,7 @@
 // the generated translation unit after the configuration header and configuration.hpp.
 #pragma once
 
+#include <sf_estimation/angles.hpp>
 #include <sf_estimation/confidence_weighted_averaging.hpp>
 #include <sf_estimation/extended_kalman_filter.hpp>
 #include <sf_estimation/kalman_filter.hpp>
@@ -18,6 +19,19 @@ constexpr double periodSeconds(const sf_config::Parameters& p) {
   return p.estimation_period_ms / 1000.0;
 }
 
+/// ANGLE_STATES and ANGLE_INPUTS of the configuration header, for the model-based filters.
+inline estimation::AngularComponents angularComponents() {
+  estimation::AngularComponents angles;
+  for (std::size_t i = 0; i < sf_config::kAngleStates.size(); ++i) {
+    if (sf_config::kAngleStates[i]) angles.states.push_back(static_cast<estimation::Index>(i));
+  }
+  for (std::size_t i = 0; i < sf_config::kAngleInputs.size(); ++i) {
+    if (sf_config::kAngleInputs[i])
+      angles.measurements.push_back(static_cast<estimation::Index>(i));
+  }
+  return angles;
+}
+
 #if METHOD == KALMAN_FILTER
 using Filter = estimation::KalmanFilter<sf_config::kStateSize, sf_config::kMeasurementSize,
                                         sf_config::kControlSize>;
@@ -26,15 +40,15 @@ inline Filter makeFilter(const sf_config::Parameters& p) {
   model.T = periodSeconds(p);  // matrices may use T
   return Filter(model.transitionMatrix(), model.controlInputMatrix(), model.observationMatrix(),
                 p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
-                p.initial_error_covariance);
+                p.initial_error_covariance, angularComponents());
 }
 #elif METHOD == EXTENDED_KALMAN_FILTER
 using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
 inline Filter makeFilter(const sf_config::Parameters& p) {
   sf_config::Model model;
   model.T = periodSeconds(p);
-  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance,
-                p.initial_state, p.initial_error_covariance);
+  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
+                p.initial_error_covariance, angularComponents());
 }
 #elif METHOD == UNSCENTED_KALMAN_FILTER
 using Filter = estimation::UnscentedKalmanFilter<sf_config::Model>;
@@ -45,8 +59,8 @@ inline Filter makeFilter(const sf_config::Parameters& p) {
   ut.alpha = p.ukf_alpha;
   ut.beta = p.ukf_beta;
   ut.kappa = p.ukf_kappa;
-  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance,
-                p.initial_state, p.initial_error_covariance, ut);
+  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
+                p.initial_error_covariance, ut, angularComponents());
 }
 #elif METHOD == PARTICLE_FILTER_SIR
 using Filter = estimation::ParticleFilterSIR<sf_config::Model>;
@@ -57,8 +71,8 @@ inline Filter makeFilter(const sf_config::Parameters& p) {
   pf.particles = p.number_of_particles;
   pf.seed = p.random_seed;
   pf.resamplingThreshold = p.resampling_threshold;
-  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance,
-                p.initial_state, p.initial_error_covariance, pf);
+  return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
+                p.initial_error_covariance, pf, angularComponents());
 }
 #elif METHOD == MOVING_AVERAGE
 using Filter = estimation::MovingAverage;

@@ -1,0 +1,62 @@
+// What the filters repair instead of failing, and the covariance repair itself.
+//
+// Rules (doc/estimation.md, "Numerical faults"):
+//  - a covariance that lost positive semi-definiteness beyond rounding (an LDLT pivot below
+//    -1e-9 times its largest diagonal entry) is replaced by its nearest positive
+//    semi-definite matrix in the Frobenius norm: eigenvalues below zero are raised to zero
+//    (Higham 1988). Counted in NumericalRepairs::covariance.
+//  - particle filter: a particle whose likelihood is not a number gets weight zero; a step in
+//    which every weight vanished drops its measurement (the weights stay as before it, as
+//    for a missing measurement). Counted in NumericalRepairs::weights.
+//  - unscented Kalman filter: sigma points too close to a state far from the origin to be
+//    resolved in floating point get a larger alpha for that step
+//    (UnscentedTransform::alphaFor). Counted in NumericalRepairs::sigmaSpread.
+// A failure that cannot be repaired (an innovation covariance that is not positive definite,
+// a non-finite prediction) rejects the step with NumericalError and leaves the filter as it
+// was.
+#pragma once
+
+#include <cstdint>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include "sf_estimation/parameter_checks.hpp"
+#include "sf_estimation/types.hpp"
+
+namespace estimation {
+
+/// Counts of repairs since the filter was constructed (reset() keeps them).
+struct NumericalRepairs {
+  std::uint64_t covariance = 0;   ///< covariances projected back to positive semi-definite
+  std::uint64_t weights = 0;      ///< PF steps whose measurement made every weight vanish
+  std::uint64_t sigmaSpread = 0;  ///< UKF steps that widened alpha to resolve a badly scaled state
+
+  std::uint64_t total() const { return covariance + weights + sigmaSpread; }
+};
+
+/// Relative tolerance on negative LDLT pivots: rounding in a covariance update stays far
+/// below it, a genuinely indefinite matrix (a negative variance) far above. The same value
+/// as CovarianceSquareRoot's, so a covariance accepted here can be given sigma points.
+constexpr double kCovarianceTolerance = 1e-9;
+
+/// Makes a finite symmetric P positive semi-definite if it is not (see the rules above).
+/// Returns true if P was changed. Costs one LDLT when P is fine.
+template <int N>
+bool repairCovariance(Matrix<N, N>& P) {
+  const Index n = P.rows();
+  if (n == 0) return false;
+  const double scale = P.diagonal().cwiseAbs().maxCoeff();
+  const Eigen::LDLT<Matrix<N, N>> ldlt(P);
+  if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -kCovarianceTolerance * scale) {
+    return false;
+  }
+  const Eigen::SelfAdjointEigenSolver<Matrix<N, N>> eigen(P);
+  if (eigen.info() != Eigen::Success) return false;  // leave it to the caller's checks
+  const Vector<N> floored = eigen.eigenvalues().cwiseMax(0.0);
+  P = eigen.eigenvectors() * floored.asDiagonal() * eigen.eigenvectors().transpose();
+  symmetrize(P);
+  return true;
+}
+
+}  // namespace estimation

@@ -1,0 +1,152 @@
+#!/usr/bin/python3
+"""Builds sf_estimation with clang under AddressSanitizer + UndefinedBehaviorSanitizer and
+runs either its unit tests or its libFuzzer target, writing a JUnit file for
+catkin_test_results.
+
+  sanitizer_checks.py unit-tests --build-dir DIR [--junit FILE]
+      configures sf_estimation/ standalone in DIR (-DSF_ESTIMATION_SANITIZE=ON, build type
+      Sanitize: -O1, Eigen assertions on), builds sf_estimation_tests and runs every test;
+      any sanitizer report aborts the test binary and fails the check.
+
+  sanitizer_checks.py fuzz --build-dir DIR [--seconds 60] [--corpus DIR] [--junit FILE]
+      builds sf_estimation_fuzz (-DSF_ESTIMATION_FUZZ=ON) and runs it for the given time on
+      the corpus directory (default DIR/corpus, kept between runs so it grows) plus the
+      inputs that once failed (sf_estimation/fuzz/regressions); prints the
+      executions, the corpus size and the coverage libFuzzer reports. A crash, hang (10 s per
+      input), leak, sanitizer report or an exception other than estimation::EstimationError
+      fails the check; libFuzzer then leaves the input as DIR/crash-* (or leak-*, timeout-*).
+
+Both need clang and libclang-rt-14-dev (scripts/common.sh installs them).
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+import time
+import xml.etree.ElementTree as ET
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.path.dirname(HERE)  # sf_estimation/
+# Inputs that once failed (fixed since), read as seeds; new inputs go to the first corpus.
+REGRESSIONS = os.path.join(SOURCE, "fuzz", "regressions")
+SANITIZER_ENV = {
+    "ASAN_OPTIONS": "abort_on_error=1:detect_leaks=1:strict_string_checks=1",
+    "UBSAN_OPTIONS": "print_stacktrace=1:halt_on_error=1",
+}
+
+
+def run(cmd, **kwargs):
+    print("$ " + " ".join(cmd), flush=True)
+    return subprocess.run(cmd, **kwargs)
+
+
+def build(build_dir, target, extra, jobs):
+    configure = ["cmake", "-S", SOURCE, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Sanitize",
+                 "-DCMAKE_CXX_COMPILER=clang++"] + extra
+    if run(configure, stdout=subprocess.DEVNULL).returncode != 0:
+        return False
+    return run(["cmake", "--build", build_dir, "-j", str(jobs), "--target", target]).returncode == 0
+
+
+def write_junit(path, suite_name, cases):
+    """cases: (name, ok, message, seconds)."""
+    if not path:
+        return
+    suite = ET.Element("testsuite", name=suite_name, tests=str(len(cases)),
+                       failures=str(sum(1 for c in cases if not c[1])), errors="0", skipped="0")
+    for name, ok, message, seconds in cases:
+        case = ET.SubElement(suite, "testcase", classname=suite_name, name=name,
+                             time="%.1f" % seconds)
+        if not ok:
+            ET.SubElement(case, "failure", message=message.splitlines()[0]).text = message
+        else:
+            ET.SubElement(case, "system-out").text = message
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    ET.ElementTree(suite).write(path, encoding="utf-8", xml_declaration=True)
+
+
+def unit_tests(args):
+    start = time.time()
+    env = dict(os.environ, **SANITIZER_ENV)
+    if not build(args.build_dir, "sf_estimation_tests",
+                 ["-DSF_ESTIMATION_SANITIZE=ON", "-DSF_ESTIMATION_BUILD_TESTS=ON"], args.jobs):
+        write_junit(args.junit, "estimation_sanitized_tests",
+                    [("build", False, "sanitizer build of sf_estimation_tests failed", 0.0)])
+        return 1
+    built = time.time()
+    xml = os.path.join(args.build_dir, "sanitized_tests.xml")
+    proc = run([os.path.join(args.build_dir, "sf_estimation_tests"), "--gtest_output=xml:" + xml],
+               cwd=os.path.join(SOURCE, "test"), env=env, stdout=subprocess.PIPE,
+               stderr=subprocess.STDOUT, universal_newlines=True)
+    print(proc.stdout[-20000:])
+    elapsed = time.time() - built
+    summary = "build %.0f s, tests %.0f s, exit %d" % (built - start, elapsed, proc.returncode)
+    print(summary)
+    if args.junit:
+        if proc.returncode == 0 and os.path.exists(xml):
+            # gtest's own file, one testcase per test, renamed for the suite.
+            tree = ET.parse(xml)
+            tree.getroot().set("name", "estimation_sanitized_tests")
+            os.makedirs(os.path.dirname(os.path.abspath(args.junit)), exist_ok=True)
+            tree.write(args.junit, encoding="utf-8", xml_declaration=True)
+        else:
+            report = proc.stdout[-4000:]
+            write_junit(args.junit, "estimation_sanitized_tests",
+                        [("sf_estimation_tests", False, summary + "\n" + report, elapsed)])
+    return 0 if proc.returncode == 0 else 1
+
+
+def fuzz(args):
+    if not build(args.build_dir, "sf_estimation_fuzz", ["-DSF_ESTIMATION_FUZZ=ON",
+                                                       "-DSF_ESTIMATION_BUILD_TESTS=OFF"],
+                 args.jobs):
+        write_junit(args.junit, "estimation_fuzz",
+                    [("build", False, "build of sf_estimation_fuzz failed", 0.0)])
+        return 1
+    corpus = args.corpus or os.path.join(args.build_dir, "corpus")
+    os.makedirs(corpus, exist_ok=True)
+    env = dict(os.environ, **SANITIZER_ENV)
+    cmd = [os.path.join(args.build_dir, "sf_estimation_fuzz"), "-max_total_time=%d" % args.seconds,
+           "-timeout=10", "-rss_limit_mb=2048", "-max_len=4096", "-print_final_stats=1",
+           "-artifact_prefix=" + os.path.join(args.build_dir, ""), corpus, REGRESSIONS]
+    start = time.time()
+    proc = run(cmd, cwd=args.build_dir, env=env, stdout=subprocess.PIPE,
+               stderr=subprocess.STDOUT, universal_newlines=True)
+    elapsed = time.time() - start
+    out = proc.stdout
+    execs = re.findall(r"stat::number_of_executed_units:\s*(\d+)", out)
+    cov = re.findall(r"cov: (\d+) ft: (\d+) corp: (\d+)/(\S+)", out)
+    files = len(os.listdir(corpus))
+    summary = "%.0f s, %s executions, corpus %d inputs%s, exit %d" % (
+        elapsed, execs[-1] if execs else "?", files,
+        " (cov %s, ft %s, %s/%s in the last report)" % cov[-1] if cov else "", proc.returncode)
+    # The start of a crash report says what failed, the end what was running.
+    print(out if len(out) < 12000 else out[:6000] + "\n[...]\n" + out[-6000:])
+    print("fuzzing: " + summary)
+    ok = proc.returncode == 0
+    write_junit(args.junit, "estimation_fuzz",
+                [("sf_estimation_fuzz", ok, "fuzzing: " + summary + ("" if ok else "\n" + out[:8000]),
+                  elapsed)])
+    return 0 if ok else 1
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    for name in ("unit-tests", "fuzz"):
+        p = sub.add_parser(name)
+        p.add_argument("--build-dir", required=True)
+        p.add_argument("--junit")
+        p.add_argument("-j", "--jobs", type=int, default=2)
+        if name == "fuzz":
+            p.add_argument("--seconds", type=int, default=60)
+            p.add_argument("--corpus")
+    args = parser.parse_args()
+    args.build_dir = os.path.abspath(args.build_dir)
+    return unit_tests(args) if args.command == "unit-tests" else fuzz(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
