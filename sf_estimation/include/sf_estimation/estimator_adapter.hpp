@@ -23,16 +23,9 @@
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/estimator.hpp"
 #include "sf_estimation/measurement.hpp"
+#include "sf_estimation/numerical_repairs.hpp"
 
 namespace estimation {
-
-/// True if Filter counts its repairs (Kalman filters, particle filter).
-template <class Filter, class = void>
-struct HasNumericalRepairs : std::false_type {};
-template <class Filter>
-struct HasNumericalRepairs<Filter,
-                           std::void_t<decltype(std::declval<const Filter&>().numericalRepairs())>>
-    : std::true_type {};
 
 template <class Filter>
 class EstimatorAdapter : public IEstimator {

@@ -17,11 +17,14 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include "sf_estimation/parameter_checks.hpp"
+#include "sf_estimation/probability/gaussian.hpp"
 #include "sf_estimation/types.hpp"
 
 namespace estimation {
@@ -33,7 +36,22 @@ struct NumericalRepairs {
   std::uint64_t sigmaSpread = 0;  ///< UKF steps that widened alpha to resolve a badly scaled state
 
   std::uint64_t total() const { return covariance + weights + sigmaSpread; }
+
+  NumericalRepairs& operator+=(const NumericalRepairs& other) {
+    covariance += other.covariance;
+    weights += other.weights;
+    sigmaSpread += other.sigmaSpread;
+    return *this;
+  }
 };
+
+/// True if Filter counts its repairs (Kalman filters, particle filter).
+template <class Filter, class = void>
+struct HasNumericalRepairs : std::false_type {};
+template <class Filter>
+struct HasNumericalRepairs<Filter,
+                           std::void_t<decltype(std::declval<const Filter&>().numericalRepairs())>>
+    : std::true_type {};
 
 /// Relative tolerance on negative LDLT pivots: rounding in a covariance update stays far
 /// below it, a genuinely indefinite matrix (a negative variance) far above. The same value
@@ -41,11 +59,16 @@ struct NumericalRepairs {
 constexpr double kCovarianceTolerance = 1e-9;
 
 /// Makes a finite symmetric P positive semi-definite if it is not (see the rules above).
-/// Returns true if P was changed. Costs one LDLT when P is fine.
+/// Returns true if P was changed. Costs one Cholesky factorisation when P is positive
+/// definite (the usual case), one LDLT more when it is only semi-definite.
 template <int N>
 bool repairCovariance(Matrix<N, N>& P) {
   const Index n = P.rows();
   if (n == 0) return false;
+  // A Cholesky factor exists only for a positive definite matrix; it is much cheaper than the
+  // pivoted LDLT, which is needed only to judge a singular P.
+  Matrix<N, N> factor = P;
+  if (probability::choleskyInPlace(factor)) return false;
   const double scale = P.diagonal().cwiseAbs().maxCoeff();
   const Eigen::LDLT<Matrix<N, N>> ldlt(P);
   if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -kCovarianceTolerance * scale) {

@@ -44,7 +44,8 @@ class UnscentedKalmanFilter
     Vector<N> x(n);
     Matrix<N, N> P(n, n);
     bool widened = false;
-    const bool repairedPrediction = predict(x, P, widened);
+    predict(x, P, widened);
+    bool repairedPrediction = false;
 
     if (z.anyAvailable()) {
       const Index m = this->measurementSize();
@@ -53,9 +54,9 @@ class UnscentedKalmanFilter
       Vector<M> zMean(m);
       Matrix<M, M> Pzz(m, m);
       std::optional<UnscentedTransform<N>> wide;
-      const UnscentedTransform<N>& transform = transformFor(x, P, wide);
+      const UnscentedTransform<N>& transform =
+          predictMeasurementPoints(x, P, wide, repairedPrediction, points, expected, zMean, Pzz);
       widened = widened || wide.has_value();
-      predictMeasurementPoints(transform, x, P, points, expected, zMean, Pzz);
       Matrix<N, M> Pxz(n, m);
       // The state deviations of fresh sigma points are the columns of the root, exactly: not
       // wrapped, even when an angle's spread exceeds pi.
@@ -93,13 +94,12 @@ class UnscentedKalmanFilter
     const Index count = transform_.pointCount();
     Vector<N> x(n);
     Matrix<N, N> P(n, n);
-    bool widened = false;
+    bool widened = false, repaired = false;
     predict(x, P, widened);
     Matrix<N, S> points(n, count);
     Matrix<M, S> expected(m, count);
     std::optional<UnscentedTransform<N>> wide;
-    predictMeasurementPoints(transformFor(x, P, wide), x, P, points, expected, out.mean,
-                             out.covariance);
+    predictMeasurementPoints(x, P, wide, repaired, points, expected, out.mean, out.covariance);
     out.noise = this->R_;
     out.angular = this->angleMeasurements_.mask();
   }
@@ -110,11 +110,11 @@ class UnscentedKalmanFilter
 
  private:
   /// Time update: sigma points of the current belief propagated through f; P includes Q.
-  /// Returns true if P had lost positive semi-definiteness and was repaired (a negative
-  /// central covariance weight, beta < 0 or a small alpha with a strongly nonlinear f, can
-  /// make the unscented covariance indefinite); the correction needs its square root.
+  /// P may have lost positive semi-definiteness (a negative central covariance weight, beta
+  /// < 0 or a small alpha with a strongly nonlinear f, can make the unscented covariance
+  /// indefinite): the correction (predictMeasurementPoints) or commit() repairs it.
   /// `widened` is set when the sigma points needed a larger alpha (transformFor).
-  bool predict(Vector<N>& x, Matrix<N, N>& P, bool& widened) const {
+  void predict(Vector<N>& x, Matrix<N, N>& P, bool& widened) const {
     const Index n = this->stateSize();
     const Index count = transform_.pointCount();
     Matrix<N, S> points(n, count), propagated(n, count);
@@ -136,26 +136,39 @@ class UnscentedKalmanFilter
     if (!x.allFinite() || !P.allFinite()) {
       throw NumericalError(this->method_ + ": the time update became non-finite; step rejected");
     }
-    return repairCovariance(P);
   }
 
   /// Fresh sigma points of the predicted belief (x, P), their images under h, and the
-  /// images' mean and covariance (without R).
-  void predictMeasurementPoints(const UnscentedTransform<N>& transform, const Vector<N>& x,
-                                const Matrix<N, N>& P, Matrix<N, S>& points, Matrix<M, S>& expected,
-                                Vector<M>& zMean, Matrix<M, M>& Pzz) const {
+  /// images' mean and covariance (without R); returns the transform used (the configured
+  /// one or, widened for a badly scaled state, `wide`). A P that has no Cholesky factor
+  /// and lost positive semi-definiteness is repaired first (`repaired` set); the factor
+  /// that makes the points is the check, so a healthy P costs no extra factorisation.
+  const UnscentedTransform<N>& predictMeasurementPoints(const Vector<N>& x, Matrix<N, N>& P,
+                                                        std::optional<UnscentedTransform<N>>& wide,
+                                                        bool& repaired, Matrix<N, S>& points,
+                                                        Matrix<M, S>& expected, Vector<M>& zMean,
+                                                        Matrix<M, M>& Pzz) const {
     const Index n = this->stateSize(), m = this->measurementSize();
-    transform.sigmaPoints(x, P, points);
+    const UnscentedTransform<N>* transform = &transformFor(x, P, wide);
+    if (!transform->choleskySigmaPoints(x, P, points)) {
+      repaired = repairCovariance(P);
+      if (repaired) {
+        wide.reset();
+        transform = &transformFor(x, P, wide);  // the spread depends on the variances
+      }
+      transform->sigmaPoints(x, P, points);
+    }
     Vector<N> in(n);
     Vector<M> zi(m);
-    for (Index i = 0; i < transform.pointCount(); ++i) {
+    for (Index i = 0; i < transform->pointCount(); ++i) {
       in = points.col(i);
       model_.observation(in, zi);
       expected.col(i) = zi;
     }
-    transform.mean(expected, zMean, this->angleMeasurements_);
-    transform.crossCovariance(expected, zMean, expected, zMean, Pzz, this->angleMeasurements_,
-                              this->angleMeasurements_);
+    transform->mean(expected, zMean, this->angleMeasurements_);
+    transform->crossCovariance(expected, zMean, expected, zMean, Pzz, this->angleMeasurements_,
+                               this->angleMeasurements_);
+    return *transform;
   }
 
   /// The configured transform, or, when its sigma points of (x, P) would be too close to x to

@@ -64,8 +64,11 @@ class UnscentedTransform {
     double alpha = params_.alpha;
     for (Index i = 0; i < n_; ++i) {
       if (!(P(i, i) > 0.0)) continue;
-      const double needed = kResolution * std::numeric_limits<double>::epsilon() *
-                            std::abs(mean(i)) / std::sqrt(nk * P(i, i));
+      const double offset =
+          kResolution * std::numeric_limits<double>::epsilon() * std::abs(mean(i));
+      // needed <= alpha, decided without a square root and a division (the usual case).
+      if (nk > 0.0 && offset * offset <= alpha * alpha * nk * P(i, i)) continue;
+      const double needed = offset / std::sqrt(nk * P(i, i));
       alpha = std::max(alpha, std::min(1.0, needed));
     }
     return alpha;
@@ -76,22 +79,24 @@ class UnscentedTransform {
 
   /// Columns: mean, mean + i-th column of sqrt((n+lambda) P), mean - that column.
   void sigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P, Points<N>& points) const {
+    if (choleskySigmaPoints(mean, P, points)) return;
+    // Singular but valid covariances (a state known exactly) have no Cholesky factor; the
+    // LDLT-based root handles them and throws NumericalError for indefinite ones.
     const Matrix<N, N> scaled = (static_cast<double>(n_) + lambda_) * P;
-    Matrix<N, N> root = scaled;
-    if (probability::choleskyInPlace(root)) {
-      for (Index col = 1; col < n_; ++col) root.col(col).head(col).setZero();
-    } else {
-      // Singular but valid covariances (a state known exactly) have no Cholesky factor; the
-      // LDLT-based root handles them and throws NumericalError for indefinite ones.
-      probability::CovarianceSquareRoot<N> semiDefiniteRoot(n_);
-      semiDefiniteRoot.compute(scaled);
-      root = semiDefiniteRoot.matrix();
-    }
-    points.resize(n_, 2 * n_ + 1);
-    points.col(0) = mean;
-    // Fixed-size column blocks when N is known: a run-time-sized block is several times slower.
-    points.template middleCols<N>(1, n_) = root.colwise() + mean;
-    points.template middleCols<N>(1 + n_, n_) = (-root).colwise() + mean;
+    probability::CovarianceSquareRoot<N> semiDefiniteRoot(n_);
+    semiDefiniteRoot.compute(scaled);
+    fillPoints(mean, semiDefiniteRoot.matrix(), points);
+  }
+
+  /// The sigma points from the Cholesky factor of (n+lambda) P; false (points unset) when
+  /// P is not positive definite. That factor also proves P needs no repair
+  /// (numerical_repairs.hpp), so a filter that tries this first pays for one factorisation.
+  bool choleskySigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P, Points<N>& points) const {
+    Matrix<N, N> root = (static_cast<double>(n_) + lambda_) * P;
+    if (!probability::choleskyInPlace(root)) return false;
+    for (Index col = 1; col < n_; ++col) root.col(col).head(col).setZero();
+    fillPoints(mean, root, points);
+    return true;
   }
 
   /// Weighted mean of the points, taken as the central point (column 0) plus the weighted
@@ -148,6 +153,14 @@ class UnscentedTransform {
   }
 
  private:
+  void fillPoints(const Vector<N>& mean, const Matrix<N, N>& root, Points<N>& points) const {
+    points.resize(n_, 2 * n_ + 1);
+    points.col(0) = mean;
+    // Fixed-size column blocks when N is known: a run-time-sized block is several times slower.
+    points.template middleCols<N>(1, n_) = root.colwise() + mean;
+    points.template middleCols<N>(1 + n_, n_) = (-root).colwise() + mean;
+  }
+
   Index n_;
   UnscentedParameters params_;
   double lambda_ = 0.0;
