@@ -51,23 +51,6 @@ TEST(CovarianceRepair, NearestPositiveSemiDefiniteByHand) {
       1e-15);
 }
 
-/// x' = x^2, z = x.
-struct SquareTransition {
-  static constexpr int StateSize = 1, MeasurementSize = 1, ControlSize = 0;
-  Index stateSize() const { return 1; }
-  Index measurementSize() const { return 1; }
-  Index controlSize() const { return 0; }
-  template <class S>
-  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
-                  Eigen::Matrix<S, 1, 1>& next) const {
-    next(0) = x(0) * x(0);
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
-    z = x;
-  }
-};
-
 TEST(CovarianceRepair, IndefiniteUnscentedPredictionIsProjected) {
   // x ~ N(0, 1), alpha = 1, kappa = 0 (lambda = 0), beta = -10: sigma points 0, +1, -1 with
   // Wm = (0, 1/2, 1/2), Wc0 = 0 + 1 - 1 - 10 = -10. Their squares 0, 1, 1 have mean 1 and
@@ -77,8 +60,8 @@ TEST(CovarianceRepair, IndefiniteUnscentedPredictionIsProjected) {
   params.alpha = 1.0;
   params.beta = -10.0;
   params.kappa = 0.0;
-  estimation::UnscentedKalmanFilter<SquareTransition> ukf(
-      SquareTransition{}, Matrix<1, 1>::Constant(0.01), Matrix<1, 1>::Constant(0.1),
+  estimation::UnscentedKalmanFilter<sftest::SquareTransition> ukf(
+      sftest::SquareTransition{}, Matrix<1, 1>::Constant(0.01), Matrix<1, 1>::Constant(0.1),
       Vector<1>::Zero(), Matrix<1, 1>::Identity(), params);
   ukf.estimate(Measurement<1>::missing());
   EXPECT_NEAR(ukf.state()(0), 1.0, 1e-15);

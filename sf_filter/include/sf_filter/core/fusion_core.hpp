@@ -40,6 +40,7 @@
 #include <sf_estimation/errors.hpp>
 #include <sf_estimation/measurement.hpp>
 #include <sf_estimation/measurement_prediction.hpp>
+#include <sf_estimation/numerical_repairs.hpp>
 
 #include "sf_filter/core/alignment/input_aligner.hpp"
 #include "sf_filter/core/alignment/input_period.hpp"
@@ -222,7 +223,7 @@ class FusionCore {
   /// Back to the initial belief; pending values, the alignment histories and the control
   /// are discarded.
   void reset() {
-    filter_ = initial_;
+    restartFilter();
     for (OpenPeriod& slot : open_) slot.clear();
     for (auto& aligner : aligners_) aligner.reset();
     for (auto& c : counters_) {
@@ -268,6 +269,15 @@ class FusionCore {
   std::uint64_t estimationFailures() const { return estimationFailures_; }
   const std::string& lastFailure() const { return lastFailure_; }
   std::uint64_t controlNonFinite() const { return controlNonFinite_; }
+  /// What the filter repaired instead of failing (numerical_repairs.hpp), since the core was
+  /// made: kept across filter restarts. All zero for methods that repair nothing.
+  estimation::NumericalRepairs numericalRepairs() const {
+    estimation::NumericalRepairs total = repairsBeforeRestart_;
+    if constexpr (estimation::HasNumericalRepairs<Filter>::value) {
+      total += filter_.numericalRepairs();
+    }
+    return total;
+  }
   double period() const { return options_.period; }
   /// Periods a forward clock jump may span and still have each of them estimated.
   std::uint64_t maxCatchUpPeriods() const { return options_.maxCatchUpPeriods; }
@@ -328,6 +338,12 @@ class FusionCore {
       }
     }
     return o;
+  }
+
+  /// Back to the initial belief, keeping the count of the repairs made so far.
+  void restartFilter() {
+    repairsBeforeRestart_ = numericalRepairs();
+    filter_ = initial_;
   }
 
   void restartSchedule(double now) {
@@ -449,7 +465,7 @@ class FusionCore {
       // recoverable by waiting, so the filter restarts from its initial belief.
       ++estimationFailures_;
       lastFailure_ = e.what();
-      filter_ = initial_;
+      restartFilter();
     }
     slot.clear();
     slot.index = k + open_.size();
@@ -499,6 +515,7 @@ class FusionCore {
   std::uint64_t clockResets_ = 0;
   std::uint64_t estimationFailures_ = 0;
   std::uint64_t controlNonFinite_ = 0;
+  estimation::NumericalRepairs repairsBeforeRestart_;  ///< of the filters before restarts
   std::string lastFailure_;
 };
 

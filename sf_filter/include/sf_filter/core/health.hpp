@@ -10,7 +10,9 @@
 //   OK     otherwise
 // Estimation:
 //   ERROR  an estimation step failed (the filter was reset), or the covariance is not finite
-//   WARN   the clock jumped backwards (filter reset); the NIS window is full and its mean
+//   WARN   the clock jumped backwards (filter reset); the filter repaired its numbers
+//          (covariance made positive semi-definite, particle weights all vanished, UKF
+//          sigma spread widened: numerical_repairs.hpp); the NIS window is full and its mean
 //          lies outside the chi-square bounds (filter inconsistent: Q or R mistuned); the mean
 //          estimation step took longer than the period; ROS time did not advance since the
 //          previous report (a paused bag or simulation: no estimates)
@@ -23,6 +25,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <sf_estimation/numerical_repairs.hpp>
 
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
@@ -123,6 +127,7 @@ struct EstimationTotals {
   std::uint64_t clockResets = 0;
   std::uint64_t nisFailures = 0;
   std::uint64_t controlDropped = 0;
+  estimation::NumericalRepairs repairs;  ///< by the filter, across its restarts
   double estimatorSeconds = 0.0;
 };
 
@@ -149,6 +154,11 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
   if (!std::isfinite(e.covarianceTrace)) s.raise(HealthLevel::Error, "covariance not finite");
   if (c.clockResets > b.clockResets) {
     s.raise(HealthLevel::Warn, "clock jumped backwards: filter reset");
+  }
+  if (c.repairs.total() > b.repairs.total()) {
+    s.raise(HealthLevel::Warn,
+            std::to_string(c.repairs.total() - b.repairs.total()) +
+                " numerical repairs by the filter (covariance, particle weights or sigma spread)");
   }
   if (nis.inconsistent()) {
     const NisBounds bounds = nis.bounds();
@@ -187,6 +197,10 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
   s.add("estimation failures", c.failures);
   s.add("last failure", e.lastFailure.empty() ? std::string("none") : e.lastFailure);
   s.add("control values dropped", c.controlDropped);
+  s.add("numerical repairs", c.repairs.total());
+  s.add("repairs: covariance", c.repairs.covariance);
+  s.add("repairs: particle weights", c.repairs.weights);
+  s.add("repairs: sigma spread", c.repairs.sigmaSpread);
   return s;
 }
 

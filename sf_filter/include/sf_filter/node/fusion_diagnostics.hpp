@@ -86,6 +86,7 @@ class FusionDiagnostics {
     t.clockResets = core_.clockResets();
     t.nisFailures = core_.nisFailures();
     t.controlDropped = core_.controlNonFinite();
+    t.repairs = core_.numericalRepairs();
     t.estimatorSeconds = core_.estimatorSeconds();
     return t;
   }

@@ -131,6 +131,18 @@ class FusionNode {
                         static_cast<unsigned long long>(gated));
       gatedReported_ = gated;
     }
+    const estimation::NumericalRepairs repairs = core_.numericalRepairs();
+    if (repairs.total() != repairsReported_) {
+      ROS_WARN_THROTTLE(10.0,
+                        "the filter repaired its numbers %llu times so far (covariance made "
+                        "positive semi-definite %llu, all particle weights vanished %llu, "
+                        "sigma spread widened %llu); the estimate goes on",
+                        static_cast<unsigned long long>(repairs.total()),
+                        static_cast<unsigned long long>(repairs.covariance),
+                        static_cast<unsigned long long>(repairs.weights),
+                        static_cast<unsigned long long>(repairs.sigmaSpread));
+      repairsReported_ = repairs.total();
+    }
   }
 
   /// Logs an input's timing out and its return once each.
@@ -233,6 +245,7 @@ class FusionNode {
   bool publishTf_ = true;
   int queueSize_ = 1000;  ///< ~queue_size: of every subscription and publication
   std::uint64_t gatedReported_ = 0;
+  std::uint64_t repairsReported_ = 0;
   std::vector<bool> timedOut_;  ///< per input: its timeout was logged
 };
 

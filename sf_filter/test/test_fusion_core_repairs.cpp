@@ -1,0 +1,115 @@
+// The fusion core reports what its filter repaired (sf_estimation/numerical_repairs.hpp) and
+// keeps the count across filter restarts, and the diagnostic rules turn a repair into a
+// WARN. The fault: a UKF of x' = x^2 with alpha = 1, kappa = 0, beta = -10, whose predicted
+// covariance from x ~ N(0, 1) is -10 + Q in closed form (sigma points 0, +1, -1, weights of
+// the covariance -10, 1/2, 1/2; their squares 0, 1, 1 have mean 1): repaired to 0.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <sf_estimation/unscented_kalman_filter.hpp>
+
+#include "scalar_models.hpp"
+#include "sf_filter/core/fusion_core.hpp"
+#include "sf_filter/core/health.hpp"
+#include "train_core.hpp"
+
+namespace {
+
+using estimation::Matrix;
+using estimation::Vector;
+using Ukf = estimation::UnscentedKalmanFilter<sftest::SquareTransition>;
+using UkfCore = sf_filter::FusionCore<Ukf>;
+
+constexpr double kT = 0.1;
+
+UkfCore makeRepairingCore() {
+  estimation::UnscentedParameters params;
+  params.alpha = 1.0;
+  params.beta = -10.0;
+  params.kappa = 0.0;
+  Ukf ukf(sftest::SquareTransition{}, Matrix<1, 1>::Constant(0.01), Matrix<1, 1>::Constant(0.1),
+          Vector<1>::Zero(), Matrix<1, 1>::Identity(), params);
+  UkfCore::Options options;
+  options.period = kT;
+  return UkfCore(std::move(ukf), options);
+}
+
+struct Ignore {
+  template <class E>
+  void operator()(const E&) const {}
+};
+
+TEST(FusionCoreRepairs, APeriodThatNeedsARepairIsEstimatedAndCounted) {
+  UkfCore core = makeRepairingCore();
+  EXPECT_EQ(core.numericalRepairs().total(), 0u);
+  core.advanceTo(0.0, Ignore{});
+  core.advanceTo(kT, Ignore{});  // one period, no measurement: the prediction alone
+  EXPECT_EQ(core.estimateCount(), 1u);
+  EXPECT_EQ(core.estimationFailures(), 0u);
+  EXPECT_NEAR(core.lastEstimate().state(0), 1.0, 1e-15);
+  EXPECT_EQ(core.lastEstimate().covariance(0, 0), 0.0);  // -9.99 floored to 0
+  EXPECT_EQ(core.numericalRepairs().covariance, 1u);
+  EXPECT_EQ(core.numericalRepairs().weights, 0u);
+  EXPECT_EQ(core.numericalRepairs().sigmaSpread, 0u);
+  // The repaired filter keeps estimating: from (1, 0) every sigma point is 1, so the
+  // prediction is (1, Q) and z = 1.2 with R = 0.1 corrects it to 1 + 0.01 / 0.11 * 0.2.
+  EXPECT_EQ(core.addMeasurement(0, 1.5 * kT, 1.2), sf_filter::Rejection::None);
+  core.advanceTo(2 * kT, Ignore{});
+  EXPECT_NEAR(core.lastEstimate().state(0), 1.0 + 0.01 / 0.11 * 0.2, 1e-12);
+  EXPECT_EQ(core.numericalRepairs().covariance, 1u);
+}
+
+TEST(FusionCoreRepairs, TheCountSurvivesARestartOfTheFilter) {
+  UkfCore core = makeRepairingCore();
+  core.advanceTo(0.0, Ignore{});
+  core.advanceTo(kT, Ignore{});
+  ASSERT_EQ(core.numericalRepairs().covariance, 1u);
+  core.reset();  // back to x ~ N(0, 1): the restarted filter counts from zero itself
+  EXPECT_EQ(core.filter().numericalRepairs().covariance, 0u);
+  EXPECT_EQ(core.numericalRepairs().covariance, 1u);
+  core.advanceTo(2 * kT, Ignore{});  // the same fault again
+  EXPECT_EQ(core.lastEstimate().covariance(0, 0), 0.0);
+  EXPECT_EQ(core.numericalRepairs().covariance, 2u);
+  // A clock jump backwards restarts the filter as well.
+  core.advanceTo(0.5 * kT, Ignore{});
+  EXPECT_EQ(core.clockResets(), 1u);
+  EXPECT_EQ(core.numericalRepairs().covariance, 2u);
+}
+
+TEST(FusionCoreRepairs, AHealthyFilterReportsNone) {
+  train_core::Core core = train_core::makeCore();
+  core.advanceTo(0.0, Ignore{});
+  for (int k = 1; k <= 50; ++k) {
+    core.addMeasurement(0, (k - 0.5) * kT, 1.0);
+    core.advanceTo(k * kT, Ignore{});
+  }
+  EXPECT_EQ(core.estimateCount(), 50u);
+  EXPECT_EQ(core.numericalRepairs().total(), 0u);
+}
+
+TEST(FusionCoreRepairs, ARepairInTheIntervalWarnsAndNamesTheCount) {
+  UkfCore core = makeRepairingCore();
+  core.advanceTo(0.0, Ignore{});
+  core.advanceTo(kT, Ignore{});
+  sf_filter::EstimationInterval e;
+  e.now.estimates = core.estimateCount();
+  e.now.repairs = core.numericalRepairs();
+  e.period = kT;
+  e.covarianceTrace = core.lastEstimate().covariance.trace();
+  auto h = sf_filter::estimationHealth(e, core.nis());
+  EXPECT_EQ(h.level, sf_filter::HealthLevel::Warn);
+  EXPECT_EQ(h.message,
+            "1 numerical repairs by the filter (covariance, particle weights or "
+            "sigma spread)");
+  EXPECT_EQ(h.value("numerical repairs"), "1");
+  EXPECT_EQ(h.value("repairs: covariance"), "1");
+  EXPECT_EQ(h.value("repairs: particle weights"), "0");
+  // The next interval without a repair is OK again; the total stays in the key values.
+  e.before = e.now;
+  h = sf_filter::estimationHealth(e, core.nis());
+  EXPECT_EQ(h.level, sf_filter::HealthLevel::Ok) << h.message;
+  EXPECT_EQ(h.value("numerical repairs"), "1");
+}
+
+}  // namespace
