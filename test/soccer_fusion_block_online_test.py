@@ -15,11 +15,9 @@ RMSE 0.078 m in a run with a reset, against vision frames of about 0.016 m).
 import math
 import os
 import sys
-import threading
 import time
 import unittest
 
-import genpy.dynamic
 import rospy
 import rostest
 from rosgraph_msgs.msg import Clock
@@ -29,28 +27,12 @@ sys.path.insert(0, os.path.join(PKG_DIR, "tools", "eval"))
 sys.dont_write_bytecode = True
 import evaluate  # noqa: E402
 import fusion_block  # noqa: E402  (sf_pkg/OutputEntityStamped without generated Python)
+from any_message import AnyMessageDecoder  # noqa: E402
 
 NODES = ["vision_kf", "encoder_kf", "cwa_x", "cwa_y"]
 NAMESPACE = "fusion_block"
 STARTUP = 0.1  # s of bag time
 WALL_TIMEOUT = 45.0  # s for the bag to play (2 s delay + 10 s) and the last reports
-
-
-class AnyMessageDecoder:
-    """Decodes rospy.AnyMsg by the definition its publisher sent (python3-diagnostic-msgs,
-    the Python module of /diagnostics' type, is not among the packages the build installs)."""
-
-    def __init__(self):
-        self.cls = None
-        self.lock = threading.Lock()  # rospy calls back from one thread per publisher
-
-    def __call__(self, raw):
-        with self.lock:
-            if self.cls is None:
-                name = raw._connection_header["type"]
-                definition = raw._connection_header["message_definition"]
-                self.cls = genpy.dynamic.generate_dynamic(name, definition)[name]
-        return self.cls().deserialize(raw._buff)
 
 
 class SoccerFusionBlockOnlineTest(unittest.TestCase):
