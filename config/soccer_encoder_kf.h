@@ -2,7 +2,7 @@
 // decentralised filters): the per-sensor filter of the 1 kHz encoder position v alone.
 // config/soccer_fusion_cwa.h fuses its output with config/soccer_vision_kf.h's.
 //
-// The encoder's error model is config/soccer_kf.h's (Wang et al. eqs. 1, 3, 4): per axis
+// The encoder's error model is config/soccer_kf.h's (config/soccer/encoder_error.h): per axis
 // the position p, the encoder's position error e = v - p and its rate bias b,
 // x = (p_x, p_y, e_x, e_y, b_x, b_y), e' = e + b T + w_e, b' = a b + w_b, a = exp(-T/100 s).
 // Without vision, e and b are not observable: the filter's position is the encoder's, and
@@ -23,24 +23,16 @@
 //   0.28 m against the raw encoder's 0.076 m). With Q_p = 1 m^2 the motion model of
 //   p says nothing, each sample fixes p + e alone, e and b keep their prior means (0) and
 //   only their variances grow, as they should without vision.
-#include <geometry_msgs/PointStamped.h>
-#include <sf_filter/config/diagonal.hpp>
+#include "soccer/encoder_error.h"
 
 #define METHOD KALMAN_FILTER
 #define ESTIMATION_PERIOD 1
-#define STATE_TRANSITION_MATRIX \
-  ((1)(0)(0)(0)(0)(0)) \
-  ((0)(1)(0)(0)(0)(0)) \
-  ((0)(0)(1)(0)(T)(0)) \
-  ((0)(0)(0)(1)(0)(T)) \
-  ((0)(0)(0)(0)(exp(-T / 100.0))(0)) \
-  ((0)(0)(0)(0)(0)(exp(-T / 100.0)))
+#define STATE_TRANSITION_MATRIX SOCCER_TRANSITION_MATRIX
 #define OBSERVATION_MATRIX ((1)(0)(1)(0)(0)(0))((0)(1)(0)(1)(0)(0))
-#define PROCESS_NOISE_COVARIANCE \
-  SF_DIAGONAL((1)(1)(1.6e-6 * T)(1.6e-6 * T) \
-              (3.6e-5 * (1.0 - exp(-2.0 * T / 100.0)))(3.6e-5 * (1.0 - exp(-2.0 * T / 100.0))))
-#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((1e-9)(1e-9))
-#define INITIAL_ERROR_COVARIANCE SF_DIAGONAL((100)(100)(1e-6)(1e-6)(3.6e-5)(3.6e-5))
+#define PROCESS_NOISE_COVARIANCE SOCCER_PROCESS_NOISE(1)
+#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((SOCCER_R_ENCODER)(SOCCER_R_ENCODER))
+#define INITIAL_ERROR_COVARIANCE \
+  SF_DIAGONAL((100)(100)(1e-6)(1e-6)(SOCCER_VAR_RATE_BIAS)(SOCCER_VAR_RATE_BIAS))
 #define TOPICS_IN \
   ((encoder/pose)(geometry_msgs::PointStamped)(point.x)) \
   ((encoder/pose)(geometry_msgs::PointStamped)(point.y))

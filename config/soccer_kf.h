@@ -38,42 +38,21 @@
 // positions lags the period's end by half a period (15 mm at 1.3 m/s for 1/32 s); one
 // period's latency remains, 1 ms, 1.3 mm at most. Each step of this 6-state KF costs a few
 // microseconds (doc/evaluation.md).
-#include <geometry_msgs/PointStamped.h>
+#include "soccer/encoder_error.h"
 
 #define METHOD KALMAN_FILTER
 #define ESTIMATION_PERIOD 1
-#define STATE_TRANSITION_MATRIX \
-  ((1)(0)(0)(0)(0)(0)) \
-  ((0)(1)(0)(0)(0)(0)) \
-  ((0)(0)(1)(0)(T)(0)) \
-  ((0)(0)(0)(1)(0)(T)) \
-  ((0)(0)(0)(0)(exp(-T / 100.0))(0)) \
-  ((0)(0)(0)(0)(0)(exp(-T / 100.0)))
+#define STATE_TRANSITION_MATRIX SOCCER_TRANSITION_MATRIX
 #define OBSERVATION_MATRIX \
   ((1)(0)(0)(0)(0)(0)) \
   ((0)(1)(0)(0)(0)(0)) \
   ((1)(0)(1)(0)(0)(0)) \
   ((0)(1)(0)(1)(0)(0))
-#define PROCESS_NOISE_COVARIANCE \
-  (((1.5 * T) * (1.5 * T))(0)(0)(0)(0)(0)) \
-  ((0)((1.5 * T) * (1.5 * T))(0)(0)(0)(0)) \
-  ((0)(0)(1.6e-6 * T)(0)(0)(0)) \
-  ((0)(0)(0)(1.6e-6 * T)(0)(0)) \
-  ((0)(0)(0)(0)(3.6e-5 * (1.0 - exp(-2.0 * T / 100.0)))(0)) \
-  ((0)(0)(0)(0)(0)(3.6e-5 * (1.0 - exp(-2.0 * T / 100.0))))
+#define PROCESS_NOISE_COVARIANCE SOCCER_PROCESS_NOISE((1.5 * T) * (1.5 * T))
 #define MEASUREMENT_NOISE_COVARIANCE \
-  ((1.2544e-4)(0)(0)(0)) \
-  ((0)(1.2544e-4)(0)(0)) \
-  ((0)(0)(1e-9)(0)) \
-  ((0)(0)(0)(1e-9))
+  SF_DIAGONAL((1.2544e-4)(1.2544e-4)(SOCCER_R_ENCODER)(SOCCER_R_ENCODER))
 #define INITIAL_STATE (0)(0)(0)(0)(0)(0)
-#define INITIAL_ERROR_COVARIANCE \
-  ((100)(0)(0)(0)(0)(0)) \
-  ((0)(100)(0)(0)(0)(0)) \
-  ((0)(0)(1)(0)(0)(0)) \
-  ((0)(0)(0)(1)(0)(0)) \
-  ((0)(0)(0)(0)(3.6e-5)(0)) \
-  ((0)(0)(0)(0)(0)(3.6e-5))
+#define INITIAL_ERROR_COVARIANCE SF_DIAGONAL((100)(100)(1)(1)(SOCCER_VAR_RATE_BIAS)(SOCCER_VAR_RATE_BIAS))
 #define TOPICS_IN \
   ((vision/pose)(geometry_msgs::PointStamped)(point.x)) \
   ((vision/pose)(geometry_msgs::PointStamped)(point.y)) \
