@@ -3,6 +3,7 @@
 `<!-- BEGIN name -->` and `<!-- END name -->` are replaced, the rest of the page is kept.
 A page without the markers gets the section appended at its end."""
 
+import argparse
 import os
 
 
@@ -34,6 +35,23 @@ def write_section(path, name, body):
     with open(path + ".partial", "w") as f:
         f.write(new)
     os.replace(path + ".partial", path)
+
+
+def command_parser(doc, default_page):
+    """The argument parser of a command that writes a section: its description and epilog
+    from the module docstring `doc` (first paragraph, the rest), and --page."""
+    parser = argparse.ArgumentParser(
+        description=doc.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog="\n\n".join(doc.split("\n\n")[1:]))
+    add_page_option(parser, default_page)
+    return parser
+
+
+def default_work_dir(name):
+    """Where a command keeps its replay outputs unless told: $SF_WS/results/<name> (the
+    current directory when SF_WS is not set)."""
+    return os.path.join(os.environ.get("SF_WS", os.getcwd()), "results", name)
 
 
 def add_page_option(parser, default):

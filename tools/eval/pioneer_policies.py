@@ -13,7 +13,6 @@ Usage: pioneer_policies.py [--bag BAG]... [--page FILE] [--work-dir DIR] [--lib-
 The devel space with sf_nav3ctrl_ukf must be sourced (or give --lib-dir).
 """
 
-import argparse
 import collections
 import concurrent.futures
 import os
@@ -203,13 +202,9 @@ def page_section(results, timings, all_variants, bags, seconds, machine, revisio
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(
-        description=__doc__.split("\n\n")[0],
-        formatter_class=argparse.RawDescriptionHelpFormatter,
-        epilog="\n\n".join(__doc__.split("\n\n")[1:]))
+    parser = doc_section.command_parser(__doc__, DEFAULT_PAGE)
     parser.add_argument("--bag", action="append", help="bag (repeatable; default: the three "
                         "pioneer_seed bags)")
-    doc_section.add_page_option(parser, DEFAULT_PAGE)
     parser.add_argument("--work-dir", help="replay CSVs (default: $SF_WS/results/pioneer_policies)")
     parser.add_argument("--lib-dir", help="where sf_nav3ctrl_ukf is (default: the devel space)")
     parser.add_argument("--jobs", type=int, default=2, help="parallel replays (default 2)")
@@ -224,8 +219,7 @@ def main(argv=None):
         print("error: %s not found: build it and source devel/setup.bash, or give --lib-dir"
               % EXE, file=sys.stderr)
         return 2
-    work_dir = args.work_dir or os.path.join(os.environ.get("SF_WS", os.getcwd()), "results",
-                                             "pioneer_policies")
+    work_dir = args.work_dir or doc_section.default_work_dir("pioneer_policies")
     os.makedirs(work_dir, exist_ok=True)
     all_variants = variants()
     evs = collections.defaultdict(list)

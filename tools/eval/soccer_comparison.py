@@ -21,7 +21,6 @@ Usage: soccer_comparison.py [--bag BAG]... [--page FILE] [--work-dir DIR] [--lib
 The devel space must be sourced (or give --lib-dir).
 """
 
-import argparse
 import collections
 import filecmp
 import os
@@ -202,13 +201,9 @@ def page_section(results, seconds, machine, revision):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(
-        description=__doc__.split("\n\n")[0],
-        formatter_class=argparse.RawDescriptionHelpFormatter,
-        epilog="\n\n".join(__doc__.split("\n\n")[1:]))
+    parser = doc_section.command_parser(__doc__, DEFAULT_PAGE)
     parser.add_argument("--bag", action="append", help="soccer bag (repeatable; default: "
                         "soccer_seed1.bag and soccer_lost_vision.bag)")
-    doc_section.add_page_option(parser, DEFAULT_PAGE)
     parser.add_argument("--work-dir",
                         help="replay outputs (default: $SF_WS/results/soccer_comparison)")
     parser.add_argument("--lib-dir",
@@ -224,8 +219,7 @@ def main(argv=None):
     except RuntimeError as exc:
         print("error: %s" % exc, file=sys.stderr)
         return 2
-    work_dir = args.work_dir or os.path.join(os.environ.get("SF_WS", os.getcwd()), "results",
-                                             "soccer_comparison")
+    work_dir = args.work_dir or doc_section.default_work_dir("soccer_comparison")
     results = []
     try:
         for bag in args.bag or DEFAULT_BAGS:
