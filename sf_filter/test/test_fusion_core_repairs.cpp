@@ -2,10 +2,12 @@
 // keeps the count across filter restarts, and the diagnostic rules turn a repair into a
 // WARN. The fault: a UKF of x' = x^2 with alpha = 1, kappa = 0, beta = -10, whose predicted
 // covariance from x ~ N(0, 1) is -10 + Q in closed form (sigma points 0, +1, -1, weights of
-// the covariance -10, 1/2, 1/2; their squares 0, 1, 1 have mean 1): repaired to 0.
+// the covariance -10, 1/2, 1/2; their squares 0, 1, 1 have mean 1): repaired to 0. And a
+// failure no repair mends (an infinite time update) restarts the filter, estimates go on.
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include <sf_estimation/unscented_kalman_filter.hpp>
 
@@ -75,6 +77,56 @@ TEST(FusionCoreRepairs, TheCountSurvivesARestartOfTheFilter) {
   core.advanceTo(0.5 * kT, Ignore{});
   EXPECT_EQ(core.clockResets(), 1u);
   EXPECT_EQ(core.numericalRepairs().covariance, 2u);
+}
+
+/// x' = x + 1 / u, z = x: a control of 0 makes the time update infinite, a failure no
+/// repair can mend (the step is rejected with NumericalError).
+struct ReciprocalControl {
+  static constexpr int StateSize = 1, MeasurementSize = 1, ControlSize = 1;
+  estimation::Index stateSize() const { return 1; }
+  estimation::Index measurementSize() const { return 1; }
+  estimation::Index controlSize() const { return 1; }
+  template <class S>
+  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<1>& u,
+                  Eigen::Matrix<S, 1, 1>& next) const {
+    next(0) = x(0) + 1.0 / u(0);
+  }
+  template <class S>
+  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
+    z = x;
+  }
+};
+
+TEST(FusionCoreRepairs, AFailedStepRestartsTheFilterAndTheEstimatesGoOn) {
+  using FailingUkf = estimation::UnscentedKalmanFilter<ReciprocalControl>;
+  sf_filter::FusionCore<FailingUkf>::Options options;
+  options.period = kT;
+  sf_filter::FusionCore<FailingUkf> core(
+      FailingUkf(ReciprocalControl{}, Matrix<1, 1>::Constant(0.01), Matrix<1, 1>::Constant(0.1),
+                 Vector<1>::Zero(), Matrix<1, 1>::Identity()),
+      options);
+  std::vector<double> states, variances;
+  const auto collect = [&](const auto& e) {
+    states.push_back(e.state(0));
+    variances.push_back(e.covariance(0, 0));
+  };
+  core.advanceTo(0.0, collect);
+  // Periods 1 and 3 with u = 1: from (0, 1) the prediction is (1, 1 + Q). Period 2 with u = 0:
+  // rejected, and the filter restarts from its initial belief (0, 1).
+  for (const double u : {1.0, 0.0, 1.0}) {
+    ASSERT_EQ(core.addControl(0, u), sf_filter::Rejection::None);
+    core.advanceTo(core.clock() + kT, collect);
+  }
+  ASSERT_EQ(states.size(), 3u);  // an estimate for every period, the failed one included
+  EXPECT_NEAR(states[0], 1.0, 1e-12);
+  EXPECT_NEAR(variances[0], 1.01, 1e-9);
+  EXPECT_EQ(states[1], 0.0);
+  EXPECT_EQ(variances[1], 1.0);
+  EXPECT_NEAR(states[2], 1.0, 1e-12);
+  EXPECT_NEAR(variances[2], 1.01, 1e-9);
+  EXPECT_EQ(core.estimationFailures(), 1u);
+  EXPECT_NE(core.lastFailure().find("non-finite"), std::string::npos) << core.lastFailure();
+  EXPECT_EQ(core.numericalRepairs().total(), 0u);
 }
 
 TEST(FusionCoreRepairs, AHealthyFilterReportsNone) {
