@@ -5,7 +5,7 @@
 #include "valid_angles.h"
 
 #include <sf_filter/config/configuration.hpp>
-#include <sf_filter/node/filter_binding.hpp>
+#include <sf_filter/config/filter_binding.hpp>
 
 #include <cmath>
 

@@ -13,4 +13,4 @@
 #define TOPICS_OUT ((heading)(0))((yaw_rate)(1))
 #define BASE_FRAME "/base_link"
 #define FRAME_ALIGNED_INPUTS ((0)(angular_velocity)(z))
-#include <sf_filter/node/frame_alignment_config.hpp>
+#include <sf_filter/config/frame_alignment.hpp>

@@ -1,5 +1,5 @@
 // EXPECT: OK
-// Spatial alignment (sf_filter/node/frame_alignment_config.hpp): a valid configuration
+// Spatial alignment (sf_filter/config/frame_alignment.hpp): a valid configuration
 #include "fake_msgs.h"
 
 #define METHOD EXTENDED_KALMAN_FILTER
@@ -13,4 +13,4 @@
 #define TOPICS_OUT ((heading)(0))((yaw_rate)(1))
 #define BASE_FRAME base_link
 #define FRAME_ALIGNED_INPUTS ((0)(angular_velocity)(z))((1)(vector)(z))
-#include <sf_filter/node/frame_alignment_config.hpp>
+#include <sf_filter/config/frame_alignment.hpp>

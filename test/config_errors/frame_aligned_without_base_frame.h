@@ -12,4 +12,4 @@
   ((gyro)(geometry_msgs::Vector3Stamped)(vector.x))
 #define TOPICS_OUT ((heading)(0))((yaw_rate)(1))
 #define FRAME_ALIGNED_INPUTS ((0)(angular_velocity)(z))
-#include <sf_filter/node/frame_alignment_config.hpp>
+#include <sf_filter/config/frame_alignment.hpp>

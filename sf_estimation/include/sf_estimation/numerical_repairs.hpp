@@ -20,8 +20,7 @@
 #include <type_traits>
 #include <utility>
 
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
+#include <Eigen/Core>
 
 #include "sf_estimation/parameter_checks.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
@@ -58,28 +57,23 @@ struct HasNumericalRepairs<Filter,
 /// as CovarianceSquareRoot's, so a covariance accepted here can be given sigma points.
 constexpr double kCovarianceTolerance = 1e-9;
 
+/// The part of repairCovariance() after a failed Cholesky factorisation: judges P by a
+/// pivoted LDLT and, if it is indefinite beyond rounding, floors its eigenvalues. Compiled
+/// once in the library (src/numerical_repairs.cpp): an eigen-solver instantiated for every
+/// state size cost most of a configuration's compile time. Allocation-free up to 16 states.
+bool repairIndefiniteCovariance(Eigen::Ref<Eigen::MatrixXd> P);
+
 /// Makes a finite symmetric P positive semi-definite if it is not (see the rules above).
 /// Returns true if P was changed. Costs one Cholesky factorisation when P is positive
 /// definite (the usual case), one LDLT more when it is only semi-definite.
 template <int N>
 bool repairCovariance(Matrix<N, N>& P) {
-  const Index n = P.rows();
-  if (n == 0) return false;
+  if (P.rows() == 0) return false;
   // A Cholesky factor exists only for a positive definite matrix; it is much cheaper than the
   // pivoted LDLT, which is needed only to judge a singular P.
   Matrix<N, N> factor = P;
   if (probability::choleskyInPlace(factor)) return false;
-  const double scale = P.diagonal().cwiseAbs().maxCoeff();
-  const Eigen::LDLT<Matrix<N, N>> ldlt(P);
-  if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -kCovarianceTolerance * scale) {
-    return false;
-  }
-  const Eigen::SelfAdjointEigenSolver<Matrix<N, N>> eigen(P);
-  if (eigen.info() != Eigen::Success) return false;  // leave it to the caller's checks
-  const Vector<N> floored = eigen.eigenvalues().cwiseMax(0.0);
-  P = eigen.eigenvectors() * floored.asDiagonal() * eigen.eigenvectors().transpose();
-  symmetrize(P);
-  return true;
+  return repairIndefiniteCovariance(P);
 }
 
 }  // namespace estimation

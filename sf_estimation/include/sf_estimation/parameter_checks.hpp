@@ -5,7 +5,6 @@
 #include <cmath>
 #include <string>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "sf_estimation/errors.hpp"
@@ -30,26 +29,10 @@ void requireSize(const std::string& method, const std::string& name,
 }
 
 /// A covariance must be symmetric and positive semi-definite (positive definite when
-/// `strict`, e.g. the measurement noise R, whose inverse the filters use).
-template <class Derived>
+/// `strict`, e.g. the measurement noise R, whose inverse the filters use). Not a template:
+/// compiled once in the library, whatever the filters' sizes (src/parameter_checks.cpp).
 void requireCovariance(const std::string& method, const std::string& name,
-                       const Eigen::MatrixBase<Derived>& value, Index size, bool strict) {
-  requireSize(method, name, value, size, size);
-  if (size == 0) return;  // maxCoeff() of an empty matrix is undefined
-  const double scale = std::max(1.0, value.cwiseAbs().maxCoeff());
-  if (!value.isApprox(value.transpose(), 1e-9) &&
-      (value - value.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) {
-    throw ParameterError(method + ": parameter '" + name + "' must be symmetric");
-  }
-  Eigen::LDLT<Eigen::MatrixXd> ldlt(value.eval());
-  const Eigen::VectorXd d = ldlt.vectorD();
-  if (ldlt.info() != Eigen::Success || d.minCoeff() < -1e-12 * scale) {
-    throw ParameterError(method + ": parameter '" + name + "' must be positive semi-definite");
-  }
-  if (strict && d.minCoeff() <= 0.0) {
-    throw ParameterError(method + ": parameter '" + name + "' must be positive definite");
-  }
-}
+                       const Eigen::Ref<const Eigen::MatrixXd>& value, Index size, bool strict);
 
 template <class Derived>
 void symmetrize(Eigen::MatrixBase<Derived>& P) {

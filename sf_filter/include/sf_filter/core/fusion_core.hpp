@@ -44,17 +44,14 @@
 
 #include "sf_filter/core/alignment/input_aligner.hpp"
 #include "sf_filter/core/alignment/input_period.hpp"
+#include "sf_filter/core/fusion_core_options.hpp"
+#include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
 #include "sf_filter/core/nis_window.hpp"
 #include "sf_filter/core/period_schedule.hpp"
 
 namespace sf_filter {
-
-using estimation::Index;
-
-/// What advanceTo() observed about the clock.
-enum class ClockEvent { Normal, Started, JumpedBackwards, SkippedGap };
 
 template <class Filter>
 class FusionCore {
@@ -73,23 +70,7 @@ class FusionCore {
     Index substitutedInputs = 0;  ///< inputs given a HOLD or FILL substitute
   };
 
-  struct Options {
-    double period = 0.1;  ///< estimation period [s]
-    /// A forward clock jump longer than this many periods is skipped (one estimate) instead
-    /// of estimating every missed period, so a stalled clock never floods the output.
-    std::uint64_t maxCatchUpPeriods = 100;
-    /// One entry per input, or none: every input AVERAGE, by arrival time, without gate.
-    std::vector<InputOptions> inputs;
-    /// How long after its end a period stays open for stamped values [s] (see above).
-    double maxMeasurementLag = 0.0;
-    /// A stamp more than this ahead of the clock reading at arrival is dropped [s] (a sensor
-    /// clock far ahead would otherwise block its input: every later stamp looks older).
-    /// Infinite: no check.
-    double maxFutureStamp = std::numeric_limits<double>::infinity();
-    /// Periods over which the NIS is averaged (nis_window.hpp); 0: not computed. Costs one
-    /// measurement prediction per period when no gate or FILL needs it anyway.
-    std::size_t nisWindow = 0;
-  };
+  using Options = FusionCoreOptions;
 
   FusionCore(Filter filter, const Options& options)
       : filter_(std::move(filter)),

@@ -18,7 +18,6 @@
 #include <cstddef>
 #include <vector>
 
-#include <boost/math/distributions/chi_squared.hpp>
 
 namespace sf_filter {
 
@@ -64,12 +63,9 @@ class NisWindow {
   double mean() const { return size_ ? sum_ / static_cast<double>(size_) : 0.0; }
 
   /// The two-sided bounds on mean() at level 1 - alpha. Requires size() > 0.
-  NisBounds bounds(double alpha = 0.05) const {
-    const boost::math::chi_squared chi2(static_cast<double>(dofSum_));
-    const double k = static_cast<double>(size_);
-    return {boost::math::quantile(chi2, alpha / 2.0) / k,
-            boost::math::quantile(chi2, 1.0 - alpha / 2.0) / k};
-  }
+  /// Compiled once in the fusion-core library (src/core/nis_window.cpp): Boost.Math's
+  /// chi-square quantiles cost a second of every configuration's compile time.
+  NisBounds bounds(double alpha = 0.05) const;
 
   /// Whether the window is full and its mean lies outside bounds(alpha).
   bool inconsistent(double alpha = 0.05) const {

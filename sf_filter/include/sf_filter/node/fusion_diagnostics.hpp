@@ -15,15 +15,15 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 
+#include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/core/health.hpp"
 
 namespace sf_filter {
 
-template <class Core>
 class FusionDiagnostics {
  public:
   /// `inputNames`: "topic field" per input; `period`: seconds between reports.
-  FusionDiagnostics(ros::NodeHandle nh, ros::NodeHandle pnh, const Core& core,
+  FusionDiagnostics(ros::NodeHandle nh, ros::NodeHandle pnh, const FusionEngine& core,
                     const std::vector<std::string>& inputNames, double period)
       : core_(core), updater_(nh, pnh), before_(inputNames.size()) {
     updater_.setHardwareID("none");  // a software component
@@ -105,7 +105,7 @@ class FusionDiagnostics {
     fill(estimationHealth(e, core_.nis()), s);
   }
 
-  const Core& core_;
+  const FusionEngine& core_;
   diagnostic_updater::Updater updater_;
   std::vector<InputCounters> before_;
   EstimationTotals beforeEstimation_;

@@ -1,10 +1,16 @@
 // The ROS side of a fusion node: a thin adapter that feeds the fusion core with the messages
 // it receives and the passing of ros::Time, and publishes each estimate. Time is ros::Time,
 // so the node behaves the same live and under `rosbag play --clock` with use_sim_time. Its
-// diagnostics (fusion_diagnostics.hpp) go to /diagnostics.
+// diagnostics (fusion_diagnostics.hpp) go to /diagnostics. Compiled once for every
+// configuration header: it sees the header's filter through FusionEngine and its topics
+// through TopicReader, subscribing to each topic as serialized messages (ShapeShifter) and
+// checking their type itself, so that a publisher of the wrong type is reported, not ignored.
 #pragma once
 
 #include <array>
+#include <functional>
+#include <map>
+#include <memory>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -16,33 +22,31 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <topic_tools/shape_shifter.h>
 
-#include "sf_filter/core/fusion_core.hpp"
+#include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
+#include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_diagnostics.hpp"
-#include "sf_filter/node/node_description.hpp"
+#include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
 
 namespace sf_filter {
 
-template <class Filter>
-class FusionNode {
-  using Core = FusionCore<Filter>;
-
+class FusionNode final : public MessageSink {
  public:
-  FusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, Filter filter, double period,
-             NodeDescription description)
-      : FusionNode(nh, pnh, std::move(filter), makeOptions(period), std::move(description)) {}
-
-  /// With the fusion core's options: period, per-input alignment, gates, measurement lag,
-  /// timeouts, ranges, NIS window; a diagnostic report every `diagnosticPeriod` seconds.
-  FusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, Filter filter,
-             const typename Core::Options& options, NodeDescription description,
-             double diagnosticPeriod = 1.0)
+  /// `engine`: the header's filter in its fusion core (period, per-input alignment, gates,
+  /// measurement lag, timeouts, ranges, NIS window); `aligner`: the spatial alignment of
+  /// FRAME_ALIGNED_INPUTS (nullptr without); a diagnostic report every `diagnosticPeriod` s.
+  FusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, std::unique_ptr<FusionEngine> engine,
+             NodeDescription description, FrameAligner* aligner, double diagnosticPeriod = 1.0)
       : nh_(nh),
         pnh_(pnh),
         description_(std::move(description)),
-        core_(std::move(filter), options),
+        engine_(std::move(engine)),
+        core_(*engine_),
+        aligner_(aligner),
         diagnostics_(nh_, pnh_, core_, description_.inputs, diagnosticPeriod) {
     pnh_.param<std::string>("frame_id", frameId_, "odom");
     pnh_.param<std::string>("child_frame_id", childFrameId_, "base_link");
@@ -63,14 +67,23 @@ class FusionNode {
     logConfiguration();
   }
 
-  /// Subscribes `topic`; `dispatch(msg, node, now)` hands each used field to measurement().
-  template <class Message, class Dispatch>
-  void subscribe(const std::string& topic, Dispatch dispatch) {
-    subscribers_.push_back(nh_.subscribe<Message>(
-        topic, queueSize_, [this, dispatch](const typename Message::ConstPtr& msg) {
+  /// Subscribes the reader's topic as serialized messages; each message of the expected type
+  /// is handed to the reader, which gives every used field to measurement() or control().
+  void subscribe(const TopicReader& reader) {
+    subscribers_.push_back(nh_.subscribe<topic_tools::ShapeShifter>(
+        reader.topic, queueSize_, [this, reader](const topic_tools::ShapeShifter::ConstPtr& msg) {
           const double now = ros::Time::now().toSec();
           advance(now);
-          dispatch(*msg, *this, now);
+          if (!hasExpectedType(reader, *msg)) return;
+          buffer_.resize(msg->size());
+          ros::serialization::OStream stream(buffer_.data(), msg->size());
+          msg->write(stream);
+          try {
+            reader.read(buffer_.data(), msg->size(), *this, now);
+          } catch (const ros::Exception& e) {
+            ROS_ERROR_THROTTLE(5.0, "topic %s: a message could not be decoded: %s",
+                               reader.topic.c_str(), e.what());
+          }
         }));
   }
 
@@ -83,7 +96,7 @@ class FusionNode {
   }
 
   void measurement(Index input, double now, double value, std::optional<double> variance,
-                   double stamp) {
+                   double stamp) override {
     const Rejection r = core_.addMeasurement(input, now, value, variance, stamp);
     if (r != Rejection::None) {
       ROS_WARN_THROTTLE(5.0, "dropped a value of input %ld (%s): %s", static_cast<long>(input),
@@ -92,7 +105,7 @@ class FusionNode {
     }
   }
 
-  void control(Index index, double value) {
+  void control(Index index, double value) override {
     if (core_.addControl(index, value) != Rejection::None) {
       ROS_WARN_THROTTLE(5.0, "dropped a non-finite value of control %ld (%s)",
                         static_cast<long>(index),
@@ -100,19 +113,37 @@ class FusionNode {
     }
   }
 
-  const Core& core() const { return core_; }
+  std::optional<double> rotated(Index input, const std::string& frame, std::uint32_t sec,
+                                std::uint32_t nsec, const std::array<double, 3>& vector,
+                                int axis) override {
+    return aligner_->align(static_cast<std::size_t>(input), frame, ros::Time(sec, nsec), vector,
+                           axis);
+  }
+
+  const FusionEngine& core() const { return core_; }
 
  private:
-  static typename Core::Options makeOptions(double period) {
-    typename Core::Options options;
-    options.period = period;
-    return options;
+  /// Whether `msg` is of the reader's type; a message of another type is dropped, counted and
+  /// reported (a typed roscpp subscription would refuse such a publisher without a word).
+  bool hasExpectedType(const TopicReader& reader, const topic_tools::ShapeShifter& msg) {
+    if (msg.getDataType() == reader.datatype &&
+        (msg.getMD5Sum() == reader.md5sum || msg.getMD5Sum() == "*")) {
+      return true;
+    }
+    ++wrongType_[reader.topic];
+    ROS_ERROR_THROTTLE(5.0,
+                       "topic %s: received %s (md5sum %s), the configuration reads %s (md5sum "
+                       "%s): message dropped (%llu so far)",
+                       reader.topic.c_str(), msg.getDataType().c_str(), msg.getMD5Sum().c_str(),
+                       reader.datatype.c_str(), reader.md5sum.c_str(),
+                       static_cast<unsigned long long>(wrongType_[reader.topic]));
+    return false;
   }
 
   void advance(double now) {
     const std::uint64_t failures = core_.estimationFailures();
     const ClockEvent event =
-        core_.advanceTo(now, [this](const typename Core::Estimate& e) { publish(e); });
+        core_.advanceTo(now, publishEstimate_);
     if (event == ClockEvent::JumpedBackwards) {
       ROS_WARN("time jumped backwards to %.3f s (bag restarted?): filter reset", now);
     } else if (event == ClockEvent::SkippedGap) {
@@ -163,7 +194,7 @@ class FusionNode {
     }
   }
 
-  void publish(const typename Core::Estimate& e) {
+  void publish(const EstimateRef& e) {
     for (std::size_t k = 0; k < outputs_.size(); ++k) {
       outputs_[k].publish(makeOutputEntity(e, description_.outputs[k].second, frameId_));
     }
@@ -183,10 +214,9 @@ class FusionNode {
   }
 
   void logConfiguration() const {
-    const auto& f = core_.filter();
     ROS_INFO("%s: n=%ld states, m=%ld measurements, l=%ld controls, period %.1f ms",
-             f.description().c_str(), static_cast<long>(f.stateSize()),
-             static_cast<long>(f.measurementSize()), static_cast<long>(f.controlSize()),
+             core_.filterDescription().c_str(), static_cast<long>(core_.stateSize()),
+             static_cast<long>(core_.measurementSize()), static_cast<long>(core_.controlSize()),
              core_.period() * 1000.0);
     bool byStamp = false;
     for (std::size_t i = 0; i < description_.inputs.size(); ++i) {
@@ -234,8 +264,15 @@ class FusionNode {
 
   ros::NodeHandle nh_, pnh_;
   NodeDescription description_;
-  Core core_;
-  FusionDiagnostics<Core> diagnostics_;
+  std::unique_ptr<FusionEngine> engine_;
+  FusionEngine& core_;
+  FrameAligner* aligner_;
+  FusionDiagnostics diagnostics_;
+  std::function<void(const EstimateRef&)> publishEstimate_ = [this](const EstimateRef& e) {
+    publish(e);
+  };
+  std::vector<std::uint8_t> buffer_;  ///< the message being read, serialized
+  std::map<std::string, std::uint64_t> wrongType_;  ///< per topic: messages of another type
   std::vector<ros::Subscriber> subscribers_;
   std::vector<ros::Publisher> outputs_;
   ros::Publisher state_, odometry_;

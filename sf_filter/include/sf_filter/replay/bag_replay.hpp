@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -31,9 +32,10 @@
 #include <rosbag/view.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include "sf_filter/core/fusion_core.hpp"
+#include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
-#include "sf_filter/node/node_description.hpp"
+#include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/replay/atomic_output.hpp"
 
 namespace sf_filter {
@@ -57,46 +59,52 @@ struct ReplaySummary {
   double estimatorSeconds = 0.0;
 };
 
-template <class Filter>
-class BagReplay {
-  using Core = FusionCore<Filter>;
-  using Handler = std::function<void(const rosbag::MessageInstance&, double)>;
+/// Rotates the vectors of FRAME_ALIGNED_INPUTS offline (replay_frame_aligner.hpp).
+class ReplayRotation {
+ public:
+  virtual ~ReplayRotation() = default;
+  virtual std::optional<double> rotated(Index input, const std::string& frame, std::uint32_t sec,
+                                        std::uint32_t nsec, const std::array<double, 3>& vector,
+                                        int axis) = 0;
+};
 
+class BagReplay final : public MessageSink {
  public:
   /// Receives the transforms of one /tf_static (isStatic) or /tf message.
   using TransformSink = std::function<void(const tf2_msgs::TFMessage&, bool isStatic)>;
 
-  BagReplay(Filter filter, double period, NodeDescription description, ReplayOptions options)
-      : BagReplay(std::move(filter), makeOptions(period), std::move(description),
-                  std::move(options)) {}
-
-  /// With the fusion core's options (alignment policies, gates, measurement lag).
-  BagReplay(Filter filter, const typename Core::Options& coreOptions, NodeDescription description,
+  /// `engine`: the header's filter in its fusion core (alignment policies, gates, lag).
+  BagReplay(std::unique_ptr<FusionEngine> engine, NodeDescription description,
             ReplayOptions options)
-      : core_(std::move(filter), coreOptions),
+      : engine_(std::move(engine)),
+        core_(*engine_),
         description_(std::move(description)),
         options_(std::move(options)) {}
 
-  /// Registers the reader of one topic; `dispatch(msg, replay, now)` as for the online node.
-  template <class Message, class Dispatch>
-  void subscribe(const std::string& topic, Dispatch dispatch) {
-    const std::string name = absolute(topic);
-    expectedTypes_[name] = {ros::message_traits::DataType<Message>::value(),
-                            ros::message_traits::MD5Sum<Message>::value()};
-    handlers_[name] = [this, name, dispatch](const rosbag::MessageInstance& m, double now) {
-      dispatch(*instantiate<Message>(m, name), *this, now);
-    };
+  /// Registers the reader of one topic, as the online node subscribes it.
+  void subscribe(const TopicReader& reader) {
+    const std::string name = absolute(reader.topic);
+    expectedTypes_[name] = {reader.datatype, reader.md5sum};
+    readers_[name] = reader;
   }
 
   void measurement(Index input, double now, double value, std::optional<double> variance,
-                   double stamp) {
+                   double stamp) override {
     if (core_.addMeasurement(input, now, value, variance, stamp) != Rejection::None) {
       ++summary_.dropped;
     }
   }
-  void control(Index index, double value) {
+  void control(Index index, double value) override {
     if (core_.addControl(index, value) != Rejection::None) ++summary_.dropped;
   }
+  std::optional<double> rotated(Index input, const std::string& frame, std::uint32_t sec,
+                                std::uint32_t nsec, const std::array<double, 3>& vector,
+                                int axis) override {
+    if (!rotation_) return std::nullopt;
+    return rotation_->rotated(input, frame, sec, nsec, vector, axis);
+  }
+  /// The rotation of FRAME_ALIGNED_INPUTS (none without them).
+  void setRotation(ReplayRotation* rotation) { rotation_ = rotation; }
 
   /// Hands the bag's transforms to `sink`: every /tf_static message before the first message
   /// is replayed (rosbag play latches them, so a listener has them from the start), the /tf
@@ -132,7 +140,7 @@ class BagReplay {
     if (bagFile.enabled()) {
       writeOutput(bagFile, [&] { output.open(bagFile.temporary()); });
     }
-    auto write = [&](const typename Core::Estimate& e) {
+    auto write = [&](const EstimateRef& e) {
       ++summary_.estimates;
       if (csv.is_open()) {
         writeCsvRow(csv, e);
@@ -149,7 +157,7 @@ class BagReplay {
         }
         const double now = m.getTime().toSec();
         advanceClock(now, write);
-        handlers_.at(absolute(m.getTopic()))(m, now);
+        read(readers_.at(absolute(m.getTopic())), m, now);
         ++summary_.messages;
       }
     });
@@ -164,9 +172,17 @@ class BagReplay {
     return summary_;
   }
 
-  const Core& core() const { return core_; }
+  const FusionEngine& core() const { return core_; }
 
  private:
+  /// Hands the serialized message to the topic's reader.
+  void read(const TopicReader& reader, const rosbag::MessageInstance& m, double now) {
+    buffer_.resize(m.size());
+    ros::serialization::OStream stream(buffer_.data(), m.size());
+    m.write(stream);
+    reader.read(buffer_.data(), m.size(), *this, now);
+  }
+
   /// Advances the core's clock to the message time `now` as the online node's ros::Timer
   /// would: the timer estimates every period while rosbag play's clock runs through a gap
   /// between messages, so a gap longer than Options::maxCatchUpPeriods periods (which the
@@ -181,12 +197,6 @@ class BagReplay {
     }
     core_.advanceTo(now, write);
     clockStarted_ = true;
-  }
-
-  static typename Core::Options makeOptions(double period) {
-    typename Core::Options options;
-    options.period = period;
-    return options;
   }
 
   static constexpr const char* kTf = "/tf";
@@ -260,7 +270,7 @@ class BagReplay {
 
   /// Runs `read` on the input bag; its library's exceptions become a ReplayError naming it.
   template <class Read>
-  auto readInput(Read read) const {
+  auto readInput(Read read) const -> decltype(read()) {
     const std::string& path = options_.inputBag;
     try {
       return read();
@@ -339,7 +349,7 @@ class BagReplay {
   /// with allowMissingTopics a warning (an error still when none is there).
   std::vector<std::string> recordedTopics(const std::map<std::string, Recorded>& recorded) const {
     std::vector<std::string> topics, missing;
-    for (const auto& handler : handlers_) {
+    for (const auto& handler : readers_) {
       const auto it = recorded.find(handler.first);
       if (it == recorded.end()) {
         missing.push_back(handler.first);
@@ -369,7 +379,7 @@ class BagReplay {
     csv << ",present_inputs\n";
   }
 
-  void writeCsvRow(std::ofstream& csv, const typename Core::Estimate& e) const {
+  void writeCsvRow(std::ofstream& csv, const EstimateRef& e) const {
     const Index n = e.state.size();
     csv << std::setprecision(17) << e.time;
     for (Index i = 0; i < n; ++i) csv << ',' << e.state(i);
@@ -381,7 +391,7 @@ class BagReplay {
     csv << ',' << e.presentInputs << '\n';
   }
 
-  void writeBag(rosbag::Bag& bag, const typename Core::Estimate& e) const {
+  void writeBag(rosbag::Bag& bag, const EstimateRef& e) const {
     const ros::Time stamp(e.time);
     for (const auto& out : description_.outputs) {
       bag.write(absolute(out.first), stamp, makeOutputEntity(e, out.second, options_.frameId));
@@ -394,10 +404,13 @@ class BagReplay {
     }
   }
 
-  Core core_;
+  std::unique_ptr<FusionEngine> engine_;
+  FusionEngine& core_;
   NodeDescription description_;
   ReplayOptions options_;
-  std::map<std::string, Handler> handlers_;
+  std::map<std::string, TopicReader> readers_;  ///< by absolute topic name
+  ReplayRotation* rotation_ = nullptr;
+  std::vector<std::uint8_t> buffer_;  ///< the message being read, serialized
   std::map<std::string, ExpectedType> expectedTypes_;
   TransformSink transformSink_;
   ReplaySummary summary_;

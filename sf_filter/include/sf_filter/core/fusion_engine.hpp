@@ -1,0 +1,89 @@
+// The fusion core seen through sizes known only at run time: the boundary between the code a
+// configuration header generates (the filter on fixed-size types, inside FusionCore<Filter>)
+// and the code compiled once for every header (the ROS node, the bag replay, diagnostics,
+// parameters, writers). fusion_engine_of.hpp implements it for one FusionCore; the estimation
+// step itself stays on the fixed-size, allocation-free path, only its results are handed out
+// through Eigen::Map views of the core's own storage.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+#include <sf_estimation/numerical_repairs.hpp>
+
+#include "sf_filter/core/input_counters.hpp"
+#include "sf_filter/core/input_options.hpp"
+#include "sf_filter/core/nis_window.hpp"
+
+namespace sf_filter {
+
+using estimation::Index;
+
+/// What advanceTo() observed about the clock.
+enum class ClockEvent { Normal, Started, JumpedBackwards, SkippedGap };
+
+/// One period's estimate, viewed in place (valid until the core estimates again).
+struct EstimateRef {
+  double time;  ///< end of the estimated period
+  Eigen::Map<const Eigen::VectorXd> state;
+  Eigen::Map<const Eigen::MatrixXd> covariance;
+  Index presentInputs;      ///< inputs with a measured value (not gated) in the period
+  Index substitutedInputs;  ///< inputs given a HOLD or FILL substitute
+};
+
+/// A non-owning, allocation-free callback for the estimates of advanceTo().
+class EstimateCallback {
+ public:
+  template <class F>
+  EstimateCallback(F& f)  // NOLINT: implicit from any callable, like std::function_ref
+      : object_(&f), call_([](void* o, const EstimateRef& e) { (*static_cast<F*>(o))(e); }) {}
+  void operator()(const EstimateRef& e) const { call_(object_, e); }
+
+ private:
+  void* object_;
+  void (*call_)(void*, const EstimateRef&);
+};
+
+class FusionEngine {
+ public:
+  virtual ~FusionEngine() = default;
+
+  /// FusionCore::advanceTo: estimates every period that ended, handing each to `onEstimate`.
+  virtual ClockEvent advanceTo(double now, EstimateCallback onEstimate) = 0;
+  virtual Rejection addMeasurement(Index input, double now, double value,
+                                   std::optional<double> variance, double stamp) = 0;
+  virtual Rejection addControl(Index control, double value) = 0;
+  virtual void reset() = 0;
+
+  virtual EstimateRef lastEstimate() const = 0;
+  virtual const InputCounters& counters(Index input) const = 0;
+  virtual const InputOptions& inputOptions(Index input) const = 0;
+  virtual Index inputCount() const = 0;
+  virtual bool timedOut(Index input) const = 0;
+  virtual double clock() const = 0;
+  virtual double startTime() const = 0;
+  virtual const NisWindow& nis() const = 0;
+  virtual std::uint64_t nisFailures() const = 0;
+  virtual std::uint64_t clockResets() const = 0;
+  virtual std::uint64_t estimationFailures() const = 0;
+  virtual const std::string& lastFailure() const = 0;
+  virtual std::uint64_t controlNonFinite() const = 0;
+  virtual estimation::NumericalRepairs numericalRepairs() const = 0;
+  virtual double period() const = 0;
+  virtual std::uint64_t maxCatchUpPeriods() const = 0;
+  virtual double maxMeasurementLag() const = 0;
+  virtual double estimatorSeconds() const = 0;
+  virtual std::uint64_t estimateCount() const = 0;
+  virtual double maxStepSeconds() const = 0;
+
+  /// The filter's own description ("extended Kalman filter", ...) and sizes.
+  virtual std::string filterDescription() const = 0;
+  virtual Index stateSize() const = 0;
+  virtual Index measurementSize() const = 0;
+  virtual Index controlSize() const = 0;
+};
+
+}  // namespace sf_filter

@@ -1,0 +1,80 @@
+// FusionEngine for one filter type: the fusion core on the filter's fixed-size types behind
+// the run-time-sized interface the prebuilt node and replay use. Compiled in the translation
+// unit of a configuration header; everything here forwards to FusionCore<Filter>.
+#pragma once
+
+#include <string>
+#include <utility>
+
+#include "sf_filter/core/fusion_core.hpp"
+#include "sf_filter/core/fusion_engine.hpp"
+
+namespace sf_filter {
+
+template <class Filter>
+class FusionEngineOf final : public FusionEngine {
+  using Core = FusionCore<Filter>;
+
+ public:
+  FusionEngineOf(Filter filter, const FusionCoreOptions& options)
+      : core_(std::move(filter), options) {}
+
+  ClockEvent advanceTo(double now, EstimateCallback onEstimate) override {
+    return core_.advanceTo(now,
+                           [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
+  }
+  Rejection addMeasurement(Index input, double now, double value, std::optional<double> variance,
+                           double stamp) override {
+    return core_.addMeasurement(input, now, value, variance, stamp);
+  }
+  Rejection addControl(Index control, double value) override {
+    return core_.addControl(control, value);
+  }
+  void reset() override { core_.reset(); }
+
+  EstimateRef lastEstimate() const override { return view(core_.lastEstimate()); }
+  const InputCounters& counters(Index input) const override { return core_.counters(input); }
+  const InputOptions& inputOptions(Index input) const override {
+    return core_.inputOptions(input);
+  }
+  Index inputCount() const override { return core_.inputCount(); }
+  bool timedOut(Index input) const override { return core_.timedOut(input); }
+  double clock() const override { return core_.clock(); }
+  double startTime() const override { return core_.startTime(); }
+  const NisWindow& nis() const override { return core_.nis(); }
+  std::uint64_t nisFailures() const override { return core_.nisFailures(); }
+  std::uint64_t clockResets() const override { return core_.clockResets(); }
+  std::uint64_t estimationFailures() const override { return core_.estimationFailures(); }
+  const std::string& lastFailure() const override { return core_.lastFailure(); }
+  std::uint64_t controlNonFinite() const override { return core_.controlNonFinite(); }
+  estimation::NumericalRepairs numericalRepairs() const override {
+    return core_.numericalRepairs();
+  }
+  double period() const override { return core_.period(); }
+  std::uint64_t maxCatchUpPeriods() const override { return core_.maxCatchUpPeriods(); }
+  double maxMeasurementLag() const override { return core_.maxMeasurementLag(); }
+  double estimatorSeconds() const override { return core_.estimatorSeconds(); }
+  std::uint64_t estimateCount() const override { return core_.estimateCount(); }
+  double maxStepSeconds() const override { return core_.maxStepSeconds(); }
+
+  std::string filterDescription() const override { return core_.filter().description(); }
+  Index stateSize() const override { return core_.filter().stateSize(); }
+  Index measurementSize() const override { return core_.filter().measurementSize(); }
+  Index controlSize() const override { return core_.filter().controlSize(); }
+
+  const Core& core() const { return core_; }
+
+ private:
+  static EstimateRef view(const typename Core::Estimate& e) {
+    const Index n = e.state.size();
+    return EstimateRef{e.time,
+                       Eigen::Map<const Eigen::VectorXd>(e.state.data(), n),
+                       Eigen::Map<const Eigen::MatrixXd>(e.covariance.data(), n, n),
+                       e.presentInputs,
+                       e.substitutedInputs};
+  }
+
+  Core core_;
+};
+
+}  // namespace sf_filter

@@ -1,0 +1,46 @@
+// How the code generated from a configuration header reads messages without ROS's node
+// machinery: the prebuilt node and replay receive each message of a topic as serialized
+// bytes (roscpp's ShapeShifter online, rosbag offline) and hand them to the topic's reader,
+// which deserializes its own message type and gives every configured field to a MessageSink.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <sf_estimation/types.hpp>
+
+namespace sf_filter {
+
+/// Receives what a topic reader takes out of one message.
+class MessageSink {
+ public:
+  virtual ~MessageSink() = default;
+  /// A value of measurement input `input` received at `now` with the variance its message
+  /// carried (if any) and its header stamp in seconds (NaN: the message has no header).
+  virtual void measurement(estimation::Index input, double now, double value,
+                           std::optional<double> variance, double stamp) = 0;
+  virtual void control(estimation::Index control, double value) = 0;
+  /// Component `axis` (0 x, 1 y, 2 z) of `vector`, given in `frame` at the stamp
+  /// (sec, nsec), rotated into the node's base frame (FRAME_ALIGNED_INPUTS); nullopt when it
+  /// cannot be rotated (dropped and counted by the sink).
+  virtual std::optional<double> rotated(estimation::Index input, const std::string& frame,
+                                        std::uint32_t sec, std::uint32_t nsec,
+                                        const std::array<double, 3>& vector, int axis) = 0;
+};
+
+/// One subscribed topic: its message type and the reader of its serialized messages.
+struct TopicReader {
+  std::string topic;
+  std::string datatype;  ///< e.g. "sensor_msgs/Imu"
+  std::string md5sum;
+  std::string definition;  ///< the full message definition (rosbag connection header)
+  bool controls = false;   ///< the topic feeds TOPICS_IN_CTRL, not TOPICS_IN
+  /// Deserializes one message and hands every field used from it to `sink`. Throws
+  /// std::runtime_error when the bytes are not a message of this type.
+  void (*read)(const std::uint8_t* data, std::uint32_t size, MessageSink& sink,
+               double now) = nullptr;
+};
+
+}  // namespace sf_filter

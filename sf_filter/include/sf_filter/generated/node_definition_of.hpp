@@ -1,0 +1,235 @@
+// The part of a fusion node that depends on its configuration header: the NodeDefinition of
+// the header (names, sizes, defaults, one reader per subscribed topic, the filter in its
+// fusion core). Included by the node's translation unit after the configuration header and
+// configuration.hpp, inside "#if SF_CONFIG_OK". It includes no roscpp node code: the message
+// headers of the configuration bring only ROS's serialization, which is all a reader needs.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <boost/preprocessor/seq/elem.hpp>
+#include <boost/preprocessor/seq/size.hpp>
+#include <ros/message_traits.h>
+#include <ros/serialization.h>
+
+#include "sf_filter/config/filter_binding.hpp"
+#include "sf_filter/config/frame_alignment.hpp"
+#include "sf_filter/core/fusion_engine_of.hpp"
+#include "sf_filter/definition/node_definition.hpp"
+
+#ifdef POSE_OUT
+static_assert(BOOST_PP_SEQ_SIZE(POSE_OUT) == 3,
+              "POSE_OUT: expected (x index)(y index)(heading index), 3 entries");
+static_assert(BOOST_PP_SEQ_ELEM(0, POSE_OUT) < sf_config::kStateSize &&
+                  BOOST_PP_SEQ_ELEM(1, POSE_OUT) < sf_config::kStateSize &&
+                  BOOST_PP_SEQ_ELEM(2, POSE_OUT) < sf_config::kStateSize,
+              "POSE_OUT: every state index must be < n (the state size)");
+#endif
+
+namespace sf_filter {
+namespace generated {
+
+template <class Message>
+double stampOf(const Message& msg) {
+  if constexpr (ros::message_traits::HasHeader<Message>::value) {
+    return msg.header.stamp.toSec();
+  } else {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+template <class Message>
+Message deserialize(const std::uint8_t* data, std::uint32_t size) {
+  Message msg;
+  ros::serialization::IStream stream(const_cast<std::uint8_t*>(data), size);
+  ros::serialization::deserialize(stream, msg);
+  return msg;
+}
+
+template <class Message>
+TopicReader topicReader(std::string_view topic, bool controls) {
+  TopicReader reader;
+  reader.topic = std::string(topic);
+  reader.datatype = ros::message_traits::DataType<Message>::value();
+  reader.md5sum = ros::message_traits::MD5Sum<Message>::value();
+  reader.definition = ros::message_traits::Definition<Message>::value();
+  reader.controls = controls;
+  return reader;
+}
+
+/// Value of input In from `msg`: its field, or for a FRAME_ALIGNED_INPUTS entry the component
+/// of its vector rotated into the base frame (nullopt: not rotatable, dropped by the sink).
+template <class In, class Message>
+std::optional<double> inputValue(const Message& msg, MessageSink& sink) {
+  using Align = sf_config::FrameAlignment<In::index>;
+  if constexpr (Align::aligned) {
+    if constexpr (Align::valid) {
+      return sink.rotated(In::index, msg.header.frame_id, msg.header.stamp.sec,
+                          msg.header.stamp.nsec, Align::vector(msg), Align::axis);
+    } else {
+      return std::nullopt;  // not built: a static_assert of the configuration reported why
+    }
+  } else {
+    return In::value(msg);
+  }
+}
+
+/// One reader per distinct topic of TOPICS_IN and of TOPICS_IN_CTRL; a reader takes every
+/// field used from its topic.
+inline std::vector<TopicReader> topicReaders() {
+  std::vector<TopicReader> readers;
+  sf_config::forEachInput([&](auto owner) {
+    using Owner = decltype(owner);
+    if constexpr (Owner::owns_subscription) {
+      using Message = typename Owner::Message;
+      TopicReader reader = topicReader<Message>(Owner::topic, false);
+      reader.read = [](const std::uint8_t* data, std::uint32_t size, MessageSink& sink,
+                       double now) {
+        const Message msg = deserialize<Message>(data, size);
+        sf_config::forEachInput([&](auto in) {
+          using In = decltype(in);
+          if constexpr (In::first_same_topic == Owner::index) {
+            const std::optional<double> value = inputValue<In>(msg, sink);
+            if (!value) return;
+            std::optional<double> variance;
+            if constexpr (In::has_variance) variance = In::variance(msg);
+            sink.measurement(In::index, now, *value, variance, stampOf(msg));
+          }
+        });
+      };
+      readers.push_back(std::move(reader));
+    }
+  });
+  sf_config::forEachControl([&](auto owner) {
+    using Owner = decltype(owner);
+    if constexpr (Owner::owns_subscription) {
+      using Message = typename Owner::Message;
+      TopicReader reader = topicReader<Message>(Owner::topic, true);
+      reader.read = [](const std::uint8_t* data, std::uint32_t size, MessageSink& sink, double) {
+        const Message msg = deserialize<Message>(data, size);
+        sf_config::forEachControl([&](auto in) {
+          using In = decltype(in);
+          if constexpr (In::first_same_topic == Owner::index) sink.control(In::index, In::value(msg));
+        });
+      };
+      readers.push_back(std::move(reader));
+    }
+  });
+  return readers;
+}
+
+inline FilterParameters toRunTime(const sf_config::Parameters& p) {
+  FilterParameters r;
+  r.estimation_period_ms = p.estimation_period_ms;
+  r.process_noise_covariance = p.process_noise_covariance;
+  r.measurement_noise_covariance = p.measurement_noise_covariance;
+  r.initial_state = p.initial_state;
+  r.initial_error_covariance = p.initial_error_covariance;
+  r.number_of_particles = p.number_of_particles;
+  r.random_seed = p.random_seed;
+  r.resampling_threshold = p.resampling_threshold;
+  r.ukf_alpha = p.ukf_alpha;
+  r.ukf_beta = p.ukf_beta;
+  r.ukf_kappa = p.ukf_kappa;
+  r.window_size = p.window_size;
+  r.weighting_coefficients = p.weighting_coefficients;
+  return r;
+}
+
+/// `from` into the fixed-size `to`; the sizes were checked when the parameters were read.
+template <class Fixed>
+void assignChecked(Fixed& to, const Eigen::MatrixXd& from, const char* name) {
+  if (from.rows() != to.rows() || from.cols() != to.cols()) {
+    throw estimation::ParameterError(std::string(name) + ": expected " +
+                                     std::to_string(to.rows()) + "x" + std::to_string(to.cols()) +
+                                     ", found " + std::to_string(from.rows()) + "x" +
+                                     std::to_string(from.cols()));
+  }
+  to = from;
+}
+
+inline sf_config::Parameters toFixedSize(const FilterParameters& r) {
+  sf_config::Parameters p = sf_config::defaultParameters(r.estimation_period_ms);
+  assignChecked(p.process_noise_covariance, r.process_noise_covariance, "Q");
+  assignChecked(p.measurement_noise_covariance, r.measurement_noise_covariance, "R");
+  assignChecked(p.initial_state, r.initial_state, "x0");
+  assignChecked(p.initial_error_covariance, r.initial_error_covariance, "P0");
+  p.number_of_particles = r.number_of_particles;
+  p.random_seed = r.random_seed;
+  p.resampling_threshold = r.resampling_threshold;
+  p.ukf_alpha = r.ukf_alpha;
+  p.ukf_beta = r.ukf_beta;
+  p.ukf_kappa = r.ukf_kappa;
+  p.window_size = r.window_size;
+  p.weighting_coefficients = r.weighting_coefficients;
+  return p;
+}
+
+/// "topic field" per input; "topic member" for a FRAME_ALIGNED_INPUTS one.
+inline std::vector<std::string> inputNames() {
+  std::vector<std::string> names;
+  sf_config::forEachInput([&](auto in) {
+    using In = decltype(in);
+    using Align = sf_config::FrameAlignment<In::index>;
+    if constexpr (Align::aligned) {
+      names.push_back(std::string(In::topic) + " " + std::string(Align::member));
+    } else {
+      names.push_back(std::string(In::topic) + " " + std::string(In::field));
+    }
+  });
+  return names;
+}
+
+inline NodeDefinition nodeDefinition() {
+  NodeDefinition d;
+  NodeDescription& description = d.description;
+  description.method = sf_config::kMethodName;
+  description.inputs = inputNames();
+  sf_config::forEachControl([&](auto in) {
+    using In = decltype(in);
+    description.controls.push_back(std::string(In::topic) + " " + std::string(In::field));
+  });
+  sf_config::forEachOutput([&](auto out) {
+    using Out = decltype(out);
+    description.outputs.emplace_back(std::string(Out::topic), Out::state_index);
+  });
+#ifdef POSE_OUT
+  description.pose = std::array<int, 3>{BOOST_PP_SEQ_ELEM(0, POSE_OUT),
+                                        BOOST_PP_SEQ_ELEM(1, POSE_OUT),
+                                        BOOST_PP_SEQ_ELEM(2, POSE_OUT)};
+#endif
+  d.capabilities.canPredict = estimation::HasMeasurementPrediction<Filter>::value;
+  d.capabilities.hasStamp.assign(sf_config::kInputHasStamp.begin(),
+                                 sf_config::kInputHasStamp.end());
+  d.capabilities.names = description.inputs;
+  d.estimationPeriodMs = sf_config::kEstimationPeriodMs;
+  d.maxMeasurementLagMs = sf_config::kMaxMeasurementLagMs;
+  d.inputOptions = sf_config::defaultInputOptions();
+  d.alignedAxis.resize(description.inputs.size());
+  sf_config::forEachInput([&](auto in) {
+    using In = decltype(in);
+    using Align = sf_config::FrameAlignment<In::index>;
+    if constexpr (Align::aligned) d.alignedAxis[In::index] = std::string(Align::axis_name);
+  });
+  d.frameAlignment = sf_config::kHasFrameAlignment;
+  d.baseFrame = std::string(sf_config::kBaseFrame);
+  d.topics = topicReaders();
+  d.defaultParameters = [](double periodMs) {
+    return toRunTime(sf_config::defaultParameters(periodMs));
+  };
+  d.makeEngine = [](const FilterParameters& parameters, const FusionCoreOptions& options) {
+    return std::unique_ptr<FusionEngine>(
+        new FusionEngineOf<Filter>(makeFilter(toFixedSize(parameters)), options));
+  };
+  return d;
+}
+
+}  // namespace generated
+}  // namespace sf_filter
