@@ -106,6 +106,18 @@ class FitTest(unittest.TestCase):
         self.assertAlmostEqual(r["residual_std"], 0.05, delta=4 * 0.05 / math.sqrt(2 * 4000))
 
 
+class LagTest(unittest.TestCase):
+    def test_recovers_a_known_stamp_offset(self):
+        # the gyro stamps the same motion 0.07 s later than the odometry
+        f = lambda t: math.sin(1.1 * t) + 0.4 * math.sin(2.9 * t)
+        odom_t = [k * 0.1 for k in range(5, 300)]
+        imu_t = [k * 0.01 for k in range(3100)]
+        imu_w = [(0.0, 0.0, f(t - 0.07)) for t in imu_t]
+        lag, c = rs.best_lag(odom_t, [1.5 * f(t) for t in odom_t], imu_t, imu_w, 2)
+        self.assertAlmostEqual(lag, 0.07, delta=1e-9)
+        self.assertGreater(c, 0.9999)
+
+
 class StandstillTest(unittest.TestCase):
     def test_samples_between_two_still_odometry_messages(self):
         odom_t = [0.0, 1.0, 2.0, 3.0, 4.0]

@@ -15,7 +15,7 @@ Definitions (the functions below, unit-tested in test/eval/test_real_bag_stats.p
   Pearson correlation, the least-squares scale s of wheel = s * gyro (through the origin)
   and the residual standard deviation sqrt(sum r^2 / (n - 1)), r = wheel - s * gyro; also
   the affine fit wheel = s' * (gyro - b), whose b is the gyro's apparent offset while
-  driving.
+  driving. The stamp shift (lag) at which the correlation is best, -0.3 to 0.3 s.
 - Standstill: the gyro samples whose neighbouring odometry messages (the last at or before
   and the first after the sample) both report |linear.x| and |angular.z| <= the tolerance
   (default 0: the wheels report exactly zero). Their mean (bias) and sample standard
@@ -131,6 +131,22 @@ def yaw_rate_comparison(odom_t, odom_wz, imu_t, imu_w):
     return {"n": len(wheel), "correlations": per_axis, "axis": axis,
             "sign": 1 if per_axis[axis] > 0 else -1, "correlation": per_axis[axis],
             "scale": scale, "residual_std": res, "affine_scale": a_scale, "gyro_offset": offset}
+
+
+def best_lag(odom_t, odom_wz, imu_t, imu_w, axis, max_lag=0.3, step=0.01):
+    """(lag [s], correlation): the shift d of the odometry stamps, on the grid k * step with
+    |d| <= max_lag, at which the wheel yaw rate correlates best with the gyro axis `axis`
+    interpolated at stamp + d. A positive lag means the gyro's stamps are late against the
+    odometry's (the same motion is stamped d later on the gyro)."""
+    best = None
+    n = int(round(max_lag / step))
+    for k in range(-n, n + 1):
+        d = k * step
+        pairs = interpolate_at(imu_t, [w[axis] for w in imu_w], [t + d for t in odom_t])
+        c = correlation([odom_wz[j] for j, _ in pairs], [g for _, g in pairs])
+        if c is not None and (best is None or abs(c) > abs(best[1])):
+            best = (d, c)
+    return best
 
 
 def standstill_samples(odom_t, odom_v, odom_wz, imu_t, gyro, tol=0.0):
@@ -250,6 +266,9 @@ def report(path, odom_topic="/encoder", imu_topic="/imu/data", tol=0.0, out=sys.
     p("correlation: %.3f" % yaw["correlation"])
     p("scale s of wheel = s * gyro: %.3f; residual std %.4f rad/s" % (yaw["scale"], yaw["residual_std"]))
     p("affine fit wheel = s' * (gyro - b): s' %.3f, b %+.4f rad/s" % (yaw["affine_scale"], yaw["gyro_offset"]))
+    lag, lag_c = best_lag(ot, ow, it, iw, yaw["axis"])
+    p("best correlation over odometry stamp shifts of -0.3..0.3 s (0.01 s steps): %.3f at "
+      "%+.2f s (positive: gyro stamped later)" % (lag_c, lag))
     gyro_yaw = [w[yaw["axis"]] for w in iw]
     still = standstill_samples(ot, ov, ow, it, gyro_yaw, tol)
     p("## gyro %s at standstill (|v|, |wz| <= %g on the odometry before and after)" % (axis, tol))
