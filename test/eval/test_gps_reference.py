@@ -3,6 +3,8 @@
 against a known rotation and shift, and the error figures against hand-computed values.
 """
 
+import contextlib
+import io
 import math
 import os
 import sys
@@ -251,8 +253,6 @@ class HuskyBagTest(unittest.TestCase):
     def test_command_line(self):
         with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "gps.csv")
-            import contextlib
-            import io
             buf = io.StringIO()
             with contextlib.redirect_stdout(buf):
                 rc = gr.main([self.BAG, self.BAG, "--odom-topic", "/encoder",
@@ -262,6 +262,26 @@ class HuskyBagTest(unittest.TestCase):
             truth = ev.load_truth_csv(out)
             self.assertEqual((truth.x[0], truth.y[0]), (0.0, 0.0))
             self.assertEqual(len(truth.t), 95)
+
+    def test_replay_csv_estimate(self):
+        # a replay-format CSV whose pose is the GPS track itself, turned by -0.5 rad and moved
+        # by (10, -4) m: the fit undoes it (to the CSV's 1e-6 m printing)
+        _, track = gr.gps_track(gr.read_fixes(self.BAG))
+        est = rotate_shift(list(zip(track.x, track.y)), -0.5, 10.0, -4.0)
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "replay.csv")
+            with open(path, "w") as f:
+                f.write("time,x0,var0,pose_x,pose_y,pose_heading,present_inputs\n")
+                for t, (x, y) in zip(track.t, est):
+                    f.write("%.9f,0,1,%.6f,%.6f,0,3\n" % (t, x, y))
+            r = gr.compare(ev.load_result(path, ["pose_x", "pose_y"]), track)
+            buf = io.StringIO()
+            with contextlib.redirect_stdout(buf):
+                self.assertEqual(gr.main([self.BAG, path]), 0)
+        self.assertEqual(r["n"], len(track.t))
+        self.assertAlmostEqual(r["transform"][0], 0.5, delta=1e-7)
+        self.assertLess(r["max"], 1e-5)
+        self.assertIn("fit: rotation 28.65 deg", buf.getvalue())   # 0.5 rad
 
 
 if __name__ == "__main__":
