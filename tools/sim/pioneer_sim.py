@@ -340,7 +340,7 @@ def build_bag(seed, truth, tele, start_s, profile=None):
     rg = simbag.rng("pioneer", seed, "gyro")
     gyro = None           # sensor_errors: bias (initial + random walk) and scale factor
     if p.gyro_active:
-        gyro = sensor_errors.GyroErrors(simbag.rng("pioneer", seed, "err", "gyro"), p.gyro_bias,
+        gyro = sensor_errors.GyroErrors(simbag.rng("pioneer", seed, "err", "gyro"), p.gyro_bias_init,
                                         p.gyro_bias_rw, p.gyro_scale, GYR_PERIOD_MS * 1e-3)
     tr_gyr = p.transport("pioneer", seed, "angular_velocity", "imu")
     for k in range(GYR_PHASE_MS, n_ms + 1, GYR_PERIOD_MS):

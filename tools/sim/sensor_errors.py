@@ -266,7 +266,7 @@ class ErrorProfile:
         "radius_error_right": (0.0, "static radius error of the right wheels (fraction)"),
         "radius_load_coef": (0.0, "radius change per g of lateral acceleration (load transfer, fraction/g)"),
         "encoder_step": (0.0, "encoder travel quantum [m] (0 = no tick quantisation)"),
-        "gyro_bias": (0.0, "initial gyro bias [rad/s]"),
+        "gyro_bias_init": (0.0, "initial gyro yaw-rate bias [rad/s] (diff_drive_sim: added to --gyro-bias on the yaw axis)"),
         "gyro_bias_rw": (0.0, "gyro bias random walk [rad/s/sqrt(s)]"),
         "gyro_scale": (0.0, "gyro scale-factor error (fraction)"),
         "accel_bias": (0.0, "constant accelerometer bias added to each axis [m/s^2]"),
@@ -308,7 +308,7 @@ class ErrorProfile:
 
     @property
     def gyro_active(self):
-        return self.changed("gyro_bias", "gyro_bias_rw", "gyro_scale")
+        return self.changed("gyro_bias_init", "gyro_bias_rw", "gyro_scale")
 
     @property
     def accel_active(self):
@@ -340,7 +340,7 @@ PRESETS = {
     "husky": dict(slip_chi=1.15, slip_std=0.10, slip_tau=1.0, lateral_slip=0.02,
                   radius_error_left=0.005, radius_error_right=-0.003, radius_load_coef=0.02,
                   encoder_step=0.001,
-                  gyro_bias=0.0005, gyro_bias_rw=5e-5, gyro_scale=0.01,
+                  gyro_bias_init=0.0005, gyro_bias_rw=5e-5, gyro_scale=0.01,
                   accel_bias=0.05, accel_bias_rw=0.002, tilt_roll=0.01, tilt_pitch=-0.01,
                   imu_latency_ms=2.0, imu_jitter_ms=2.0, wheel_latency_ms=0.4, wheel_jitter_ms=0.75,
                   drop_prob=0.002, dup_prob=0.001),
