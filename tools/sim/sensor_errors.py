@@ -120,6 +120,10 @@ class TickCounter:
     def advance(self, distance):
         self.travel += distance
 
+    def reading(self):
+        """Cumulative travel as the counter reports it: round(travel / step) * step."""
+        return int(round(self.travel / self.step)) * self.step
+
     def speed(self, period_s):
         count = int(round(self.travel / self.step))
         ds = (count - self.count) * self.step
