@@ -9,7 +9,7 @@ from their own streams (simbag.rng(robot, seed, "err", name)), never from the st
 the original noise sources, so switching one model on leaves the other noise unchanged.
 
 Models (each a small class or function, tested against closed forms in
-test/sim/test_sensor_errors.py):
+test/eval/test_sensor_errors.py):
 
   skid_track_speeds   skid-steer slip: the ground speeds of the two tracks for a true body
                       motion (v, omega) when the effective track is chi times the track the
