@@ -12,7 +12,9 @@ left after that slope. Layouts:
   diff_drive odom twist.twist.angular.z (header stamp), imu/data angular_velocity.y
              (the simulated IMU lies on its side; header stamp)
   husky      /encoder twist.twist.angular.z, /imu/data angular_velocity.z (header stamps):
-             the real Clearpath Husky recording described in doc/bags.md
+             the real Clearpath Husky recording described in doc/bags.md; also prints
+             its track widths, latencies, losses, encoder resolution and mean
+             accelerometer reading (husky_extras)
 
   yaw_agreement.py --layout pioneer bags/pioneer_real_seed1.bag
 """
@@ -103,6 +105,54 @@ def read_bag(path, layout):
     return wheel, gyro
 
 
+def husky_extras(path):
+    """Further figures of the real Husky recording (doc/bags.md, calibration):
+    track widths from the raw wheel speeds of /husky/data/encoders (right minus left,
+    encoders[1] - encoders[0]): over /encoder's yaw rate (the driver's track) and over the
+    gyro's (the effective track; least squares through 0 on samples with |gyro| > 0.2
+    rad/s); arrival latency (bag time - header stamp) of /encoder and /imu/data; seq steps;
+    whether the encoder travel is in whole millimetres; the mean accelerometer reading."""
+    import rosbag
+    raw, odom, gyro, lat, seqs, acc = [], [], [], {}, {}, [0.0, 0.0, 0.0, 0]
+    whole_mm = total = 0
+    with rosbag.Bag(path) as bag:
+        for topic, msg, t in bag.read_messages(topics=["/husky/data/encoders", "/encoder", "/imu/data"]):
+            if topic == "/husky/data/encoders":
+                raw.append((t.to_sec(), msg.encoders[1].speed - msg.encoders[0].speed))
+                for e in msg.encoders:
+                    total += 1
+                    whole_mm += abs(e.travel * 1000.0 - round(e.travel * 1000.0)) < 1e-6
+                continue
+            lat.setdefault(topic, []).append((t - msg.header.stamp).to_sec())
+            seqs.setdefault(topic, []).append(msg.header.seq)
+            if topic == "/encoder":
+                odom.append((t.to_sec(), msg.twist.twist.angular.z))
+            else:
+                gyro.append((msg.header.stamp.to_sec(), msg.angular_velocity.z))
+                a = msg.linear_acceleration
+                acc[0] += a.x
+                acc[1] += a.y
+                acc[2] += a.z
+                acc[3] += 1
+    gt, gv = [t for t, _ in sorted(gyro)], [v for _, v in sorted(gyro)]
+    pairs = [(d, interpolate(gt, gv, t)) for t, d in raw]
+    pairs = [(d, g) for d, g in pairs if g is not None and abs(g) > 0.2]
+    eff = sum(d * g for d, g in pairs) / sum(g * g for _, g in pairs)
+    ot, ov = [t for t, _ in odom], [v for _, v in odom]
+    pairs = [(d, interpolate(ot, ov, t)) for t, d in raw]
+    pairs = [(d, w) for d, w in pairs if w is not None and abs(w) > 0.1]
+    drv = sum(d * w for d, w in pairs) / sum(w * w for _, w in pairs)
+    print("husky effective_track=%.3fm driver_track=%.3fm travel_whole_mm=%d/%d accel_mean=(%.3f, %.3f, %.3f)"
+          % (eff, drv, whole_mm, total, acc[0] / acc[3], acc[1] / acc[3], acc[2] / acc[3]))
+    for topic in sorted(lat):
+        ms = [x * 1e3 for x in lat[topic]]
+        m = sum(ms) / len(ms)
+        sd = math.sqrt(sum((x - m) ** 2 for x in ms) / len(ms))
+        steps = [b - a for a, b in zip(seqs[topic], seqs[topic][1:])]
+        print("husky %s latency mean=%.2fms std=%.2fms max=%.2fms messages=%d seq_steps_not_1=%d"
+              % (topic, m, sd, max(ms), len(ms), sum(1 for x in steps if x != 1)))
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--layout", choices=("pioneer", "diff_drive", "husky"), required=True)
@@ -115,6 +165,8 @@ def main(argv=None):
         gyro_std = math.sqrt(sum((x - mg) ** 2 for x in g) / n)
         print("%s pairs=%d corr=%.3f resid_std=%.4frad/s slope=%.3f resid_after_slope=%.4frad/s gyro_std=%.3frad/s"
               % (path, n, corr, resid, slope, resid_slope, gyro_std))
+        if args.layout == "husky":
+            husky_extras(path)
     return 0
 
 
