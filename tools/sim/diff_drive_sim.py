@@ -23,6 +23,9 @@ yaw rate. The gyro's bias is constant and given in the IMU's frame (--gyro-bias)
 of the base-frame yaw rate is its component along the robot's z axis, printed at the end.
 
   diff_drive_sim.py --seed 1 --duration 60 --out bags/diff_drive_seed1.bag
+
+Realistic errors (sensor_errors.py; also --odom-separation-scale, a driver with a wrong wheel
+separation) are off by default; --realistic husky switches on a calibrated set.
 """
 
 import argparse

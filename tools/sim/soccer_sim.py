@@ -13,6 +13,9 @@ Only point.x and point.y carry data (z = 0). See doc/bags.md for the models.
 
   soccer_sim.py --seed 1 --duration 60 --out bags/soccer_seed1.bag
   soccer_sim.py --seed 1 --duration 70 --drop 30:80 --drop 63.5:45 --out bags/soccer_lost_vision.bag
+
+Realistic vision transport (jitter, random losses, duplicates) and encoder ticks are off by
+default; --realistic wang switches them on (sensor_errors.py, doc/bags.md).
 """
 
 import argparse
