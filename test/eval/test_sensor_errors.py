@@ -367,5 +367,75 @@ class HuskyPresetTest(unittest.TestCase):
         self.assertLess(resid_slope, 0.13)
 
 
+class SimulatorOptionsTest(unittest.TestCase):
+    """Single options end to end: diff_drive_sim's miscalibrated driver and soccer_sim's
+    realistic vision transport and encoder ticks."""
+
+    @classmethod
+    def setUpClass(cls):
+        try:
+            import diff_drive_sim
+            import rosbag
+            import soccer_sim
+            import yaw_agreement
+        except ImportError as exc:  # no ROS python modules
+            raise unittest.SkipTest("needs the ROS python modules: %s" % exc)
+        cls.diff, cls.soccer, cls.agree, cls.rosbag = diff_drive_sim, soccer_sim, yaw_agreement, rosbag
+        cls.tmp = tempfile.mkdtemp(prefix="sf_sim_options_")
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def run_quietly(self, main, argv):
+        with open(os.devnull, "w") as null:
+            saved, sys.stdout = sys.stdout, null
+            try:
+                main(argv)
+            finally:
+                sys.stdout = saved
+
+    def test_driver_separation_scales_odometry_turn(self):
+        # S = 1/7.5: the odometry's yaw rate is 7.5 times the wheels' (= the true one here,
+        # no slip); against the gyro (noise 0.005 rad/s, base bias 0.012 rad/s) the
+        # least-squares slope is 7.5 within a few per cent
+        path = os.path.join(self.tmp, "dd.bag")
+        self.run_quietly(self.diff.main, ["--seed", "1", "--duration", "60", "--compression", "none",
+                                          "--odom-separation-scale", repr(1.0 / 7.5), "--out", path])
+        w, g = self.agree.pair(*self.agree.read_bag(path, "diff_drive"))
+        slope = self.agree.statistics(w, g)[3]
+        self.assertLess(abs(slope / 7.5 - 1.0), 0.03, slope)
+
+    def test_soccer_realistic_vision_and_ticks(self):
+        path = os.path.join(self.tmp, "soccer.bag")
+        self.run_quietly(self.soccer.main, ["--seed", "1", "--duration", "10", "--compression", "none",
+                                            "--realistic", "wang", "--out", path])
+        preset = self.soccer.PRESETS["wang"]
+        step = preset["encoder_step"]
+        x0 = y0 = None
+        seqs, stamps = [], []
+        with self.rosbag.Bag(path) as bag:
+            for topic, msg, t in bag.read_messages():
+                if topic == "vision/pose":
+                    delay_ms = (t - msg.header.stamp).to_sec() * 1e3
+                    self.assertGreaterEqual(delay_ms, preset["vision_delay_ms"] - 1e-6)
+                    seqs.append(msg.header.seq)
+                    stamps.append(msg.header.stamp.to_nsec())
+                elif topic == "encoder/pose":
+                    if x0 is None:   # the first reading is the start position, 0 ticks
+                        x0, y0 = msg.point.x, msg.point.y
+                    for d in (msg.point.x - x0, msg.point.y - y0):
+                        self.assertAlmostEqual(d / step, round(d / step), places=6)
+        frames = 10 * 32 + 1
+        unique = len(set(seqs))
+        lost, dups = frames - unique, len(seqs) - unique
+        p = preset["vision_drop_prob"]
+        self.assertLess(abs(lost - frames * p), 4.0 * math.sqrt(frames * p * (1 - p)) + 1)
+        q = preset["vision_dup_prob"]
+        self.assertLessEqual(dups, unique * q + 4.0 * math.sqrt(unique * q) + 1)
+        # a duplicate repeats the frame: same seq, same stamp
+        self.assertEqual(len(set(zip(seqs, stamps))), unique)
+
+
 if __name__ == "__main__":
     unittest.main()
