@@ -23,6 +23,9 @@ yaw rate. The gyro's bias is constant and given in the IMU's frame (--gyro-bias)
 of the base-frame yaw rate is its component along the robot's z axis, printed at the end.
 
   diff_drive_sim.py --seed 1 --duration 60 --out bags/diff_drive_seed1.bag
+
+Realistic errors (sensor_errors.py; also --odom-separation-scale, a driver with a wrong wheel
+separation) are off by default; --realistic husky switches on a calibrated set.
 """
 
 import argparse
@@ -38,6 +41,7 @@ from sensor_msgs.msg import Imu  # noqa: E402
 from tf2_msgs.msg import TFMessage  # noqa: E402
 
 import pioneer_sim  # noqa: E402  (teleoperation script and true motion)
+import sensor_errors  # noqa: E402
 import simbag  # noqa: E402
 
 G = 9.80665
@@ -97,7 +101,7 @@ def transform(bag, t_ns, parent, child, xyz, quat):
     return t
 
 
-def build_bag(seed, truth, tele, gyro_bias, start_s):
+def build_bag(seed, truth, tele, gyro_bias, start_s, profile=None):
     bag = simbag.BagBuilder(start_s)
     states = truth.log
     n_ms = len(tele.cmds) * pioneer_sim.TICK_MS
@@ -111,16 +115,31 @@ def build_bag(seed, truth, tele, gyro_bias, start_s):
     # wheel odometry (diff_drive_controller): twist from the wheel speeds of this message,
     # pose integrated from the twist (midpoint heading); its tf odom -> base_link
     rw = simbag.rng("diff_drive", seed, "wheels")
+    p = profile or sensor_errors.ErrorProfile()
+    odom_steps = range(ODOM_PHASE_MS, n_ms + 1, ODOM_PERIOD_MS)
+    measured = None
+    if p.wheels_active:   # slip, radius errors, ticks (sensor_errors); else the ideal wheels
+        measured = sensor_errors.wheel_speed_samples(simbag.rng("diff_drive", seed, "err", "slip"), states,
+                                                     pioneer_sim.DT, TRACK, odom_steps, p)
+    tr_odom = p.transport("diff_drive", seed, "odom", "wheel")
     ox = oy = oth = 0.0
     last_ms = None
     odom_heading_end = 0.0
-    for k in range(ODOM_PHASE_MS, n_ms + 1, ODOM_PERIOD_MS):
+    for k in odom_steps:
         _, _, _, v, w = states[k]
         wheels = []
-        for true_speed in (v - 0.5 * TRACK * w, v + 0.5 * TRACK * w):
+        if measured is None:
+            pairs = ((v - 0.5 * TRACK * w, v - 0.5 * TRACK * w), (v + 0.5 * TRACK * w, v + 0.5 * TRACK * w))
+        else:
+            ml, mr, gl, gr = measured[k]
+            pairs = ((ml, gl), (mr, gr))
+        for speed, ground in pairs:
             noise = rw.gauss(0.0, WHEEL_STD)
-            wheels.append(true_speed + noise if abs(true_speed) > 1e-6 else 0.0)
-        vm, wm = 0.5 * (wheels[0] + wheels[1]), (wheels[1] - wheels[0]) / TRACK
+            wheels.append(speed + noise if abs(ground) > 1e-6 else 0.0)
+        if p.odom_separation_scale != 1.0:   # miscalibrated driver (sensor_errors.driver_twist)
+            vm, wm = sensor_errors.driver_twist(wheels[0], wheels[1], TRACK, p.odom_separation_scale)
+        else:
+            vm, wm = 0.5 * (wheels[0] + wheels[1]), (wheels[1] - wheels[0]) / TRACK
         dt = (k - last_ms) * 1e-3 if last_ms is not None else 0.0
         last_ms = k
         mid = oth + 0.5 * wm * dt
@@ -144,19 +163,35 @@ def build_bag(seed, truth, tele, gyro_bias, start_s):
         for i, var in enumerate((WHEEL_STD ** 2 / 2, 1e6, 1e6, 1e6, 1e6,
                                  2 * WHEEL_STD ** 2 / TRACK ** 2)):
             msg.twist.covariance[7 * i] = var
-        bag.add("odom", msg, k * ms)
-        bag.add("tf", TFMessage(transforms=[
-            transform(bag, k * ms, "odom", "base_link", (ox, oy, 0.0), (0.0, 0.0) + q)]), k * ms)
+        tf = TFMessage(transforms=[transform(bag, k * ms, "odom", "base_link", (ox, oy, 0.0), (0.0, 0.0) + q)])
+        # the driver publishes odom and its tf together: both arrive (or are lost) together
+        for arrival in ([k * ms] if tr_odom is None else tr_odom.deliver(k * ms)):
+            bag.add("odom", msg, arrival)
+            bag.add("tf", tf, arrival)
 
     # IMU in imu_link: base-frame rates and accelerations rotated into the sensor's frame
     mount = rotation_rpy(*MOUNT_RPY)
     rg = simbag.rng("diff_drive", seed, "gyro")
     ra = simbag.rng("diff_drive", seed, "accel")
+    gyro = None           # sensor_errors: bias walk and scale factor of the yaw axis
+    if p.gyro_active:
+        gyro = sensor_errors.GyroErrors(simbag.rng("diff_drive", seed, "err", "gyro"), p.gyro_bias_init,
+                                        p.gyro_bias_rw, p.gyro_scale, IMU_PERIOD_MS * 1e-3)
+    if p.accel_active:    # tilt leakage, constant bias, bias random walk (base frame)
+        leak = sensor_errors.tilt_leakage(p.tilt_roll, p.tilt_pitch)
+        rwa = simbag.rng("diff_drive", seed, "err", "accel_bias")
+        walks = [sensor_errors.RandomWalk(rwa, p.accel_bias_rw, IMU_PERIOD_MS * 1e-3) for _ in range(3)]
+    tr_imu = p.transport("diff_drive", seed, "imu/data", "imu")
     for k in range(IMU_PHASE_MS, n_ms, IMU_PERIOD_MS):
         _, _, _, v, w = states[k]
         a_long = (states[k + 1][3] - v) / pioneer_sim.DT
+        base_accel = (a_long, v * w, G)
+        if gyro is not None:
+            w = gyro.measure(w)
+        if p.accel_active:
+            base_accel = tuple(base_accel[i] + leak[i] + p.accel_bias + walks[i].step() for i in range(3))
         rate = transpose_times(mount, (0.0, 0.0, w))
-        accel = transpose_times(mount, (a_long, v * w, G))
+        accel = transpose_times(mount, base_accel)
         msg = Imu()
         msg.header.seq = bag.next_seq("imu/data")
         msg.header.stamp = bag.stamp(k * ms)
@@ -171,7 +206,7 @@ def build_bag(seed, truth, tele, gyro_bias, start_s):
         for i in range(3):
             msg.angular_velocity_covariance[4 * i] = GYRO_STD ** 2
             msg.linear_acceleration_covariance[4 * i] = ACCEL_STD ** 2
-        bag.add("imu/data", msg, k * ms)
+        sensor_errors.emit(bag, tr_imu, "imu/data", msg, k * ms)
 
     for k in range(0, n_ms + 1, GT_PERIOD_MS):
         x, y, th, _, _ = states[k]
@@ -207,16 +242,24 @@ def main(argv=None):
     parser.add_argument("--start", type=int, default=simbag.DEFAULT_START_S,
                         help="simulated clock at the start, in seconds (default %(default)s)")
     parser.add_argument("--compression", choices=simbag.COMPRESSIONS, default="bz2")
+    sensor_errors.add_arguments(parser)
     args = parser.parse_args(argv)
     if args.duration <= 0 or abs(args.duration * 10 - round(args.duration * 10)) > 1e-9:
         parser.error("--duration must be positive and a multiple of 0.1 s")
+    try:
+        profile = sensor_errors.profile_from_args(args)
+    except Exception as exc:  # noqa: BLE001 - report bad option values as usage errors
+        parser.error(str(exc))
 
-    truth, tele = pioneer_sim.plan_run(args.seed, args.duration, robot="diff_drive")
+    truth, tele = pioneer_sim.plan_run(args.seed, args.duration, robot="diff_drive",
+                                       lateral_slip=profile.lateral_slip)
     x, y, th = truth.state[:3]
     if math.hypot(x, y) > pioneer_sim.LOOP_TOLERANCE:
         raise SystemExit("loop not closed: final true pose (%.4f, %.4f) m" % (x, y))
-    bag, odom_end = build_bag(args.seed, truth, tele, args.gyro_bias, args.start)
+    bag, odom_end = build_bag(args.seed, truth, tele, args.gyro_bias, args.start, profile)
     bag.write(args.out, args.compression)
+    if profile.active:
+        print("diff_drive errors: %s" % profile.summary())
     path_len = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(truth.log, truth.log[1:]))
     print("diff_drive seed=%d duration=%.1fs path=%.2fm gyro_bias_imu=(%g, %g, %g)rad/s "
           "gyro_bias_base_z=%.6frad/s wheel_odometry_final_error=%.3fm,%.2fdeg out=%s"

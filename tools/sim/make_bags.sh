@@ -21,7 +21,7 @@ SIM="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
 ROOT="$(cd "${SIM}/../.." && pwd -P)"
 
 BAGS=(pioneer_seed1.bag pioneer_seed2.bag pioneer_seed3.bag soccer_seed1.bag soccer_lost_vision.bag
-  diff_drive_seed1.bag)
+  diff_drive_seed1.bag pioneer_real_seed1.bag pioneer_real_seed2.bag)
 
 # generate DIR: write every shipped bag into DIR
 generate() {
@@ -38,6 +38,12 @@ generate() {
     --out "${dir}/soccer_lost_vision.bag"
   # generic differential-drive robot (/odom, /imu/data, IMU mounted on its side, gyro bias)
   "${PY}" "${SIM}/diff_drive_sim.py" --seed 1 --duration 60 --out "${dir}/diff_drive_seed1.bag"
+  # the Pioneer runs of seeds 1 and 2 with the realistic error set (skid-steer slip, radius
+  # and load, encoder ticks, gyro bias walk and scale, tilt, latency, losses, duplicates;
+  # sensor_errors.py, doc/bags.md): same true paths as pioneer_seed1/2.bag up to the
+  # lateral slip in turns
+  "${PY}" "${SIM}/pioneer_sim.py" --seed 1 --duration 90 --realistic husky --out "${dir}/pioneer_real_seed1.bag"
+  "${PY}" "${SIM}/pioneer_sim.py" --seed 2 --duration 120 --realistic husky --out "${dir}/pioneer_real_seed2.bag"
 }
 
 mode=write

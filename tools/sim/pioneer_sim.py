@@ -18,6 +18,12 @@ true pose:
 See doc/bags.md for the models and their parameters.
 
   pioneer_sim.py --seed 1 --duration 90 --out bags/pioneer_seed1.bag
+
+Realistic errors (wheel slip, radius and load, encoder ticks, gyro bias walk and scale,
+accelerometer tilt and bias, latency, losses, duplicates; sensor_errors.py) are off by
+default; --realistic husky switches on a calibrated set:
+
+  pioneer_sim.py --seed 1 --duration 90 --realistic husky --out bags/pioneer_real_seed1.bag
 """
 
 import argparse
@@ -30,6 +36,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from geometry_msgs.msg import PoseStamped, Twist, TwistStamped, Vector3Stamped  # noqa: E402
 from std_msgs.msg import Float32  # noqa: E402
 
+import sensor_errors  # noqa: E402
 import simbag  # noqa: E402
 
 # ---------------------------------------------------------------- robot (thesis 5.1.2)
@@ -84,12 +91,13 @@ class Truth:
     """True planar motion at 1 kHz: (x, y, theta) driven by v, omega that follow the
     commanded velocities under acceleration limits (rate limiter)."""
 
-    def __init__(self):
+    def __init__(self, lateral_slip=0.0):
         self.state = (0.0, 0.0, 0.0, 0.0, 0.0)   # x, y, theta (unwrapped), v, omega
         self.log = [self.state]                 # state at t = k ms
+        self.lateral_slip = lateral_slip        # K [s]: side velocity -K v omega (sensor_errors)
 
     @staticmethod
-    def advance(state, v_cmd, w_cmd, steps, log=None):
+    def advance(state, v_cmd, w_cmd, steps, log=None, lateral_slip=0.0):
         x, y, th, v, w = state
         dv, dw = A_LIN * DT, A_ANG * DT
         for _ in range(steps):
@@ -100,6 +108,11 @@ class Truth:
             mid = th + 0.5 * dth
             x += ds * math.cos(mid)
             y += ds * math.sin(mid)
+            if lateral_slip:
+                # skid steer sliding outwards in a turn: side velocity -K v omega (body +y left)
+                dl = -lateral_slip * 0.5 * (v * w + v1 * w1) * DT
+                x -= dl * math.sin(mid)
+                y += dl * math.cos(mid)
             th += dth
             v, w = v1, w1
             if log is not None:
@@ -107,7 +120,7 @@ class Truth:
         return (x, y, th, v, w)
 
     def run(self, v_cmd, w_cmd, steps):
-        self.state = self.advance(self.state, v_cmd, w_cmd, steps, self.log)
+        self.state = self.advance(self.state, v_cmd, w_cmd, steps, self.log, self.lateral_slip)
 
 
 class Teleop:
@@ -213,13 +226,15 @@ def random_segment(rng, state):
             (rng.uniform(0.4, V_MAX), 0.0, ceil_ticks(rng.uniform(2.0, min(8.0, 1.0 + d_home))))]
 
 
-def plan_run(seed, duration, robot="pioneer"):
+def plan_run(seed, duration, robot="pioneer", lateral_slip=0.0):
     """Drive the true robot through a seeded teleoperation script of *duration* seconds.
     *robot* names the random stream, so other simulators reusing the script get their own
-    paths."""
+    paths. lateral_slip: see Truth (the planner's predictions ignore it; the loop closure
+    is planned from the true pose and its manoeuvres, straights and turns in place, do
+    not slip sideways)."""
     total_ticks = int(round(duration / TICK_S))
     rng = simbag.rng(robot, seed, "path")
-    truth = Truth()
+    truth = Truth(lateral_slip)
     tele = Teleop(truth)
     tele.hold(0.0, 0.0, ceil_ticks(rng.uniform(2.0, 3.0)))   # standing at the start
     final_stop = 20                                          # >= 2 s at rest at the end
@@ -250,7 +265,7 @@ def quaternion_z(yaw):
     return math.sin(0.5 * yaw), math.cos(0.5 * yaw)
 
 
-def build_bag(seed, truth, tele, start_s):
+def build_bag(seed, truth, tele, start_s, profile=None):
     bag = simbag.BagBuilder(start_s)
     states = truth.log
     n_ms = len(tele.cmds) * TICK_MS       # run length in ms; states has n_ms + 1 entries
@@ -265,13 +280,27 @@ def build_bag(seed, truth, tele, start_s):
 
     # wheel encoders, rosaria (thesis eqs. 5.17-5.18): integer mm/s, no counts at standstill
     rl, rr = simbag.rng("pioneer", seed, "wheel_left"), simbag.rng("pioneer", seed, "wheel_right")
-    for k in range(ENC_PHASE_MS, n_ms + 1, ENC_PERIOD_MS):
+    p = profile or sensor_errors.ErrorProfile()
+    enc_steps = range(ENC_PHASE_MS, n_ms + 1, ENC_PERIOD_MS)
+    wheels = None
+    if p.wheels_active:   # slip, radius errors, ticks (sensor_errors); else the ideal wheels
+        wheels = sensor_errors.wheel_speed_samples(simbag.rng("pioneer", seed, "err", "slip"), states,
+                                                   DT, 2.0 * R_EFF, enc_steps, p)
+    tr_l = p.transport("pioneer", seed, "velocity_wheel_left", "wheel")
+    tr_r = p.transport("pioneer", seed, "velocity_wheel_right", "wheel")
+    for k in enc_steps:
         _, _, _, v, w = states[k]
-        for topic, true_mm_s, r in (("velocity_wheel_left", (v - w * R_EFF) * 1000.0, rl),
-                                    ("velocity_wheel_right", (v + w * R_EFF) * 1000.0, rr)):
+        if wheels is None:
+            pairs = (((v - w * R_EFF) * 1000.0, None), ((v + w * R_EFF) * 1000.0, None))
+        else:
+            ml, mr, gl, gr = wheels[k]
+            pairs = ((ml * 1000.0, gl), (mr * 1000.0, gr))
+        for topic, (mm_s, ground), r, tr in zip(("velocity_wheel_left", "velocity_wheel_right"), pairs,
+                                                (rl, rr), (tr_l, tr_r)):
             noise = r.gauss(0.0, ENC_STD)
-            value = simbag.quantise(true_mm_s + noise, ENC_RES) if abs(true_mm_s) > 1e-6 else 0.0
-            bag.add(topic, Float32(data=value), k * ms)
+            moving = abs(mm_s) > 1e-6 if ground is None else abs(ground) > 1e-9
+            value = simbag.quantise(mm_s + noise, ENC_RES) if moving else 0.0
+            sensor_errors.emit(bag, tr, topic, Float32(data=value), k * ms)
 
     # accelerometer KXTF9: sensor y = robot x, sensor x = -robot y, sensor z = up
     ra = simbag.rng("pioneer", seed, "accel")
@@ -280,6 +309,12 @@ def build_bag(seed, truth, tele, start_s):
     rw_step = ACC_RW_PER_SQRT_MIN * math.sqrt(ACC_PERIOD_MS * 1e-3 / 60.0)
     bias = [0.0, 0.0, 0.0]                                   # zero after the start-up calibration
     bias_log = []
+    extra = None          # sensor_errors: tilt leakage, constant bias and bias random walk
+    if p.accel_active:    # in the robot frame (x forward, y left, z up)
+        leak = sensor_errors.tilt_leakage(p.tilt_roll, p.tilt_pitch)
+        rwa = simbag.rng("pioneer", seed, "err", "accel_bias")
+        walks = [sensor_errors.RandomWalk(rwa, p.accel_bias_rw, ACC_PERIOD_MS * 1e-3) for _ in range(3)]
+    tr_acc = p.transport("pioneer", seed, "acceleration", "imu")
     for k in range(ACC_PHASE_MS, n_ms, ACC_PERIOD_MS):
         _, _, _, v, w = states[k]
         v_next = states[k + 1][3]
@@ -295,15 +330,29 @@ def build_bag(seed, truth, tele, start_s):
         msg.header.seq = bag.next_seq("acceleration")
         msg.header.stamp = bag.stamp(k * ms)
         msg.header.frame_id = "kxtf9"
+        if p.accel_active:
+            extra = [leak[i] + p.accel_bias + walks[i].step() for i in range(3)]
+            a_long += extra[0]
+            a_lat += extra[1]
         msg.vector.x = simbag.quantise(-a_lat + bias[0] + ra.gauss(0.0, ACC_STD), ACC_RES)
         msg.vector.y = simbag.quantise(a_long + by + ra.gauss(0.0, ACC_STD), ACC_RES)
-        msg.vector.z = simbag.quantise(G + bias[2] + ra.gauss(0.0, ACC_STD), ACC_RES)
-        bag.add("acceleration", msg, k * ms)
+        if extra is None:
+            msg.vector.z = simbag.quantise(G + bias[2] + ra.gauss(0.0, ACC_STD), ACC_RES)
+        else:
+            msg.vector.z = simbag.quantise(G + extra[2] + bias[2] + ra.gauss(0.0, ACC_STD), ACC_RES)
+        sensor_errors.emit(bag, tr_acc, "acceleration", msg, k * ms)
 
     # gyroscope IMU-3000: z = yaw rate; no roll/pitch motion on a flat floor
     rg = simbag.rng("pioneer", seed, "gyro")
+    gyro = None           # sensor_errors: bias (initial + random walk) and scale factor
+    if p.gyro_active:
+        gyro = sensor_errors.GyroErrors(simbag.rng("pioneer", seed, "err", "gyro"), p.gyro_bias_init,
+                                        p.gyro_bias_rw, p.gyro_scale, GYR_PERIOD_MS * 1e-3)
+    tr_gyr = p.transport("pioneer", seed, "angular_velocity", "imu")
     for k in range(GYR_PHASE_MS, n_ms + 1, GYR_PERIOD_MS):
         w = states[k][4]
+        if gyro is not None:
+            w = gyro.measure(w)
         msg = Vector3Stamped()
         msg.header.seq = bag.next_seq("angular_velocity")
         msg.header.stamp = bag.stamp(k * ms)
@@ -311,7 +360,7 @@ def build_bag(seed, truth, tele, start_s):
         msg.vector.x = simbag.quantise(rg.gauss(0.0, GYR_STD), GYR_RES)
         msg.vector.y = simbag.quantise(rg.gauss(0.0, GYR_STD), GYR_RES)
         msg.vector.z = simbag.quantise(w + rg.gauss(0.0, GYR_STD), GYR_RES)
-        bag.add("angular_velocity", msg, k * ms)
+        sensor_errors.emit(bag, tr_gyr, "angular_velocity", msg, k * ms)
 
     # ground truth: the simulator's true pose and velocity
     for k in range(GT_PHASE_MS, n_ms + 1, GT_PERIOD_MS):
@@ -329,6 +378,8 @@ def build_bag(seed, truth, tele, start_s):
         twist.header.stamp = pose.header.stamp
         twist.header.frame_id = "base_link"
         twist.twist.linear.x = v
+        if truth.lateral_slip:
+            twist.twist.linear.y = -truth.lateral_slip * v * w
         twist.twist.angular.z = w
         bag.add("ground_truth/twist", twist, k * ms)
     return bag, drift, bias_log
@@ -343,17 +394,24 @@ def main(argv=None):
     parser.add_argument("--start", type=int, default=simbag.DEFAULT_START_S,
                         help="simulated clock at the start, in seconds (default %(default)s)")
     parser.add_argument("--compression", choices=simbag.COMPRESSIONS, default="bz2")
+    sensor_errors.add_arguments(parser, skip=("odom_separation_scale",))
     args = parser.parse_args(argv)
     if args.duration <= 0 or abs(args.duration * 10 - round(args.duration * 10)) > 1e-9:
         parser.error("--duration must be positive and a multiple of 0.1 s")
+    try:
+        profile = sensor_errors.profile_from_args(args)
+    except Exception as exc:  # noqa: BLE001 - report bad option values as usage errors
+        parser.error(str(exc))
 
-    truth, tele = plan_run(args.seed, args.duration)
+    truth, tele = plan_run(args.seed, args.duration, lateral_slip=profile.lateral_slip)
     x, y, th = truth.state[:3]
     err = math.hypot(x, y)
     if err > LOOP_TOLERANCE or abs(truth.state[3]) > 1e-9 or abs(truth.state[4]) > 1e-9:
         raise SystemExit("loop not closed: final true pose (%.4f, %.4f) m" % (x, y))
-    bag, drift, bias_log = build_bag(args.seed, truth, tele, args.start)
+    bag, drift, bias_log = build_bag(args.seed, truth, tele, args.start, profile)
     bag.write(args.out, args.compression)
+    if profile.active:
+        print("pioneer errors: %s" % profile.summary())
 
     path_len = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(truth.log, truth.log[1:]))
     turned = sum(abs(b[2] - a[2]) for a, b in zip(truth.log, truth.log[1:]))

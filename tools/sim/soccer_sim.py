@@ -13,6 +13,9 @@ Only point.x and point.y carry data (z = 0). See doc/bags.md for the models.
 
   soccer_sim.py --seed 1 --duration 60 --out bags/soccer_seed1.bag
   soccer_sim.py --seed 1 --duration 70 --drop 30:80 --drop 63.5:45 --out bags/soccer_lost_vision.bag
+
+Realistic vision transport (jitter, random losses, duplicates) and encoder ticks are off by
+default; --realistic wang switches them on (sensor_errors.py, doc/bags.md).
 """
 
 import argparse
@@ -24,6 +27,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from geometry_msgs.msg import PointStamped, PoseStamped  # noqa: E402
 
+import sensor_errors  # noqa: E402
 import simbag  # noqa: E402
 
 VISION_PERIOD_NS = simbag.NS_PER_S // 32      # 31.25 ms, exact
@@ -96,6 +100,17 @@ class EncoderError:
         return e
 
 
+# Calibrated sets of the realistic options (doc/bags.md, "Realistic error options"):
+# vision frames delayed and jittered, now and then lost or duplicated; encoder positions
+# counted in ticks.
+PRESETS = {
+    "wang": dict(vision_delay_ms=31.25, vision_jitter_ms=3.0, vision_drop_prob=0.02, vision_dup_prob=0.002,
+                 encoder_step=0.0001),
+}
+REALISTIC_DEFAULTS = dict(vision_delay_ms=0.0, vision_jitter_ms=0.0, vision_drop_prob=0.0, vision_dup_prob=0.0,
+                          encoder_step=0.0)
+
+
 def parse_drop(text):
     try:
         start, count = text.split(":")
@@ -127,14 +142,34 @@ def main(argv=None):
     parser.add_argument("--bias-model", choices=("rate", "position"), default="rate",
                         help="rate: eq. (1), the bias drives the encoder's rate (default); "
                              "position: encoder = true position + bias")
-    parser.add_argument("--vision-delay-ms", type=float, default=0.0,
+    parser.add_argument("--vision-delay-ms", type=float, default=None,
                         help="transport delay of vision frames: bag time = header stamp + delay (default 0)")
+    parser.add_argument("--realistic", choices=sorted(PRESETS), default=None,
+                        help="switch on a set of realistic errors (doc/bags.md); single options override it")
+    parser.add_argument("--vision-jitter-ms", type=float, default=None,
+                        help="mean of the exponential jitter added to the vision delay (default 0)")
+    parser.add_argument("--vision-drop-prob", type=float, default=None,
+                        help="probability that a vision frame is lost in transport (default 0)")
+    parser.add_argument("--vision-dup-prob", type=float, default=None,
+                        help="probability that a vision frame is recorded twice (default 0)")
+    parser.add_argument("--encoder-step", type=float, default=None,
+                        help="encoder position quantum per axis [m] (default 0: not quantised)")
     parser.add_argument("--start", type=int, default=simbag.DEFAULT_START_S,
                         help="simulated clock at the start, in seconds (default %(default)s)")
     parser.add_argument("--compression", choices=simbag.COMPRESSIONS, default="bz2")
     args = parser.parse_args(argv)
     if args.duration <= 0:
         parser.error("--duration must be positive")
+    real = dict(REALISTIC_DEFAULTS)
+    if args.realistic:
+        real.update(PRESETS[args.realistic])
+    for name in REALISTIC_DEFAULTS:
+        if getattr(args, name) is not None:
+            real[name] = getattr(args, name)
+    if not (0.0 <= real["vision_drop_prob"] < 1.0 and 0.0 <= real["vision_dup_prob"] <= 1.0):
+        parser.error("--vision-drop-prob and --vision-dup-prob must be probabilities")
+    if min(real["vision_delay_ms"], real["vision_jitter_ms"], real["encoder_step"]) < 0:
+        parser.error("delays, jitter and --encoder-step must be >= 0")
 
     end_ns = int(round(args.duration * simbag.NS_PER_S))
     traj = Trajectory(args.seed)
@@ -161,7 +196,12 @@ def main(argv=None):
         first = int(math.ceil(start * simbag.NS_PER_S / VISION_PERIOD_NS - 1e-9))
         drops.update(range(first, first + count))
     rv = simbag.rng("soccer", args.seed, "vision")
-    delay_ns = int(round(args.vision_delay_ms * 1e6))
+    delay_ns = int(round(real["vision_delay_ms"] * 1e6))
+    transport = None      # sensor_errors.Transport: jitter, random losses, duplicates
+    if real["vision_jitter_ms"] or real["vision_drop_prob"] or real["vision_dup_prob"]:
+        transport = sensor_errors.Transport(simbag.rng("soccer", args.seed, "err", "transport", "vision"),
+                                            delay_ns, real["vision_jitter_ms"] * 1e6, real["vision_drop_prob"],
+                                            real["vision_dup_prob"])
     sent = lost = 0
     for k in range(0, end_ns // VISION_PERIOD_NS + 1):
         t_ns = k * VISION_PERIOD_NS
@@ -171,7 +211,16 @@ def main(argv=None):
             bag.skip_seq("vision/pose")
             lost += 1
             continue
-        bag.add("vision/pose", point(bag, "vision/pose", t_ns, x + nx, y + ny), t_ns + delay_ns)
+        msg = point(bag, "vision/pose", t_ns, x + nx, y + ny)
+        if transport is None:
+            bag.add("vision/pose", msg, t_ns + delay_ns)
+        else:
+            arrivals = transport.deliver(t_ns)
+            for arrival in arrivals:
+                bag.add("vision/pose", msg, arrival)
+            if not arrivals:
+                lost += 1
+                continue
         sent += 1
 
     # encoder, 1000 Hz
@@ -180,17 +229,30 @@ def main(argv=None):
     sq = [0.0, 0.0]
     peak = [0.0, 0.0]
     n = 0
+    ticks = None          # sensor_errors.TickCounter per axis, counting from the start position
+    if real["encoder_step"] > 0:
+        ticks = (sensor_errors.TickCounter(real["encoder_step"]), sensor_errors.TickCounter(real["encoder_step"]))
+        x0, y0 = traj.position(0.0)
     for j in range(0, end_ns // ENCODER_PERIOD_NS + 1):
         t_ns = j * ENCODER_PERIOD_NS
         x, y = traj.position(t_ns * 1e-9)
         dx, dy = ex.step(), ey.step()
-        bag.add("encoder/pose", point(bag, "encoder/pose", t_ns, x + dx, y + dy), t_ns)
+        if ticks is None:
+            bag.add("encoder/pose", point(bag, "encoder/pose", t_ns, x + dx, y + dy), t_ns)
+        else:
+            for counter, pos, start in zip(ticks, (x + dx, y + dy), (x0, y0)):
+                counter.advance(pos - start - counter.travel)
+            bag.add("encoder/pose", point(bag, "encoder/pose", t_ns, x0 + ticks[0].reading(),
+                                          y0 + ticks[1].reading()), t_ns)
         for i, d in enumerate((dx, dy)):
             sq[i] += d * d
             peak[i] = max(peak[i], abs(d))
         n += 1
 
     bag.write(args.out, args.compression)
+    if real != REALISTIC_DEFAULTS:
+        print("soccer errors: %s%s" % (" ".join("%s=%g" % kv for kv in sorted(real.items())),
+                                       "" if transport is None else " vision_duplicated=%d" % transport.duplicated))
     print("soccer seed=%d duration=%.3fs bias_model=%s speed_mean=%.2fm/s speed_max=%.2fm/s "
           "vision_sent=%d vision_lost=%d encoder_error_rms=(%.3f, %.3f)m encoder_error_max=(%.3f, %.3f)m "
           "encoder_error_end=(%.3f, %.3f)m out=%s"
