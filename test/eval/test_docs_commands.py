@@ -586,6 +586,23 @@ class DocsCommandsTest(unittest.TestCase):
                 problems += path_problems(path, f.read())
         self.assertEqual(problems, [], "\n" + "\n".join(problems))
 
+    def test_launch_files_start_what_exists(self):
+        """<node pkg="sf_pkg" type="X"> of the shipped launch files: X is built or is an
+        installed executable script (a type made of $(arg ...) is left out)."""
+        problems = []
+        for path in sorted(glob.glob(os.path.join(REPO, "launch", "*.launch"))):
+            with open(path, encoding="utf-8") as f:
+                text = re.sub(r"<!--.*?-->", "", f.read(), flags=re.S)
+            for node in re.findall(r"<node\b[^>]*>", text):
+                pkg = re.search(r'\bpkg="([^"]*)"', node)
+                node_type = re.search(r'\btype="([^"]*)"', node)
+                if not pkg or not node_type or pkg.group(1) != PACKAGE or "$(" in node_type.group(1):
+                    continue
+                where = "%s <node type=%s>" % (os.path.relpath(path, REPO), node_type.group(1))
+                problems += command_problems(where, ["rosrun", PACKAGE, node_type.group(1)],
+                                             self.targets, self.modes)
+        self.assertEqual(problems, [], "\n" + "\n".join(problems))
+
     def test_no_shared_folder_cited(self):
         cited = []
         paths = doc_files() + sorted(glob.glob(os.path.join(REPO, "launch", "*.launch")))
