@@ -603,6 +603,20 @@ class DocsCommandsTest(unittest.TestCase):
                                              self.targets, self.modes)
         self.assertEqual(problems, [], "\n" + "\n".join(problems))
 
+    def test_tools_with_a_main_are_executable(self):
+        """A tools/ script with a #! line and a main runs as `tools/...` and `rosrun sf_pkg`."""
+        problems = []
+        for path in sorted(glob.glob(os.path.join(REPO, "tools", "**", "*.py"), recursive=True)):
+            with open(path, encoding="utf-8") as f:
+                text = f.read()
+            rel = os.path.relpath(path, REPO)
+            if text.startswith("#!") and "__main__" in text:
+                if not is_executable(rel, self.modes):
+                    problems.append("%s has a main but is not executable (chmod 755)" % rel)
+                if not self.targets.installs_program(rel):
+                    problems.append("%s is not installed as a program" % rel)
+        self.assertEqual(problems, [], "\n" + "\n".join(problems))
+
     def test_no_shared_folder_cited(self):
         cited = []
         paths = doc_files() + sorted(glob.glob(os.path.join(REPO, "launch", "*.launch")))
