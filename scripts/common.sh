@@ -21,6 +21,9 @@ SF_PACKAGE=sf_pkg
 # Debian packages needed to build, test and run the package.
 # rosbash provides rosrun (ros-core only recommends it). clang and libclang-rt-14-dev build
 # sf_estimation's sanitizer and libFuzzer checks (sf_estimation/scripts/sanitizer_checks.py).
+# python3-diagnostic-msgs: the Python messages of /diagnostics, for `rostopic echo
+# /diagnostics`, tools/diagnostics_monitor.py and its test (ros-diagnostic-msgs has only the
+# .msg files).
 SF_DEB_PACKAGES=(
   ros-core-dev catkin libroscpp-dev librosbag-dev python3-rostest rosbash
   libtf2-ros-dev libtf2-geometry-msgs-dev
@@ -28,6 +31,7 @@ SF_DEB_PACKAGES=(
   libdiagnostic-updater-dev libtopic-tools-dev ros-message-generation ros-message-runtime
   libeigen3-dev libboost-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
+  python3-diagnostic-msgs
   cmake g++
   clang libclang-rt-14-dev
 )
