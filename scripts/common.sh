@@ -123,13 +123,14 @@ sf_source_devel() {
 }
 
 # (d) Everything a script needs before doing its job: packages, workspace,
-# a (Release) build of all targets, the devel environment.
+# a (Release) build, the devel environment. With arguments, only those make targets are
+# built (the main job builds just the nodes it runs); without, every target.
 sf_prepare() {
   sf_ensure_packages
   sf_setup_workspace
-  sf_log "building ${SF_PACKAGE} in ${SF_WS} (log: ${SF_WS}/build.log)"
+  sf_log "building ${SF_PACKAGE}${1:+ targets $*} in ${SF_WS} (log: ${SF_WS}/build.log)"
   local t0=$SECONDS
-  sf_catkin_make build.log
+  sf_catkin_make build.log "$@"
   sf_log "build done in $((SECONDS - t0)) s"
   sf_source_devel
 }

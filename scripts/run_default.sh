@@ -6,7 +6,21 @@ set -euo pipefail
 # shellcheck source=scripts/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-sf_prepare
+# Only what the job runs: the default Pioneer nodes and the moving train (with --all or
+# --exe, every target, as the report may then run any node). The default nodes are read
+# from the report's source, not imported: its modules need packages sf_prepare installs.
+targets=(sf_moving_train)
+if [[ " $* " != *" --all "* && " $* " != *" --exe "* ]]; then
+  mapfile -t -O 1 targets < <(/usr/bin/python3 -c '
+import ast, sys
+for node in ast.parse(open(sys.argv[1]).read()).body:
+    if isinstance(node, ast.Assign) and getattr(node.targets[0], "id", "") == "DEFAULT_CONFIGS":
+        print("\n".join("sf_" + c for c in ast.literal_eval(node.value)))
+' "${SF_REPO_ROOT}/tools/eval/pioneer_report.py")
+else
+  targets=()
+fi
+sf_prepare "${targets[@]}"
 
 # The default job, after the build (SF_WS is final only after sf_prepare):
 # 1. the thesis's Pioneer 3-AT dead reckoning (chapter 5): bags/pioneer_seed1.bag replayed

@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# Build cost of the package (doc/build_cost.md): per configuration header, the CPU time and
+# peak memory of compiling its node's translation unit (GNU time, the package's own flags);
+# the wall time of a clean build of every node (no tests); the wall time of rebuilding one
+# node after touching its header. With --baseline REV the same translation units of another
+# revision are compiled in the same run, for a before/after on one machine.
+#
+#   scripts/measure_build.sh [--baseline REV] [--baseline-clean] [--jobs N] [HEADER ...]
+#
+# HEADER: configuration headers relative to the repository (default: config/nav3ctrl_ekf.h,
+# config/nav3ctrl_ukf.h, config/nav3ctrl_pf.h, config/soccer_kf.h). --baseline-clean also
+# times the baseline's clean build (minutes). Needs the packages of scripts/common.sh and
+# GNU time (/usr/bin/time, Debian package "time").
+set -euo pipefail
+export PATH="/usr/bin:/bin:${PATH}"
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd -P)"
+baseline="" baseline_clean=0 jobs=2 headers=()
+while (($#)); do
+  case "$1" in
+    --baseline) baseline="$2"; shift 2 ;;
+    --baseline-clean) baseline_clean=1; shift ;;
+    --jobs) jobs="$2"; shift 2 ;;
+    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    *) headers+=("$1"); shift ;;
+  esac
+done
+((${#headers[@]})) || headers=(config/nav3ctrl_ekf.h config/nav3ctrl_ukf.h config/nav3ctrl_pf.h
+  config/soccer_kf.h)
+[[ -x /usr/bin/time ]] || { echo "measure_build.sh: needs GNU time (apt-get install time)" >&2; exit 1; }
+
+work="$(mktemp -d "${TMPDIR:-/tmp}/sf_measure_build.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+
+# configure <source tree> <workspace>: a workspace without tests, compile commands exported,
+# the messages generated (every node's unit includes them).
+configure() {
+  mkdir -p "$2/src"
+  ln -s "$1" "$2/src/sf_pkg"
+  catkin_make -C "$2" -j"$jobs" -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 \
+    -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCATKIN_ENABLE_TESTING=OFF \
+    sf_pkg_generate_messages_cpp >"$2/configure.log" 2>&1
+}
+
+# unit_cost <workspace> <header>: "cpu_s peak_MB" of compiling the header's node unit.
+unit_cost() {
+  local cmd
+  cmd="$(/usr/bin/python3 - "$1/build/compile_commands.json" "$2" <<'EOF'
+import json, sys
+for entry in json.load(open(sys.argv[1])):
+    if 'fusion_node_main' in entry['file'] and '/' + sys.argv[2] + '\\"' in entry['command']:
+        print('cd %s && %s' % (entry['directory'], entry['command'].replace(
+            entry['command'].split(' -o ')[1].split()[0], '/dev/null')))
+        break
+EOF
+)"
+  [[ -n "$cmd" ]] || { echo "n/a n/a"; return; }
+  /usr/bin/time -f "%U %S %M" -o "$work/time.txt" bash -c "$cmd" >/dev/null 2>&1 || true
+  awk '{printf "%.1f %.0f\n", $1 + $2, $3 / 1024}' "$work/time.txt"
+}
+
+clean_build() {  # wall seconds of building everything in a configured workspace
+  local t0=$SECONDS
+  catkin_make -C "$1" -j"$jobs" >"$1/build.log" 2>&1
+  echo $((SECONDS - t0))
+}
+
+echo "machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(date -u +%F)"
+echo "compiler: $(c++ --version | head -1)"
+echo
+
+configure "$repo" "$work/current"
+if [[ -n "$baseline" ]]; then
+  git -C "$repo" worktree add -q --detach "$work/baseline_src" "$baseline"
+  trap 'git -C "$repo" worktree remove --force "$work/baseline_src"; rm -rf "$work"' EXIT
+  configure "$work/baseline_src" "$work/baseline"
+fi
+
+printf '%-28s %14s %14s' "translation unit (header)" "CPU s" "peak MB"
+[[ -n "$baseline" ]] && printf ' %14s %14s' "CPU s ($baseline)" "peak MB ($baseline)"
+echo
+for h in "${headers[@]}"; do
+  read -r cpu mem < <(unit_cost "$work/current" "$h")
+  printf '%-28s %14s %14s' "$h" "$cpu" "$mem"
+  if [[ -n "$baseline" ]]; then
+    read -r bcpu bmem < <(unit_cost "$work/baseline" "$h")
+    printf ' %14s %14s' "$bcpu" "$bmem"
+  fi
+  echo
+done
+echo
+
+echo "clean build, every node, no tests (-j$jobs): $(clean_build "$work/current") s wall"
+[[ -n "$baseline" && "$baseline_clean" == 1 ]] &&
+  echo "clean build at $baseline (-j$jobs): $(clean_build "$work/baseline") s wall"
+
+node="sf_$(basename "${headers[0]}" .h)"
+touch "$repo/${headers[0]}"
+t0=$(date +%s.%N)
+make -C "$work/current/build" "$node" >/dev/null 2>&1
+echo "touch ${headers[0]}, rebuild $node: $(awk "BEGIN { printf \"%.1f\", $(date +%s.%N) - $t0 }") s wall"
