@@ -20,12 +20,19 @@
 // are taken by arrival: period k uses the latest control received before its end.
 //
 // Faults (doc/reliability.md): a value is checked on arrival - finite, its variance finite and
-// positive, inside the input's plausible range, its stamp not older than, equal to or too far
-// ahead of the previous one / the clock - and dropped and counted (InputCounters) otherwise,
-// so it never reaches the filter. An input with a timeout that has accepted no value for
-// longer is timed out: missing every period, and a HOLD or FILL input then substitutes
-// nothing and forgets its history; the first value back is used as usual. The normalised
+// positive and at most kMaxVariance (1e100), inside the input's plausible range, its stamp not
+// older than, equal to or too far ahead of the previous one / the clock - and dropped and counted
+// (InputCounters) otherwise, so it never reaches the filter. An input with a timeout that has
+// accepted no value for longer is timed out: missing every period, and a HOLD or FILL input then
+// substitutes nothing and forgets its history; the first value back is used as usual. Accepted
+// means used: only a value that reaches the filter keeps its input alive - one dropped on arrival,
+// too late for its period or refused by the gate does not (InputCounters::lastAccepted is set
+// when the value's period is estimated, to the value's arrival). The normalised
 // innovation squared of each period (nis_window.hpp) tells whether the filter is consistent.
+// A step the estimator rejects leaves the filter unchanged (the library's guarantee): the
+// period's estimate is the last good one, flagged and counted; only
+// Options::maxConsecutiveFailures rejected steps in a row restart the filter from its initial
+// belief (filterResets()).
 #pragma once
 
 #include <chrono>
@@ -64,6 +71,8 @@ class FusionCore {
   static constexpr int L = Filter::ControlSize;
   /// The filter gives its predicted measurement (KF, EKF, UKF, PF): gates and FILL possible.
   static constexpr bool kCanPredict = estimation::HasMeasurementPrediction<Filter>::value;
+  /// The largest variance a measurement may carry (sf_filter::kMaxVariance, 1e100).
+  static constexpr double kMaxVariance = sf_filter::kMaxVariance;
 
   struct Estimate {
     double time = 0.0;  ///< end of the estimated period
@@ -71,12 +80,27 @@ class FusionCore {
     estimation::Matrix<N, N> covariance;
     Index presentInputs = 0;      ///< inputs with a measured value (not gated) in the period
     Index substitutedInputs = 0;  ///< inputs given a HOLD or FILL substitute
+    /// The estimator rejected this period's step: state and covariance are the last good
+    /// estimate (the filter is unchanged by a rejected step), or the initial belief when
+    /// `filterReset` is set too.
+    bool stepFailed = false;
+    /// This period's failure was the Options::maxConsecutiveFailures-th in a row: the filter
+    /// restarted from its initial belief, which state and covariance are.
+    bool filterReset = false;
   };
 
+  /// Bounds of Options::period [s]: 0.1 ms .. 1 h (a period outside them is a unit mistake:
+  /// 1e-6 meant as ms, 50 meant as ms, and would load a core or never estimate).
+  static constexpr double kMinPeriod = 1e-4;
+  static constexpr double kMaxPeriod = 3600.0;
+  /// Upper bound of Options::maxCatchUpPeriods.
+  static constexpr std::uint64_t kMaxCatchUpLimit = 1000000;
+
   struct Options {
-    double period = 0.1;  ///< estimation period [s]
+    double period = 0.1;  ///< estimation period [s], kMinPeriod .. kMaxPeriod
     /// A forward clock jump longer than this many periods is skipped (one estimate) instead
     /// of estimating every missed period, so a stalled clock never floods the output.
+    /// 1 .. kMaxCatchUpLimit.
     std::uint64_t maxCatchUpPeriods = 100;
     /// One entry per input, or none: every input AVERAGE, by arrival time, without gate.
     std::vector<InputOptions> inputs;
@@ -89,6 +113,11 @@ class FusionCore {
     /// Periods over which the NIS is averaged (nis_window.hpp); 0: not computed. Costs one
     /// measurement prediction per period when no gate or FILL needs it anyway.
     std::size_t nisWindow = 0;
+    /// A step the estimator rejects (EstimationError) leaves the filter as it was: the period's
+    /// estimate is the last good one, flagged Estimate::stepFailed. Only after this many
+    /// rejected steps in a row does the filter restart from its initial belief (a fault that
+    /// waiting does not mend); counted by filterResets(). At least 1 (1: restart at once).
+    std::uint64_t maxConsecutiveFailures = 10;
   };
 
   FusionCore(Filter filter, const Options& options)
@@ -138,18 +167,42 @@ class FusionCore {
       return ClockEvent::JumpedBackwards;
     }
     const std::uint64_t due = schedule_.periodsDue(now - lag);
-    if (due > options_.maxCatchUpPeriods) {
-      estimatePeriod();
-      onEstimate(last_);
-      schedule_.skipTo(now - lag);
-      openWindow();
-      return ClockEvent::SkippedGap;
-    }
+    if (due > options_.maxCatchUpPeriods) return skipGap(now, onEstimate);
     for (std::uint64_t k = 0; k < due; ++k) {
       estimatePeriod();
       onEstimate(last_);
     }
     return ClockEvent::Normal;
+  }
+
+  /// Crosses a forward gap to `now` at the cost of one period, whatever its length: estimates
+  /// the current period (with what it holds, a prediction if nothing), calls onEstimate once,
+  /// and moves the schedule on by whole periods (keeping the phase) so that now - lag lies in
+  /// the current one; the periods in between are not estimated (counted by skippedPeriods()).
+  /// advanceTo() does this for a jump of more than maxCatchUpPeriods periods; an adapter that
+  /// steps through a gap itself (the offline replay emulating a running clock) calls it for a
+  /// gap it must not step through, e.g. one of more than kMaxCatchUpLimit periods. Nothing
+  /// happens (Normal) when no period is due, or before the schedule started.
+  template <class OnEstimate>
+  ClockEvent skipGap(double now, OnEstimate&& onEstimate) {
+    if (!schedule_.started()) return advanceTo(now, onEstimate);
+    const double lag = options_.maxMeasurementLag;
+    const std::uint64_t due = schedule_.periodsDue(now - lag);
+    if (due == 0) return ClockEvent::Normal;
+    clock_ = now;
+    estimatePeriod();
+    onEstimate(last_);
+    skippedPeriods_ += due - 1;
+    ++skippedGaps_;
+    schedule_.skipTo(now - lag);
+    openWindow();
+    return ClockEvent::SkippedGap;
+  }
+
+  /// Periods that have ended by `now` (minus the lag) and are not estimated yet: what
+  /// advanceTo(now) would estimate, or skip when more than maxCatchUpPeriods().
+  std::uint64_t periodsDue(double now) const {
+    return schedule_.periodsDue(now - options_.maxMeasurementLag);
   }
 
   /// A measurement of input `input` received at `now`, with the variance the message carried
@@ -167,7 +220,9 @@ class FusionCore {
       ++c.nonFinite;
       return Rejection::NonFinite;
     }
-    if (variance && !(std::isfinite(*variance) && *variance > 0.0)) {
+    // Beyond kMaxVariance a variance says "no information" and the period's sum of variances
+    // could overflow: refused like a non-finite one.
+    if (variance && !(*variance > 0.0 && *variance <= kMaxVariance)) {
       ++c.badVariance;
       return Rejection::BadVariance;
     }
@@ -191,7 +246,6 @@ class FusionCore {
       }
       c.lastStamp = stamp;
     }
-    c.lastAccepted = now;
     const bool byStamp = o.alignByStamp && !std::isnan(stamp);
     const double time = byStamp ? stamp : now;
     bool estimated = false, beyond = false;
@@ -201,7 +255,7 @@ class FusionCore {
       return Rejection::TooLate;
     }
     if (byStamp && beyond) ++c.aheadOfClock;
-    slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time);
+    slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time, now);
     return Rejection::None;
   }
 
@@ -224,6 +278,7 @@ class FusionCore {
   /// are discarded.
   void reset() {
     restartFilter();
+    consecutiveFailures_ = 0;
     for (OpenPeriod& slot : open_) slot.clear();
     for (auto& aligner : aligners_) aligner.reset();
     for (auto& c : counters_) {
@@ -246,7 +301,8 @@ class FusionCore {
                                    : options_.inputs[static_cast<std::size_t>(input)];
   }
   Index inputCount() const { return static_cast<Index>(counters_.size()); }
-  /// Whether input `input` has a timeout and accepted no value for longer than it at time t
+  /// Whether input `input` has a timeout and used no value (one that reached the filter: not
+  /// dropped, late or gated) arriving later than `timeout` before time t
   /// (counted from the schedule's start, or the last reset, if it never did).
   bool timedOut(Index input, double t) const {
     const InputOptions& o = inputOptions(input);
@@ -266,7 +322,17 @@ class FusionCore {
   /// Periods whose NIS could not be computed (innovation covariance not positive definite).
   std::uint64_t nisFailures() const { return nisFailures_; }
   std::uint64_t clockResets() const { return clockResets_; }
+  /// Forward gaps crossed with one estimate (advanceTo() or skipGap()), and the periods they
+  /// skipped without estimating.
+  std::uint64_t skippedGaps() const { return skippedGaps_; }
+  std::uint64_t skippedPeriods() const { return skippedPeriods_; }
+  /// Steps the estimator rejected (each period's estimate then is the last good one).
   std::uint64_t estimationFailures() const { return estimationFailures_; }
+  /// Rejected steps since the last successful one.
+  std::uint64_t consecutiveFailures() const { return consecutiveFailures_; }
+  /// Restarts of the filter from its initial belief after Options::maxConsecutiveFailures
+  /// rejected steps in a row (not counting reset() and clock jumps backwards).
+  std::uint64_t filterResets() const { return filterResets_; }
   const std::string& lastFailure() const { return lastFailure_; }
   std::uint64_t controlNonFinite() const { return controlNonFinite_; }
   /// What the filter repaired instead of failing (numerical_repairs.hpp), since the core was
@@ -305,14 +371,25 @@ class FusionCore {
   static inline const InputOptions kDefaultInput{};
 
   static const Options& checked(const Options& o, Index inputs) {
-    if (!(o.period > 0.0) || !std::isfinite(o.period)) {
-      throw estimation::ParameterError("estimation period must be positive and finite");
+    if (!(o.period >= kMinPeriod && o.period <= kMaxPeriod)) {
+      throw estimation::ParameterError(
+          "estimation period must be from 0.1 ms to 1 h (1e-4 .. 3600 s), got " +
+          std::to_string(o.period) + " s");
+    }
+    if (o.maxCatchUpPeriods < 1 || o.maxCatchUpPeriods > kMaxCatchUpLimit) {
+      throw estimation::ParameterError("maximum catch-up periods must be from 1 to " +
+                                       std::to_string(kMaxCatchUpLimit) + ", got " +
+                                       std::to_string(o.maxCatchUpPeriods));
     }
     if (!(o.maxMeasurementLag >= 0.0) || !std::isfinite(o.maxMeasurementLag)) {
       throw estimation::ParameterError("maximum measurement lag must be finite and >= 0");
     }
     if (!(o.maxFutureStamp >= 0.0)) {
       throw estimation::ParameterError("maximum future stamp must be >= 0 (infinite: no check)");
+    }
+    if (o.maxConsecutiveFailures < 1) {
+      throw estimation::ParameterError(
+          "maximum consecutive failures must be at least 1 (1: restart at the first failure)");
     }
     if (o.nisWindow > 1000000) {
       throw estimation::ParameterError("NIS window is longer than 1e6 periods");
@@ -399,6 +476,7 @@ class FusionCore {
     OpenPeriod& slot = slotOf(k);
     takeControls(slot);
     Index present = 0, substituted = 0;
+    bool failed = false, reset = false;
     try {
       filter_.setControl(control_);
       bool predicted = false;
@@ -429,6 +507,9 @@ class FusionCore {
           c.superseded += superseded;
           c.used += in.count() - superseded;
           aligner.accept(in);
+          // Only a value that reaches the filter keeps the input alive (not one that arrives
+          // late or fails the gate): a sensor publishing nothing usable times out.
+          if (!(in.newestArrival() <= c.lastAccepted)) c.lastAccepted = in.newestArrival();
         } else if (timedOut(i, end)) {
           ++c.timedOutPeriods;
           aligner.reset();  // a returning sensor starts a fresh history
@@ -460,16 +541,24 @@ class FusionCore {
       estimatorSeconds_ += step;
       if (step > maxStepSeconds_) maxStepSeconds_ = step;
       ++estimateCount_;
+      consecutiveFailures_ = 0;
     } catch (const estimation::EstimationError& e) {
-      // The filter rejected the step and kept its belief; a numerical failure is not
-      // recoverable by waiting, so the filter restarts from its initial belief.
+      // The filter rejected the step and kept its belief, which stays the estimate. A fault
+      // that persists for maxConsecutiveFailures periods is not mended by waiting: only then
+      // does the filter restart from its initial belief.
       ++estimationFailures_;
       lastFailure_ = e.what();
-      restartFilter();
+      failed = true;
+      if (++consecutiveFailures_ >= options_.maxConsecutiveFailures) {
+        restartFilter();
+        ++filterResets_;
+        consecutiveFailures_ = 0;
+        reset = true;
+      }
     }
     slot.clear();
     slot.index = k + open_.size();
-    fillEstimate(end, present, substituted);
+    fillEstimate(end, present, substituted, failed, reset);
     schedule_.advance();
   }
 
@@ -485,8 +574,11 @@ class FusionCore {
              static_cast<int>(measured_.availableCount()));
   }
 
-  void fillEstimate(double time, Index present, Index substituted) {
+  void fillEstimate(double time, Index present, Index substituted, bool failed = false,
+                    bool reset = false) {
     last_.time = time;
+    last_.stepFailed = failed;
+    last_.filterReset = reset;
     last_.state = filter_.state();
     last_.covariance = filter_.covariance();
     last_.presentInputs = present;
@@ -513,7 +605,11 @@ class FusionCore {
   double estimatorSeconds_ = 0.0;
   std::uint64_t estimateCount_ = 0;
   std::uint64_t clockResets_ = 0;
+  std::uint64_t skippedGaps_ = 0;
+  std::uint64_t skippedPeriods_ = 0;
   std::uint64_t estimationFailures_ = 0;
+  std::uint64_t consecutiveFailures_ = 0;
+  std::uint64_t filterResets_ = 0;
   std::uint64_t controlNonFinite_ = 0;
   estimation::NumericalRepairs repairsBeforeRestart_;  ///< of the filters before restarts
   std::string lastFailure_;
