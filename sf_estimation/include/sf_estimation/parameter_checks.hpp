@@ -2,7 +2,9 @@
 // the parameter and the expected size, so a bad configuration is refused at start.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -12,6 +14,11 @@
 #include "sf_estimation/types.hpp"
 
 namespace estimation {
+
+/// The largest magnitude of a covariance entry (Q, R, P0): beyond it a filter's products
+/// (P + Q, H P H^T, the Cholesky factor's squares) overflow to infinity and every step fails.
+/// 1e100 is far beyond any physical variance and still leaves 1e200 of headroom.
+constexpr double kMaxCovarianceEntry = 1e100;
 
 inline std::string sizeText(Index rows, Index cols) {
   return std::to_string(rows) + "x" + std::to_string(cols);
@@ -29,21 +36,30 @@ void requireSize(const std::string& method, const std::string& name,
   }
 }
 
-/// A covariance must be symmetric and positive semi-definite (positive definite when
-/// `strict`, e.g. the measurement noise R, whose inverse the filters use).
+/// A covariance must be finite with entries of magnitude at most kMaxCovarianceEntry,
+/// symmetric (to a relative tolerance) and positive semi-definite (positive definite when
+/// `strict`, e.g. the measurement noise R, whose inverse the Kalman-type filters use). Each
+/// refusal names the method and the matrix.
 template <class Derived>
 void requireCovariance(const std::string& method, const std::string& name,
                        const Eigen::MatrixBase<Derived>& value, Index size, bool strict) {
   requireSize(method, name, value, size, size);
   if (size == 0) return;  // maxCoeff() of an empty matrix is undefined
-  const double scale = std::max(1.0, value.cwiseAbs().maxCoeff());
+  const double largest = value.cwiseAbs().maxCoeff();
+  if (largest > kMaxCovarianceEntry) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", largest);
+    throw ParameterError(method + ": parameter '" + name + "' has an entry of magnitude " + text +
+                         ", more than the maximum 1e100 (the filter's products would overflow)");
+  }
+  const double scale = std::max(1.0, largest);
   if (!value.isApprox(value.transpose(), 1e-9) &&
       (value - value.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) {
     throw ParameterError(method + ": parameter '" + name + "' must be symmetric");
   }
   Eigen::LDLT<Eigen::MatrixXd> ldlt(value.eval());
   const Eigen::VectorXd d = ldlt.vectorD();
-  if (ldlt.info() != Eigen::Success || d.minCoeff() < -1e-12 * scale) {
+  if (ldlt.info() != Eigen::Success || !d.allFinite() || d.minCoeff() < -1e-12 * scale) {
     throw ParameterError(method + ": parameter '" + name + "' must be positive semi-definite");
   }
   if (strict && d.minCoeff() <= 0.0) {
