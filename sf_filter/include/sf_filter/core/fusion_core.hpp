@@ -93,8 +93,8 @@ class FusionCore {
   /// 1e-6 meant as ms, 50 meant as ms, and would load a core or never estimate).
   static constexpr double kMinPeriod = 1e-4;
   static constexpr double kMaxPeriod = 3600.0;
-  /// Upper bound of Options::maxCatchUpPeriods.
-  static constexpr std::uint64_t kMaxCatchUpLimit = 1000000;
+  /// Upper bound of Options::maxCatchUpPeriods: one advanceTo() never estimates more periods.
+  static constexpr std::uint64_t kMaxCatchUpLimit = 100000;
 
   struct Options {
     double period = 0.1;  ///< estimation period [s], kMinPeriod .. kMaxPeriod
