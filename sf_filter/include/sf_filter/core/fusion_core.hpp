@@ -30,7 +30,8 @@
 // when the value's period is estimated, to the value's arrival). The normalised
 // innovation squared of each period (nis_window.hpp) tells whether the filter is consistent.
 // A step the estimator rejects leaves the filter unchanged (the library's guarantee): the
-// period's estimate is the last good one, flagged and counted; only
+// period's estimate is the last good one (a Kalman-type filter's covariance inflated by Q),
+// flagged and counted; only
 // Options::maxConsecutiveFailures rejected steps in a row restart the filter from its initial
 // belief (filterResets()).
 #pragma once
@@ -41,6 +42,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -59,6 +61,17 @@
 namespace sf_filter {
 
 using estimation::Index;
+
+/// Whether the filter exposes its process noise Q and a way to replace its belief (the
+/// Kalman-type filters: setBelief, processNoise), so that a rejected step can add Q.
+template <class F, class = void>
+struct CanInflateByProcessNoise : std::false_type {};
+template <class F>
+struct CanInflateByProcessNoise<
+    F, std::void_t<decltype(std::declval<F&>().setBelief(
+           std::declval<const F&>().state(),
+           std::declval<const F&>().covariance() + std::declval<const F&>().processNoise()))>>
+    : std::true_type {};
 
 /// What advanceTo() observed about the clock.
 enum class ClockEvent { Normal, Started, JumpedBackwards, SkippedGap };
@@ -81,8 +94,8 @@ class FusionCore {
     Index presentInputs = 0;      ///< inputs with a measured value (not gated) in the period
     Index substitutedInputs = 0;  ///< inputs given a HOLD or FILL substitute
     /// The estimator rejected this period's step: state and covariance are the last good
-    /// estimate (the filter is unchanged by a rejected step), or the initial belief when
-    /// `filterReset` is set too.
+    /// estimate (the filter is unchanged by a rejected step; a Kalman-type filter's covariance
+    /// is inflated by Q), or the initial belief when `filterReset` is set too.
     bool stepFailed = false;
     /// This period's failure was the Options::maxConsecutiveFailures-th in a row: the filter
     /// restarted from its initial belief, which state and covariance are.
@@ -114,9 +127,11 @@ class FusionCore {
     /// measurement prediction per period when no gate or FILL needs it anyway.
     std::size_t nisWindow = 0;
     /// A step the estimator rejects (EstimationError) leaves the filter as it was: the period's
-    /// estimate is the last good one, flagged Estimate::stepFailed. Only after this many
-    /// rejected steps in a row does the filter restart from its initial belief (a fault that
-    /// waiting does not mend); counted by filterResets(). At least 1 (1: restart at once).
+    /// estimate is the last good one, flagged Estimate::stepFailed (for the Kalman-type
+    /// filters with its covariance inflated by Q: the period passed without a time update). Only
+    /// after this many rejected steps in a row does the filter restart from its initial belief (a
+    /// fault that waiting does not mend); counted by filterResets(). At least 1 (1: restart at
+    /// once).
     std::uint64_t maxConsecutiveFailures = 10;
   };
 
@@ -554,12 +569,27 @@ class FusionCore {
         ++filterResets_;
         consecutiveFailures_ = 0;
         reset = true;
+      } else {
+        inflateByProcessNoise();
       }
     }
     slot.clear();
     slot.index = k + open_.size();
     fillEstimate(end, present, substituted, failed, reset);
     schedule_.advance();
+  }
+
+  /// After a rejected step: the period passed without a time update, so a Kalman-type
+  /// filter's covariance grows by Q (its state is kept). Other filters keep their belief as it
+  /// is. Only on the failure path (the belief check may allocate); a sum the filter refuses
+  /// (beyond the maximum covariance entry) leaves the belief unchanged.
+  void inflateByProcessNoise() {
+    if constexpr (CanInflateByProcessNoise<Filter>::value) {
+      try {
+        filter_.setBelief(filter_.state(), filter_.covariance() + filter_.processNoise());
+      } catch (const estimation::EstimationError&) {
+      }
+    }
   }
 
   /// The NIS of the period's measured (not substituted) entries, into the window. Throws
