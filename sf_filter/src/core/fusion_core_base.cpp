@@ -115,7 +115,9 @@ Rejection FusionCoreBase::addMeasurement(Index input, double now, double value,
     ++c.nonFinite;
     return Rejection::NonFinite;
   }
-  if (variance && !(std::isfinite(*variance) && *variance > 0.0)) {
+  // Beyond kMaxVariance a variance says "no information" and the period's sum of variances
+  // could overflow: refused like a non-finite one.
+  if (variance && !(*variance > 0.0 && *variance <= kMaxVariance)) {
     ++c.badVariance;
     return Rejection::BadVariance;
   }
@@ -139,7 +141,6 @@ Rejection FusionCoreBase::addMeasurement(Index input, double now, double value,
     }
     c.lastStamp = stamp;
   }
-  c.lastAccepted = now;
   const bool byStamp = o.alignByStamp && !std::isnan(stamp);
   const double time = byStamp ? stamp : now;
   bool estimated = false, beyond = false;
@@ -149,7 +150,7 @@ Rejection FusionCoreBase::addMeasurement(Index input, double now, double value,
     return Rejection::TooLate;
   }
   if (byStamp && beyond) ++c.aheadOfClock;
-  ring_->slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time);
+  ring_->slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time, now);
   return Rejection::None;
 }
 
@@ -180,11 +181,18 @@ FusionCoreBase::ClockStep FusionCoreBase::readClock(double now) {
     return {ClockEvent::JumpedBackwards, 0};
   }
   const std::uint64_t due = schedule.periodsDue(now - lag);
-  if (due > options_.maxCatchUpPeriods) return {ClockEvent::SkippedGap, 1};
-  return {ClockEvent::Normal, due};
+  return {due > options_.maxCatchUpPeriods ? ClockEvent::SkippedGap : ClockEvent::Normal, due};
 }
 
-void FusionCoreBase::skipGap() {
+bool FusionCoreBase::scheduleStarted() const { return ring_->schedule.started(); }
+
+std::uint64_t FusionCoreBase::periodsDue(double now) const {
+  return ring_->schedule.periodsDue(now - options_.maxMeasurementLag);
+}
+
+void FusionCoreBase::skipPeriods(std::uint64_t due) {
+  skippedPeriods_ += due - 1;
+  ++skippedGaps_;
   ring_->schedule.skipTo(clock_ - options_.maxMeasurementLag);
   openWindow();
 }
@@ -217,6 +225,9 @@ void FusionCoreBase::alignInputs(Prediction& prediction) {
       c.superseded += superseded;
       c.used += in.count() - superseded;
       aligner.accept(in);
+      // Only a value that reaches the filter keeps the input alive (not one that arrives
+      // late or fails the gate): a sensor publishing nothing usable times out.
+      if (!(in.newestArrival() <= c.lastAccepted)) c.lastAccepted = in.newestArrival();
     } else if (timedOut(i, end)) {
       ++c.timedOutPeriods;
       aligner.reset();  // a returning sensor starts a fresh history
@@ -248,11 +259,16 @@ void FusionCoreBase::recordStep(double seconds) {
   estimatorSeconds_ += seconds;
   if (seconds > maxStepSeconds_) maxStepSeconds_ = seconds;
   ++estimateCount_;
+  consecutiveFailures_ = 0;
 }
 
-void FusionCoreBase::recordFailure(const std::string& what) {
+bool FusionCoreBase::recordFailure(const std::string& what) {
   ++estimationFailures_;
   lastFailure_ = what;
+  if (++consecutiveFailures_ < options_.maxConsecutiveFailures) return false;
+  ++filterResets_;
+  consecutiveFailures_ = 0;
+  return true;
 }
 
 void FusionCoreBase::clearInputs() {
@@ -265,12 +281,24 @@ void FusionCoreBase::clearInputs() {
   control_.setZero();
   nis_.clear();
   present_ = substituted_ = 0;
+  consecutiveFailures_ = 0;
 }
 
 const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Index inputs,
                                                  bool canPredict) {
-  if (!(o.period > 0.0) || !std::isfinite(o.period)) {
-    throw estimation::ParameterError("estimation period must be positive and finite");
+  if (!(o.period >= kMinPeriod && o.period <= kMaxPeriod)) {
+    throw estimation::ParameterError(
+        "estimation period must be from 0.1 ms to 1 h (1e-4 .. 3600 s), got " +
+        std::to_string(o.period) + " s");
+  }
+  if (o.maxCatchUpPeriods < 1 || o.maxCatchUpPeriods > kMaxCatchUpLimit) {
+    throw estimation::ParameterError("maximum catch-up periods must be from 1 to " +
+                                     std::to_string(kMaxCatchUpLimit) + ", got " +
+                                     std::to_string(o.maxCatchUpPeriods));
+  }
+  if (o.maxConsecutiveFailures < 1) {
+    throw estimation::ParameterError(
+        "maximum consecutive failures must be at least 1 (1: restart at the first failure)");
   }
   if (!(o.maxMeasurementLag >= 0.0) || !std::isfinite(o.maxMeasurementLag)) {
     throw estimation::ParameterError("maximum measurement lag must be finite and >= 0");

@@ -105,7 +105,8 @@
 //   INPUT_GATE                  ((i)(threshold)) per gated input: chi-square threshold > 0 on
 //                               the squared Mahalanobis distance.          Default no gate.
 //   ALIGN_BY_STAMP              (i)(j)...: inputs aligned by header.stamp (stamped types).
-//   MAX_MEASUREMENT_LAG         ms >= 0 a period waits for stamped values.  Default 0.
+//   MAX_MEASUREMENT_LAG         ms >= 0 a period waits for stamped values.  Default one
+//                               ESTIMATION_PERIOD with ALIGN_BY_STAMP, else 0.
 //   INPUT_TIMEOUT               ((i)(ms)) per input with a sensor timeout, ms > 0: with no
 //                               value accepted for longer the input is timed out (missing,
 //                               no HOLD/FILL substitute, diagnostic WARN). Default none.

@@ -20,17 +20,26 @@
 // are taken by arrival: period k uses the latest control received before its end.
 //
 // Faults (doc/reliability.md): a value is checked on arrival - finite, its variance finite and
-// positive, inside the input's plausible range, its stamp not older than, equal to or too far
-// ahead of the previous one / the clock - and dropped and counted (InputCounters) otherwise,
-// so it never reaches the filter. An input with a timeout that has accepted no value for
-// longer is timed out: missing every period, and a HOLD or FILL input then substitutes
-// nothing and forgets its history; the first value back is used as usual. The normalised
+// positive and at most kMaxVariance (1e100), inside the input's plausible range, its stamp not
+// older than, equal to or too far ahead of the previous one / the clock - and dropped and counted
+// (InputCounters) otherwise, so it never reaches the filter. An input with a timeout that has
+// accepted no value for longer is timed out: missing every period, and a HOLD or FILL input then
+// substitutes nothing and forgets its history; the first value back is used as usual. Accepted
+// means used: only a value that reaches the filter keeps its input alive - one dropped on arrival,
+// too late for its period or refused by the gate does not (InputCounters::lastAccepted is set
+// when the value's period is estimated, to the value's arrival). The normalised
 // innovation squared of each period (nis_window.hpp) tells whether the filter is consistent.
+// A step the estimator rejects leaves the filter unchanged (the library's guarantee): the
+// period's estimate is the last good one (a Kalman-type filter's covariance inflated by Q),
+// flagged and counted; only
+// Options::maxConsecutiveFailures rejected steps in a row restart the filter from its initial
+// belief (filterResets()).
 #pragma once
 
 #include <chrono>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include <sf_estimation/errors.hpp>
@@ -43,6 +52,17 @@
 #include "sf_filter/core/fusion_engine.hpp"
 
 namespace sf_filter {
+
+/// Whether the filter exposes its process noise Q and a way to replace its belief (the
+/// Kalman-type filters: setBelief, processNoise), so that a rejected step can add Q.
+template <class F, class = void>
+struct CanInflateByProcessNoise : std::false_type {};
+template <class F>
+struct CanInflateByProcessNoise<
+    F, std::void_t<decltype(std::declval<F&>().setBelief(
+           std::declval<const F&>().state(),
+           std::declval<const F&>().covariance() + std::declval<const F&>().processNoise()))>>
+    : std::true_type {};
 
 /// The fusion core of one filter type: FusionCoreBase (compiled once) does the scheduling,
 /// checks and alignment; this template adds only the filter and its fixed-size step.
@@ -61,6 +81,13 @@ class FusionCore : public FusionCoreBase {
     estimation::Matrix<N, N> covariance;
     Index presentInputs = 0;      ///< inputs with a measured value (not gated) in the period
     Index substitutedInputs = 0;  ///< inputs given a HOLD or FILL substitute
+    /// The estimator rejected this period's step: state and covariance are the last good
+    /// estimate (the filter is unchanged by a rejected step; a Kalman-type filter's covariance
+    /// is inflated by Q), or the initial belief when `filterReset` is set too.
+    bool stepFailed = false;
+    /// This period's failure was the Options::maxConsecutiveFailures-th in a row: the filter
+    /// restarted from its initial belief, which state and covariance are.
+    bool filterReset = false;
   };
 
   using Options = FusionCoreOptions;
@@ -83,12 +110,37 @@ class FusionCore : public FusionCoreBase {
   ClockEvent advanceTo(double now, OnEstimate&& onEstimate) {
     const ClockStep step = readClock(now);
     if (step.event == ClockEvent::JumpedBackwards) reset();
-    for (std::uint64_t k = 0; k < step.periods; ++k) {
+    if (step.event == ClockEvent::SkippedGap) {
+      estimatePeriod();
+      onEstimate(last_);
+      skipPeriods(step.due);
+      return step.event;
+    }
+    for (std::uint64_t k = 0; k < step.due && step.event == ClockEvent::Normal; ++k) {
       estimatePeriod();
       onEstimate(last_);
     }
-    if (step.event == ClockEvent::SkippedGap) skipGap();
     return step.event;
+  }
+
+  /// Crosses a forward gap to `now` at the cost of one period, whatever its length: estimates
+  /// the current period (with what it holds, a prediction if nothing), calls onEstimate once,
+  /// and moves the schedule on by whole periods (keeping the phase) so that now - lag lies in
+  /// the current one; the periods in between are not estimated (counted by skippedPeriods()).
+  /// advanceTo() does this for a jump of more than maxCatchUpPeriods periods; an adapter that
+  /// steps through a gap itself (the offline replay emulating a running clock) calls it for a
+  /// gap it must not step through, e.g. one of more than kMaxCatchUpLimit periods. Nothing
+  /// happens (Normal) when no period is due, or before the schedule started.
+  template <class OnEstimate>
+  ClockEvent skipGap(double now, OnEstimate&& onEstimate) {
+    if (!scheduleStarted()) return advanceTo(now, onEstimate);
+    const std::uint64_t due = periodsDue(now);
+    if (due == 0) return ClockEvent::Normal;
+    setClock(now);
+    estimatePeriod();
+    onEstimate(last_);
+    skipPeriods(due);
+    return ClockEvent::SkippedGap;
   }
 
   /// Back to the initial belief; pending values, the alignment histories and the control
@@ -143,6 +195,7 @@ class FusionCore : public FusionCoreBase {
   /// Aligns the current period's inputs, estimates, and moves the schedule on.
   void estimatePeriod() {
     const double end = periodEnd();
+    bool failed = false, restarted = false;
     beginPeriod();
     control_ = controls();
     try {
@@ -171,13 +224,32 @@ class FusionCore : public FusionCoreBase {
       filter_.estimate(measurement_);
       recordStep(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
     } catch (const estimation::EstimationError& e) {
-      // The filter rejected the step and kept its belief; a numerical failure is not
-      // recoverable by waiting, so the filter restarts from its initial belief.
-      recordFailure(e.what());
-      restartFilter();
+      // The filter rejected the step and kept its belief, which stays the estimate. A fault
+      // that persists for maxConsecutiveFailures periods is not mended by waiting: only then
+      // does the filter restart from its initial belief.
+      failed = true;
+      restarted = recordFailure(e.what());
+      if (restarted) {
+        restartFilter();
+      } else {
+        inflateByProcessNoise();
+      }
     }
     finishPeriod();
-    fillEstimate(end);
+    fillEstimate(end, failed, restarted);
+  }
+
+  /// After a rejected step: the period passed without a time update, so a Kalman-type
+  /// filter's covariance grows by Q (its state is kept). Other filters keep their belief as it
+  /// is. Only on the failure path (the belief check may allocate); a sum the filter refuses
+  /// (beyond the maximum covariance entry) leaves the belief unchanged.
+  void inflateByProcessNoise() {
+    if constexpr (CanInflateByProcessNoise<Filter>::value) {
+      try {
+        filter_.setBelief(filter_.state(), filter_.covariance() + filter_.processNoise());
+      } catch (const estimation::EstimationError&) {
+      }
+    }
   }
 
   /// The NIS of the period's measured (not substituted) entries, into the window. Throws
@@ -192,8 +264,10 @@ class FusionCore : public FusionCoreBase {
                            static_cast<int>(measured_.availableCount()));
   }
 
-  void fillEstimate(double time) {
+  void fillEstimate(double time, bool failed = false, bool reset = false) {
     last_.time = time;
+    last_.stepFailed = failed;
+    last_.filterReset = reset;
     last_.state = filter_.state();
     last_.covariance = filter_.covariance();
     last_.presentInputs = presentInputs();

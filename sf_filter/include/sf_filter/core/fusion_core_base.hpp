@@ -26,6 +26,12 @@ namespace sf_filter {
 
 class FusionCoreBase {
  public:
+  static constexpr double kMinPeriod = FusionCoreOptions::kMinPeriod;
+  static constexpr double kMaxPeriod = FusionCoreOptions::kMaxPeriod;
+  static constexpr std::uint64_t kMaxCatchUpLimit = FusionCoreOptions::kMaxCatchUpLimit;
+  /// The largest variance a measurement may carry (sf_filter::kMaxVariance, 1e100).
+  static constexpr double kMaxVariance = sf_filter::kMaxVariance;
+
   /// A measurement of input `input` received at `now`, with the variance the message carried
   /// (if any). `stamp` (NaN when the message has no header) must not run backwards per input;
   /// it places the value in its period if the input is aligned by stamp.
@@ -42,7 +48,8 @@ class FusionCoreBase {
   /// The input's options (the defaults when Options::inputs is empty).
   const InputOptions& inputOptions(Index input) const;
   Index inputCount() const { return static_cast<Index>(counters_.size()); }
-  /// Whether input `input` has a timeout and accepted no value for longer than it at time t
+  /// Whether input `input` has a timeout and used no value (one that reached the filter: not
+  /// dropped, late or gated) arriving later than `timeout` before time t
   /// (counted from the schedule's start, or the last reset, if it never did).
   bool timedOut(Index input, double t) const;
   /// The same at the clock's last reading.
@@ -57,7 +64,20 @@ class FusionCoreBase {
   /// Periods whose NIS could not be computed (innovation covariance not positive definite).
   std::uint64_t nisFailures() const { return nisFailures_; }
   std::uint64_t clockResets() const { return clockResets_; }
+  /// Forward gaps crossed with one estimate (advanceTo() or skipGap()), and the periods they
+  /// skipped without estimating.
+  std::uint64_t skippedGaps() const { return skippedGaps_; }
+  std::uint64_t skippedPeriods() const { return skippedPeriods_; }
+  /// Steps the estimator rejected (each period's estimate then is the last good one).
   std::uint64_t estimationFailures() const { return estimationFailures_; }
+  /// Rejected steps since the last successful one.
+  std::uint64_t consecutiveFailures() const { return consecutiveFailures_; }
+  /// Restarts of the filter from its initial belief after Options::maxConsecutiveFailures
+  /// rejected steps in a row (not counting reset() and clock jumps backwards).
+  std::uint64_t filterResets() const { return filterResets_; }
+  /// Periods that have ended by `now` (minus the lag) and are not estimated yet: what
+  /// advanceTo(now) would estimate, or skip when more than maxCatchUpPeriods().
+  std::uint64_t periodsDue(double now) const;
   const std::string& lastFailure() const { return lastFailure_; }
   std::uint64_t controlNonFinite() const { return controlNonFinite_; }
   double period() const { return options_.period; }
@@ -97,15 +117,18 @@ class FusionCoreBase {
   };
 
   /// What advanceTo() must do after the clock reading `now`: nothing (Started), reset the
-  /// filter (JumpedBackwards: the schedule has restarted), estimate `periods` periods
-  /// (Normal), or estimate one and then skipGap() (SkippedGap).
+  /// filter (JumpedBackwards: the schedule has restarted), estimate `due` periods (Normal), or
+  /// estimate one and then skipPeriods(due) (SkippedGap).
   struct ClockStep {
     ClockEvent event = ClockEvent::Normal;
-    std::uint64_t periods = 0;
+    std::uint64_t due = 0;
   };
   ClockStep readClock(double now);
-  /// After the one estimate of a SkippedGap: the schedule moves on to `now`.
-  void skipGap();
+  bool scheduleStarted() const;
+  void setClock(double now) { clock_ = now; }
+  /// After the one estimate that crosses a gap of `due` periods to the clock's reading: the
+  /// schedule moves on by whole periods so that the reading lies in the current one.
+  void skipPeriods(std::uint64_t due);
 
   /// Starts the current period: the controls received before its end come into force.
   void beginPeriod();
@@ -125,13 +148,17 @@ class FusionCoreBase {
 
   /// Statistics of the period's step.
   void recordStep(double seconds);
-  void recordFailure(const std::string& what);
+  /// Counts a rejected step; true when it is the maxConsecutiveFailures-th in a row, which
+  /// restarts the filter (counted as a filter reset).
+  bool recordFailure(const std::string& what);
   void addNis(double nis, int degreesOfFreedom) { nis_.add(nis, degreesOfFreedom); }
   void countNisFailure() { ++nisFailures_; }
   bool nisWanted() const { return nis_.enabled() && present_ > 0; }
 
   /// Discards pending values, the alignment histories, the controls and the NIS window.
   void clearInputs();
+  /// The options as checked.
+  const FusionCoreOptions& options() const { return options_; }
 
  private:
   struct Ring;  ///< the open periods and the aligners (src/core/fusion_core_base.cpp)
@@ -155,7 +182,11 @@ class FusionCoreBase {
   std::uint64_t estimateCount_ = 0;
   std::uint64_t nisFailures_ = 0;
   std::uint64_t clockResets_ = 0;
+  std::uint64_t skippedGaps_ = 0;
+  std::uint64_t skippedPeriods_ = 0;
   std::uint64_t estimationFailures_ = 0;
+  std::uint64_t consecutiveFailures_ = 0;
+  std::uint64_t filterResets_ = 0;
   std::uint64_t controlNonFinite_ = 0;
   std::string lastFailure_;
 };

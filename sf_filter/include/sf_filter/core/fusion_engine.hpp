@@ -32,6 +32,8 @@ struct EstimateRef {
   Eigen::Map<const Eigen::MatrixXd> covariance;
   Index presentInputs;      ///< inputs with a measured value (not gated) in the period
   Index substitutedInputs;  ///< inputs given a HOLD or FILL substitute
+  bool stepFailed;          ///< the step was rejected: the last good estimate (fusion_core.hpp)
+  bool filterReset;         ///< ... and the filter restarted from its initial belief
 };
 
 /// A non-owning, allocation-free callback for the estimates of advanceTo().
@@ -69,6 +71,12 @@ class FusionEngine {
   virtual std::uint64_t nisFailures() const = 0;
   virtual std::uint64_t clockResets() const = 0;
   virtual std::uint64_t estimationFailures() const = 0;
+  virtual std::uint64_t filterResets() const = 0;
+  virtual std::uint64_t skippedGaps() const = 0;
+  virtual std::uint64_t skippedPeriods() const = 0;
+  virtual std::uint64_t periodsDue(double now) const = 0;
+  /// FusionCore::skipGap: crosses a forward gap to `now` with one estimate.
+  virtual ClockEvent skipGap(double now, EstimateCallback onEstimate) = 0;
   virtual const std::string& lastFailure() const = 0;
   virtual std::uint64_t controlNonFinite() const = 0;
   virtual estimation::NumericalRepairs numericalRepairs() const = 0;

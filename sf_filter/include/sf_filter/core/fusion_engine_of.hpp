@@ -23,6 +23,9 @@ class FusionEngineOf final : public FusionEngine {
     return core_.advanceTo(now,
                            [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
   }
+  ClockEvent skipGap(double now, EstimateCallback onEstimate) override {
+    return core_.skipGap(now, [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
+  }
   Rejection addMeasurement(Index input, double now, double value, std::optional<double> variance,
                            double stamp) override {
     return core_.addMeasurement(input, now, value, variance, stamp);
@@ -45,6 +48,10 @@ class FusionEngineOf final : public FusionEngine {
   std::uint64_t nisFailures() const override { return core_.nisFailures(); }
   std::uint64_t clockResets() const override { return core_.clockResets(); }
   std::uint64_t estimationFailures() const override { return core_.estimationFailures(); }
+  std::uint64_t filterResets() const override { return core_.filterResets(); }
+  std::uint64_t skippedGaps() const override { return core_.skippedGaps(); }
+  std::uint64_t skippedPeriods() const override { return core_.skippedPeriods(); }
+  std::uint64_t periodsDue(double now) const override { return core_.periodsDue(now); }
   const std::string& lastFailure() const override { return core_.lastFailure(); }
   std::uint64_t controlNonFinite() const override { return core_.controlNonFinite(); }
   estimation::NumericalRepairs numericalRepairs() const override {
@@ -71,7 +78,9 @@ class FusionEngineOf final : public FusionEngine {
                        Eigen::Map<const Eigen::VectorXd>(e.state.data(), n),
                        Eigen::Map<const Eigen::MatrixXd>(e.covariance.data(), n, n),
                        e.presentInputs,
-                       e.substitutedInputs};
+                       e.substitutedInputs,
+                       e.stepFailed,
+                       e.filterReset};
   }
 
   Core core_;

@@ -150,7 +150,12 @@ class FusionNode final : public MessageSink {
       ROS_WARN("time jumped forward to %.3f s: skipped the missed periods", now);
     }
     if (core_.estimationFailures() != failures) {
-      ROS_ERROR_THROTTLE(5.0, "estimation failed, filter reset: %s", core_.lastFailure().c_str());
+      ROS_ERROR_THROTTLE(5.0,
+                         "estimation step rejected (%llu so far, %llu filter resets): %s; the "
+                         "last good estimate is kept",
+                         static_cast<unsigned long long>(core_.estimationFailures()),
+                         static_cast<unsigned long long>(core_.filterResets()),
+                         core_.lastFailure().c_str());
     }
     reportTimeouts();
     std::uint64_t gated = 0;
