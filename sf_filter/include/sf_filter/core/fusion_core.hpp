@@ -152,6 +152,15 @@ class FusionCore : public FusionCoreBase {
     fillEstimate(last_.time);
   }
 
+  /// Replaces the filter's belief (set_pose); the last estimate shows it at once. Only for
+  /// filters with setBelief (the Kalman filter family).
+  template <class State, class Covariance>
+  void setBelief(const State& x, const Covariance& P) {
+    filter_.setBelief(x, P);
+    last_.state = filter_.state();
+    last_.covariance = filter_.covariance();
+  }
+
   const Estimate& lastEstimate() const { return last_; }
   const Filter& filter() const { return filter_; }
   /// What the filter repaired instead of failing (numerical_repairs.hpp), since the core was
