@@ -167,7 +167,7 @@ def main(argv=None):
         cells = ["`%s`" % label if label.startswith("sf_") else label,
                  "%.2f" % res["rmse"], "%.2f" % res["max"], "%.2f" % res["final"]]
         if x:
-            cells += ["%.0f / %.1f" % (1000 * x["jump_max"], 1000 * x["jump_mean"]),
+            cells += ["%.1f / %.2f" % (1000 * x["jump_max"], 1000 * x["jump_mean"]),
                       "%.1f" % x["heading_std"], "%+.4f" % x["bias"], "%.1f" % x["us"]]
         else:
             cells += ["-", "-", "-", "-"]
