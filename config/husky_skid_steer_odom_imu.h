@@ -1,5 +1,6 @@
 // config/skid_steer_odom_imu.h pointed at the real Husky recording bags/husky_gps.bag
-// (doc/real_robot.md): only the topics, the period and the IMU frame changed, as a user would change them.
+// (doc/real_robot.md): only the topics, the period and the IMU frame changed, as a user
+// would change them.
 // The wheel odometry is /encoder at 10 Hz and the IMU /imu/data at 8.3 Hz, so the period is
 // the odometry's 100 ms. The IMU frame: the bag's /tf says base_link -> imu_link is the
 // identity (the IMU is mounted level, its +z is the base's yaw axis, doc/real_robot.md), so
