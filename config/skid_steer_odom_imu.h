@@ -32,10 +32,10 @@
 //   0.025 rad/s alone, 0.014 at both, 0.63 at 0.05 m/s or 0.1 rad/s, 1.0 at twice that).
 //   s is white with a variance of 100 (rad/s)^2 per period: while the base moves the
 //   wheels' yaw rate has a variance of about 100 and tells the filter nothing (the slip
-//   goes into s, which is redrawn every period, not into b_g); at standstill it is the precise observation omega = 0 (R 4e-4),
-//   and the gyro's reading is then its bias. This is the "variance that is huge unless
-//   the wheels report standstill", written as an expression of the observation model
-//   (the configuration has no state-dependent R).
+//   goes into s, which is redrawn every period, not into b_g); at standstill it is the
+//   precise observation omega = 0 (R 4e-4), and the gyro's reading is then its bias.
+//   This is the "variance that is huge unless the wheels report standstill", written as
+//   an expression of the observation model (the configuration has no state-dependent R).
 // - The gyro bias is therefore learned only while the wheels report standstill: slip is
 //   never taken for bias. It starts at P0 = (0.005 rad/s)^2: the header assumes a gyro
 //   whose turn-on bias was removed by its driver or by a few seconds at rest, because a
