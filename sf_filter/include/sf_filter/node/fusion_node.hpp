@@ -200,7 +200,8 @@ class FusionNode final : public MessageSink {
     }
     state_.publish(makeStateEstimate(e, description_.method, frameId_));
     if (!description_.pose) return;
-    const nav_msgs::Odometry odom = makeOdometry(e, *description_.pose, frameId_, childFrameId_);
+    const nav_msgs::Odometry odom =
+        makeOdometry(e, *description_.pose, frameId_, childFrameId_, description_.twist);
     odometry_.publish(odom);
     if (publishTf_) {
       geometry_msgs::TransformStamped t;
