@@ -97,7 +97,10 @@ TEST(DerivedInputs, Description) {
   EXPECT_EQ(d.description.inputs[0], "imu/data orientation yaw");
   EXPECT_EQ(d.description.inputs[1], "odom pose.pose x differential");
   EXPECT_EQ(d.description.inputs[3], "odom pose.pose.orientation yaw differential");
-  EXPECT_EQ(d.topics.size(), 2u);  // one reader per topic
+  EXPECT_EQ(d.topics.size(), 2u);                          // one reader per topic
+  ASSERT_TRUE(d.description.pose && d.description.twist);  // POSE_OUT, TWIST_OUT
+  EXPECT_EQ((*d.description.twist)[0], 3);
+  EXPECT_EQ((*d.description.twist)[1], 4);
   EXPECT_TRUE(sf_config::kAngleInputs[0] && sf_config::kAngleInputs[3]);
   EXPECT_FALSE(sf_config::kAngleInputs[1] || sf_config::kAngleInputs[2]);
 }

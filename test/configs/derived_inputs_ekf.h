@@ -2,7 +2,7 @@
 // orientation (absolute, its variance from orientation_covariance) and an odometry's pose
 // (differential: the forward and sideways steps and the turn since the previous message, in
 // the robot's frame, their variances from pose.covariance) - DERIVED_INPUTS and
-// INPUT_COVARIANCE.
+// INPUT_COVARIANCE; its Odometry output carries the twist (v, omega) from the state (TWIST_OUT).
 //   state x = (x, y, yaw, v, omega); the odometry publishes at the estimation period (100 ms),
 //   so its differential steps are observed as v T, 0 and omega T.
 #include <nav_msgs/Odometry.h>
@@ -53,3 +53,4 @@
   ((3)(pose.covariance)(35))
 #define TOPICS_OUT ((yaw)(2))((speed)(3))
 #define POSE_OUT (0)(1)(2)
+#define TWIST_OUT (3)(4)

@@ -122,6 +122,10 @@
 //                               ROLL PITCH YAW (angle inputs automatically), mode ABSOLUTE or
 //                               DIFFERENTIAL (change since the topic's previous message, in the
 //                               previous pose's frame; derived_inputs.hpp).  Default none.
+//   TWIST_OUT                   (v index)(omega index): the published Odometry's twist and its
+//                               covariance from the state (requires POSE_OUT;
+//                               twist_output.hpp).                          Default: unknown
+//                               twist (zero, variance 1e6).
 //   INPUT_COVARIANCE            ((i)(covariance array member)(entry)) per TOPICS_IN entry taking
 //                               its variance from the message's covariance array; "unknown"
 //                               arrays (all zero, -1 first) fall back to R (input_covariance.hpp).
@@ -263,4 +267,5 @@
 #include "sf_filter/config/detail/topics.hpp"
 #include "sf_filter/config/derived_inputs.hpp"
 #include "sf_filter/config/input_covariance.hpp"
+#include "sf_filter/config/twist_output.hpp"
 #endif

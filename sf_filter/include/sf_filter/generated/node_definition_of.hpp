@@ -254,6 +254,7 @@ inline NodeDefinition nodeDefinition() {
       std::array<int, 3>{BOOST_PP_SEQ_ELEM(0, POSE_OUT), BOOST_PP_SEQ_ELEM(1, POSE_OUT),
                          BOOST_PP_SEQ_ELEM(2, POSE_OUT)};
 #endif
+  if constexpr (sf_config::kHasTwistOut) description.twist = sf_config::kTwistOut;
   d.capabilities.canPredict = estimation::HasMeasurementPrediction<Filter>::value;
   d.capabilities.hasStamp.assign(sf_config::kInputHasStamp.begin(),
                                  sf_config::kInputHasStamp.end());
