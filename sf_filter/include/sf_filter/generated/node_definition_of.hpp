@@ -106,6 +106,9 @@ std::optional<double> inputVariance(const Message& msg, MessageSink& sink) {
 template <class In, class Message>
 void readInput(const Message& msg, MessageSink& sink, double now) {
   using Derivation = sf_config::Derivation<In::index>;
+  static_assert(!(Derivation::derived && sf_config::FrameAlignment<In::index>::aligned),
+                "DERIVED_INPUTS and FRAME_ALIGNED_INPUTS: an input is listed in both; a derived "
+                "input reads a quaternion or pose member, which is not rotated");
   const std::optional<double> variance = inputVariance<In>(msg, sink);
   const double stamp = stampOf(msg);
   if constexpr (Derivation::derived) {
