@@ -265,6 +265,8 @@
 #include "sf_filter/config/detail/model.hpp"
 #include "sf_filter/config/detail/parameters.hpp"
 #include "sf_filter/config/detail/topics.hpp"
+
+// After the inputs (they read Input<i>::Field and the message types).
 #include "sf_filter/config/derived_inputs.hpp"
 #include "sf_filter/config/input_covariance.hpp"
 #include "sf_filter/config/twist_output.hpp"
