@@ -209,8 +209,8 @@ class FusionNode final : public MessageSink {
     }
     ++setPoses_;
     ROS_INFO("%s: pose set to x %.3f, y %.3f, yaw %.3f (variances %.3g, %.3g, %.3g); %llu so far",
-             topic, pose[0], pose[1], pose[2], covariance(0, 0), covariance(1, 1),
-             covariance(2, 2), static_cast<unsigned long long>(setPoses_));
+             topic, pose[0], pose[1], pose[2], covariance(0, 0), covariance(1, 1), covariance(2, 2),
+             static_cast<unsigned long long>(setPoses_));
   }
 
   /// Logs an input's timing out and its return once each.
