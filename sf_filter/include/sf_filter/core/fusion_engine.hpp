@@ -6,6 +6,7 @@
 // through Eigen::Map views of the core's own storage.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -59,6 +60,13 @@ class FusionEngine {
                                    std::optional<double> variance, double stamp) = 0;
   virtual Rejection addControl(Index control, double value) = 0;
   virtual void reset() = 0;
+  /// Replaces the pose part of the current belief (set_pose, initialpose): the state
+  /// variables `indices` (x, y, heading) get `xyYaw`, their 3 x 3 covariance block
+  /// `covariance`, and their correlations with the other state variables become 0. False
+  /// (belief unchanged) when the filter cannot be re-initialised (particle filter, averaging
+  /// methods); throws estimation::ParameterError for a covariance that is not a covariance.
+  virtual bool setPose(const std::array<int, 3>& indices, const std::array<double, 3>& xyYaw,
+                       const Eigen::Matrix3d& covariance) = 0;
 
   virtual EstimateRef lastEstimate() const = 0;
   virtual const InputCounters& counters(Index input) const = 0;

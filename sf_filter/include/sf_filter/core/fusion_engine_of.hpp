@@ -3,13 +3,23 @@
 // unit of a configuration header; everything here forwards to FusionCore<Filter>.
 #pragma once
 
+#include <array>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
 
 namespace sf_filter {
+
+/// Whether Filter can replace its belief (the Kalman filter family: setBelief(x, P)).
+template <class Filter, class = void>
+struct HasSetBelief : std::false_type {};
+template <class Filter>
+struct HasSetBelief<Filter, std::void_t<decltype(std::declval<Filter&>().setBelief(
+                                std::declval<const Filter&>().state(),
+                                std::declval<const Filter&>().covariance()))>> : std::true_type {};
 
 template <class Filter>
 class FusionEngineOf final : public FusionEngine {
@@ -34,6 +44,32 @@ class FusionEngineOf final : public FusionEngine {
     return core_.addControl(control, value);
   }
   void reset() override { core_.reset(); }
+  bool setPose(const std::array<int, 3>& indices, const std::array<double, 3>& xyYaw,
+               const Eigen::Matrix3d& covariance) override {
+    if constexpr (HasSetBelief<Filter>::value) {
+      const Filter& filter = core_.filter();
+      auto x = filter.state();
+      auto P = filter.covariance();
+      for (int r = 0; r < 3; ++r) {
+        x(indices[r]) = xyYaw[static_cast<std::size_t>(r)];
+        P.row(indices[r]).setZero();
+        P.col(indices[r]).setZero();
+      }
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) P(indices[r], indices[c]) = covariance(r, c);
+      }
+      // FusionCore hands out its filter const only; the filter itself is not const (a member
+      // of core_). Until FusionCore offers setBelief itself, the belief is replaced here; the
+      // core's next period starts from it (its last estimate is the old one until then).
+      const_cast<Filter&>(filter).setBelief(x, P);
+      return true;
+    } else {
+      static_cast<void>(indices);
+      static_cast<void>(xyYaw);
+      static_cast<void>(covariance);
+      return false;
+    }
+  }
 
   EstimateRef lastEstimate() const override { return view(core_.lastEstimate()); }
   const InputCounters& counters(Index input) const override { return core_.counters(input); }
