@@ -58,10 +58,7 @@ class FusionEngineOf final : public FusionEngine {
       for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) P(indices[r], indices[c]) = covariance(r, c);
       }
-      // FusionCore hands out its filter const only; the filter itself is not const (a member
-      // of core_). Until FusionCore offers setBelief itself, the belief is replaced here; the
-      // core's next period starts from it (its last estimate is the old one until then).
-      const_cast<Filter&>(filter).setBelief(x, P);
+      core_.setBelief(x, P);  // the next period starts from it; the last estimate shows it
       return true;
     } else {
       static_cast<void>(indices);
