@@ -69,7 +69,7 @@ void takeControls(const Slot& slot, Eigen::VectorXd& control) {
 FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, Index controls,
                                bool canPredict)
     : options_(checked(options, inputs, canPredict)),
-      ring_(std::make_unique<Ring>(options_.period)),
+      ring_(options_.period),
       counters_(static_cast<std::size_t>(inputs)),
       entries_(static_cast<std::size_t>(inputs)),
       control_(Eigen::VectorXd::Zero(controls)),
@@ -90,7 +90,14 @@ FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, I
   openWindow();
 }
 
-FusionCoreBase::~FusionCoreBase() = default;
+FusionCoreBase::RingPtr::RingPtr(double period) : ring_(std::make_unique<Ring>(period)) {}
+FusionCoreBase::RingPtr::RingPtr(const RingPtr& other)
+    : ring_(std::make_unique<Ring>(*other.ring_)) {}
+FusionCoreBase::RingPtr& FusionCoreBase::RingPtr::operator=(const RingPtr& other) {
+  if (this != &other) ring_ = std::make_unique<Ring>(*other.ring_);
+  return *this;
+}
+FusionCoreBase::RingPtr::~RingPtr() = default;
 
 const InputOptions& FusionCoreBase::inputOptions(Index input) const {
   return options_.inputs.empty() ? kDefaultInput

@@ -93,9 +93,7 @@ class FusionCoreBase {
  protected:
   /// `canPredict`: the filter gives its predicted measurement (gates and FILL possible).
   FusionCoreBase(const FusionCoreOptions& options, Index inputs, Index controls, bool canPredict);
-  ~FusionCoreBase();
-  FusionCoreBase(const FusionCoreBase&) = delete;
-  FusionCoreBase& operator=(const FusionCoreBase&) = delete;
+  // A copy is independent of the original: the ring and the aligners are copied.
 
   /// What the filter predicts for this period's measurement, asked for only when a gate, a
   /// FILL substitute or the NIS needs it.
@@ -162,6 +160,19 @@ class FusionCoreBase {
 
  private:
   struct Ring;  ///< the open periods and the aligners (src/core/fusion_core_base.cpp)
+  /// Owns the Ring and copies it with its owner.
+  class RingPtr {
+   public:
+    explicit RingPtr(double period);
+    RingPtr(const RingPtr& other);
+    RingPtr& operator=(const RingPtr& other);
+    ~RingPtr();
+    Ring* operator->() const { return ring_.get(); }
+    Ring& operator*() const { return *ring_; }
+
+   private:
+    RingPtr ring_;
+  };
 
   static const FusionCoreOptions& checked(const FusionCoreOptions& o, Index inputs,
                                           bool canPredict);
@@ -169,7 +180,7 @@ class FusionCoreBase {
   void openWindow();
 
   FusionCoreOptions options_;
-  std::unique_ptr<Ring> ring_;
+  RingPtr ring_;
   std::vector<InputCounters> counters_;
   std::vector<PeriodEntry> entries_;
   Eigen::VectorXd control_;  ///< the controls in force (of the last estimated period)
