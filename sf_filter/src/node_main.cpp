@@ -115,10 +115,11 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   const std::string usage =
       "usage: " + program +
       " --replay INPUT.bag [--csv OUT.csv] [--bag OUT.bag] [--name NODE]\n"
-      "       [--estimation-period MS] [--scale-q FACTOR] [--scale-r FACTOR] [--seed N]\n"
+      "       [--estimation-period S | --estimation-period-ms MS] [--scale-q FACTOR]\n"
+      "       [--scale-r FACTOR] [--seed N] [--strict]\n"
       "       [--frame-id FRAME] [--child-frame-id FRAME] [--base-frame FRAME]\n"
       "       [--align INPUT=POLICY]... [--gate INPUT=THRESHOLD]... [--align-by-stamp INPUT]...\n"
-      "       [--align-by-arrival INPUT]... [--max-lag MS] [--allow-missing-topics]\n"
+      "       [--align-by-arrival INPUT]... [--max-lag S] [--allow-missing-topics]\n"
       "Replays the bag through this node's filter without a ROS master, in recorded-time\n"
       "order, and writes the estimates. Without --csv and --bag only a summary is printed.\n"
       "--frame-id, --child-frame-id: frames of the output bag's odometry (default odom,\n"
@@ -126,12 +127,16 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       "FRAME_ALIGNED_INPUTS are rotated into (default BASE_FRAME, like ~base_frame), with\n"
       "the bag's /tf_static and /tf. --allow-missing-topics: a configured topic missing from\n"
       "the bag is a warning (its inputs are missing in every period), not an error.\n"
+      "Times in seconds like the node's parameters (--estimation-period 0.01: 10 ms;\n"
+      "--estimation-period-ms 10 is the same). --strict: exit status 1 if a step failed\n"
+      "or a value was dropped.\n"
       "POLICY: AVERAGE, LAST, SAMPLED, 'HOLD LAGRANGE|BEZIER|TAYLOR ORDER [VARIANCE]' or\n"
       "'FILL OMEGA N [VARIANCE]'; THRESHOLD 0 removes a gate (doc/alignment_policies.md).";
   sf_filter::ReplayOptions options;
   options.nodeName = program.substr(program.find_last_of('/') + 1);
   double periodMs = def.estimationPeriodMs, scaleQ = 1.0, scaleR = 1.0;
   double lagMs = def.maxMeasurementLagMs;
+  bool strict = false;
   std::optional<long> seed;
   std::string baseFrame = def.baseFrame;
   std::vector<sf_filter::InputOptions> inputs = def.inputOptions;
@@ -155,7 +160,15 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       } else if (arg == "--name") {
         options.nodeName = value();
       } else if (arg == "--estimation-period") {
-        periodMs = std::stod(value());
+        periodMs = sf_filter::secondsToMs("--estimation-period", std::stod(value()),
+                                          sf_filter::kMinPeriodSeconds,
+                                          sf_filter::kMaxPeriodSeconds, false);
+      } else if (arg == "--estimation-period-ms") {
+        periodMs = sf_filter::secondsToMs("--estimation-period-ms", std::stod(value()) / 1000.0,
+                                          sf_filter::kMinPeriodSeconds,
+                                          sf_filter::kMaxPeriodSeconds, false);
+      } else if (arg == "--strict") {
+        strict = true;
       } else if (arg == "--scale-q") {
         scaleQ = std::stod(value());
       } else if (arg == "--scale-r") {
@@ -196,12 +209,13 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       } else if (arg == "--allow-missing-topics") {
         options.allowMissingTopics = true;
       } else if (arg == "--max-lag") {
-        lagMs = sf_filter::checkedLagMs(std::stod(value()));
+        lagMs = sf_filter::checkedLagMs(sf_filter::secondsToMs("--max-lag", std::stod(value()), 0.0,
+                                                               sf_filter::kMaxLagSeconds, true));
       } else {
         throw std::invalid_argument("unknown option " + arg);
       }
     }
-    if (!(periodMs > 0.0)) throw std::invalid_argument("--estimation-period must be positive");
+
     if (!(scaleQ > 0.0) || !(scaleR > 0.0))
       throw std::invalid_argument("scale factors must be positive");
     if (seed && *seed < 0) throw std::invalid_argument("--seed must not be negative");
@@ -247,9 +261,12 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
         late += replay.core().counters(i).late;
         substituted += replay.core().counters(i).substituted;
       }
+      const std::uint64_t failures = replay.core().estimationFailures();
+      const std::uint64_t unrotated = aligner ? aligner->droppedTotal() : 0;
       std::cout << options.nodeName << ": " << s.messages << " messages, " << s.estimates
-                << " estimates, " << s.dropped << " dropped values (" << late << " late), " << gated
-                << " gated, " << substituted << " substitutes, "
+                << " estimates, " << failures << " failed steps (filter reset), " << s.skippedGaps
+                << " gaps skipped, " << s.dropped << " dropped values (" << late << " late), "
+                << gated << " gated, " << substituted << " substitutes, "
                 << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
                 << " us per estimation step, " << wall << " s in all" << std::endl;
       printInputCounters(options.nodeName, replay.core());
@@ -259,6 +276,11 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                   << aligner->rejectedTransforms() << " refused by tf2), "
                   << aligner->droppedTotal() << " values dropped: not rotatable into '"
                   << aligner->baseFrame() << "'" << std::endl;
+      }
+      if (strict && (failures > 0 || s.dropped > 0 || unrotated > 0)) {
+        std::cerr << program << ": --strict: " << failures << " failed steps, "
+                  << s.dropped + unrotated << " dropped values" << std::endl;
+        return EXIT_FAILURE;
       }
     } catch (const std::exception& e) {
       std::cerr << program << ": " << e.what() << std::endl;
@@ -280,34 +302,42 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   });
 }
 
-/// The online node.
+/// The online node. Everything from reading the parameters to the first estimate's timer is
+/// start-up: any exception there is the one-line refusal of doc/filter_node.md, exit status 1.
 int nodeMain(int argc, char** argv, const NodeDefinition& def) {
   ros::init(argc, argv, "sf_filter");
-  ros::NodeHandle nh;
-  ros::NodeHandle pnh("~");
+  std::optional<ros::NodeHandle> nh, pnh;
   std::optional<sf_filter::FrameAligner> aligner;  // outlives the node's subscriptions
   std::optional<sf_filter::FusionNode> node;
   try {
-    if (def.frameAlignment) aligner.emplace(pnh, def.baseFrame, def.description.inputs);
-    const sf_filter::FilterParameters parameters = sf_filter::loadParameters<sf_filter::FilterParameters>(
-        pnh, def.defaultParameters, def.estimationPeriodMs);
+    nh.emplace();
+    pnh.emplace("~");
+    const sf_filter::RosParameterSource params(*pnh);
+    for (const std::string& line : sf_filter::unknownParameterWarnings(params)) {
+      ROS_WARN("%s", line.c_str());
+    }
+    if (def.frameAlignment) aligner.emplace(params, def.baseFrame, def.description.inputs);
+    const sf_filter::FilterParameters parameters =
+        sf_filter::loadParameters<sf_filter::FilterParameters>(params, def.defaultParameters,
+                                                               def.estimationPeriodMs);
     std::vector<sf_filter::InputOptions> inputs = def.inputOptions;
     double lagMs = def.maxMeasurementLagMs;
-    sf_filter::loadInputParameters(pnh, inputs, lagMs, def.capabilities);
+    sf_filter::loadInputParameters(params, inputs, lagMs, def.capabilities);
     const sf_filter::FaultSettings faults =
-        sf_filter::loadFaultParameters(pnh, inputs, def.capabilities);
+        sf_filter::loadFaultParameters(params, inputs, def.capabilities);
     auto options =
         coreOptions(parameters.estimation_period_ms, inputs, lagMs, faults.maxFutureStampMs);
     options.nisWindow = static_cast<std::size_t>(faults.nisWindow);
     const std::string baseFrame = aligner ? aligner->baseFrame() : def.baseFrame;
-    node.emplace(nh, pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
-                 aligner ? &*aligner : nullptr, faults.diagnosticPeriod);
+    node.emplace(*nh, *pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
+                 aligner ? &*aligner : nullptr, faults.diagnosticPeriod,
+                 sf_filter::loadOutputParameters(params));
+    for (const sf_filter::TopicReader& reader : def.topics) node->subscribe(reader);
+    node->start();
   } catch (const std::exception& e) {
     ROS_FATAL("%s: refusing to start: %s", ros::this_node::getName().c_str(), e.what());
     return EXIT_FAILURE;
   }
-  for (const sf_filter::TopicReader& reader : def.topics) node->subscribe(reader);
-  node->start();
   ros::spin();
   // On stdout: ros::shutdown() has ended rosconsole, so ROS_INFO would print nothing now.
   std::cout << ros::this_node::getName() << ": "
