@@ -13,7 +13,7 @@ for events (log lines, messages), never for a fixed time; the deadlines only bou
   types;
 - use_sim_time without /clock is said in the log;
 - unknown private parameters are warned about, robot_localization's names with a hint;
-- ~frequency [Hz] sets the period.
+- ~frequency [Hz] sets the period; a ~transform_timeout above 60 s is refused.
 """
 
 import os
@@ -218,6 +218,13 @@ class NodeConventionsTest(unittest.TestCase):
         self.assertIn("known: estimation_period, frequency", line)
         node.wait_for_line("unknown private parameter ~estimation_perod ignored")
         node.wait_for_line("unknown private parameter ~odom0 ignored", "robot_localization")
+
+    def test_huge_transform_timeout_is_refused(self):
+        # only a node with FRAME_ALIGNED_INPUTS reads it: 1e9 s froze the node without a word
+        node = Node(self.exe, "tf_timeout_case", {"transform_timeout": 1e9})
+        self.nodes.append(node)
+        node.wait_for_line("refusing to start: parameter ~transform_timeout: expected 0 .. 60 s")
+        self.assertEqual(node.proc.wait(timeout=DEADLINE), 1)
 
     def test_frequency_sets_the_period(self):
         node = Node(self.exe, "frequency_case", {"frequency": 25})
