@@ -11,7 +11,7 @@ for events (log lines, messages), never for a fixed time; the deadlines only bou
   ERROR in /diagnostics with the reason, while its messages arrive;
 - a publisher of another message type on an input topic is ERROR naming the topic and both
   types;
-- use_sim_time without /clock is said in the log;
+- use_sim_time without /clock is said in the log and in /diagnostics;
 - unknown private parameters are warned about, robot_localization's names with a hint;
 - ~frequency [Hz] sets the period; a ~transform_timeout above 60 s is refused.
 """
@@ -200,14 +200,19 @@ class NodeConventionsTest(unittest.TestCase):
         wait_until(error_reported, "input 2 ERROR naming the topic and both types",
                    lambda: pub.publish(String(data="not an imu")))
 
-    def test_waiting_for_clock_is_logged(self):
+    def test_waiting_for_clock_is_logged_and_reported(self):
+        arrays = self.diagnostics()
         rospy.set_param("/use_sim_time", True)
         try:
-            node = Node(self.exe, "clock_case", {})
+            node = Node(self.exe, "clock_case", {"diagnostic_period": 0.2})
             self.nodes.append(node)
             node.wait_for_line("waiting for /clock")
         finally:
             rospy.delete_param("/use_sim_time")
+        wait_until(lambda: any(s.level == s.WARN and "waiting for /clock" in s.message
+                               and s.name.startswith("clock_case/fusion: estimation")
+                               for a in arrays for s in a.status),
+                   "WARN waiting for /clock in /diagnostics")
 
     def test_unknown_parameters_are_warned_about(self):
         node = Node(self.exe, "unknown_case", {"two_d_mode": True, "estimation_perod": 0.05,

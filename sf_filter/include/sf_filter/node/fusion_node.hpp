@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -50,6 +51,7 @@ class FusionNode final : public MessageSink {
         core_(*engine_),
         aligner_(aligner),
         diagnostics_(nh_, pnh_, core_, description_.inputs, diagnosticPeriod),
+        diagnosticPeriod_(diagnosticPeriod),
         frameId_(settings.frameId),
         childFrameId_(settings.childFrameId),
         publishTf_(settings.publishTf),
@@ -104,9 +106,24 @@ class FusionNode final : public MessageSink {
   /// so every 5 s of wall time).
   void start() {
     const ros::WallTime waiting = ros::WallTime::now();
-    ros::WallTime lastWarning;
+    ros::WallTime lastWarning, lastReport;
+    ros::Publisher waitingReport;  // /diagnostics while the updater cannot run yet
     while (!ros::Time::isValid() && ros::ok()) {
       const ros::WallTime now = ros::WallTime::now();
+      if (lastReport.isZero() || (now - lastReport).toSec() >= diagnosticPeriod_) {
+        lastReport = now;
+        if (!waitingReport) {
+          waitingReport = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
+        }
+        diagnostic_msgs::DiagnosticArray report;
+        diagnostic_msgs::DiagnosticStatus status;
+        status.level = diagnostic_msgs::DiagnosticStatus::WARN;
+        status.name = ros::this_node::getName().substr(1) + ": estimation";
+        status.message = "waiting for /clock (use_sim_time is true): no estimate yet";
+        status.hardware_id = "none";
+        report.status.push_back(status);
+        waitingReport.publish(report);
+      }
       if (lastWarning.isZero() || (now - lastWarning).toSec() >= 5.0) {
         lastWarning = now;
         ROS_WARN(
@@ -310,6 +327,7 @@ class FusionNode final : public MessageSink {
   FusionEngine& core_;
   FrameAligner* aligner_;
   FusionDiagnostics diagnostics_;
+  double diagnosticPeriod_;  ///< [s] between diagnostic reports
   std::function<void(const EstimateRef&)> publishEstimate_ = [this](const EstimateRef& e) {
     publish(e);
   };
