@@ -35,10 +35,26 @@
 // The wheel odometry usually broadcasts odom -> base_link itself, so the launch file
 // (launch/diff_drive_odom_imu.launch) publishes odom -> base_link_fused by default; see
 // doc/generic_robot.md for replacing the wheel odometry's transform instead.
+//
+// Working first time on a real robot (issue 13):
+// - the heading x[2] is declared an angle (ANGLE_STATES): it is wrapped to (-pi, pi] after
+//   every step and the UKF and PF average it on the circle;
+// - both topics carry header.stamp, so every input is aligned by its stamp, not by its
+//   arrival (ALIGN_BY_STAMP), and a period waits MAX_MEASUREMENT_LAG = 20 ms for values
+//   stamped in it that are still in transit (a real driver's latency is a few ms);
+// - INPUT_TIMEOUT: an input silent for 500 ms is timed out (diagnostics WARN, missing in
+//   every period). 500 ms is several periods of any odometry or IMU from 10 Hz up, so the
+//   same value fits a slower robot without an edit.
+// - METHOD is the EKF unless the including file defines another one first (a UKF variant
+//   is then two lines: #define METHOD UNSCENTED_KALMAN_FILTER and #include this header).
+//   The header keeps the wheels' yaw rate as a precise observation: on a skid-steer base
+//   (four wheels, tracks) use config/skid_steer_odom_imu.h instead.
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
 
+#ifndef METHOD
 #define METHOD EXTENDED_KALMAN_FILTER
+#endif
 #define ESTIMATION_PERIOD 20
 #define STATE_TRANSITION_MODEL \
   (x[0] + x[3] * T * cos(x[2] + 0.5 * x[4] * T)) \
@@ -80,3 +96,7 @@
 #define POSE_OUT (0)(1)(2)
 #define BASE_FRAME base_link
 #define FRAME_ALIGNED_INPUTS ((2)(angular_velocity)(z))
+#define ANGLE_STATES (2)
+#define ALIGN_BY_STAMP (0)(1)(2)
+#define MAX_MEASUREMENT_LAG 20
+#define INPUT_TIMEOUT ((0)(500))((1)(500))((2)(500))

@@ -7,6 +7,7 @@
 #               Created if missing; $SF_WS/src/sf_pkg is a symlink to this repo.
 #   SF_JOBS     parallel build jobs (default: 2)
 #   SF_VERBOSE  1 = stream the full build output (default: log file only)
+#   SF_CMAKE_ARGS  (array, set by the calling script) extra CMake arguments of the build
 
 # Debian's ROS lives in /usr; `python3` earlier on PATH (e.g. a pyenv shim)
 # lacks the ROS Python modules.
@@ -16,6 +17,7 @@ SF_REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd -P)"
 SF_WS="${SF_WS:-${HOME}/.cache/sf_pkg_ws}"
 SF_JOBS="${SF_JOBS:-2}"
 SF_VERBOSE="${SF_VERBOSE:-0}"
+SF_CMAKE_ARGS=()
 SF_PACKAGE=sf_pkg
 
 # Debian packages needed to build, test and run the package.
@@ -90,7 +92,7 @@ sf_catkin_make() {
   local log="${SF_WS}/$1"
   shift
   local cmd=(catkin_make -C "$SF_WS" -j"${SF_JOBS}"
-    -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 "$@")
+    -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 "${SF_CMAKE_ARGS[@]}" "$@")
   local rc=0
   if [[ "$SF_VERBOSE" == 1 ]]; then
     "${cmd[@]}" 2>&1 | tee "$log" || rc=$?

@@ -7,6 +7,8 @@ set -euo pipefail
 # shellcheck source=scripts/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
+# The package's own heavy checks (sanitizers, fuzzing, soak) are part of this command.
+SF_CMAKE_ARGS=(-DSF_PKG_HEAVY_TESTS=ON)
 sf_prepare
 
 results="${SF_WS}/build/test_results"
@@ -15,7 +17,7 @@ rm -rf "$results"
 sf_log "running tests (log: ${SF_WS}/tests.log)"
 t0=$SECONDS
 cmd=(catkin_make -C "$SF_WS" -j"${SF_JOBS}" -k
-  -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests)
+  -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -DSF_PKG_HEAVY_TESTS=ON run_tests)
 if [[ "$SF_VERBOSE" == 1 ]]; then
   "${cmd[@]}" 2>&1 | tee "${SF_WS}/tests.log" && test_rc=0 || test_rc=$?
 else

@@ -78,6 +78,9 @@
 #define PIONEER_POSE_OUTPUTS \
   ((pose/x)(0))((pose/y)(1))((pose/theta)(2))((velocity/linear)(5))((velocity/angular)(3))
 #define PIONEER_POSE_INDICES (0)(1)(2)
+// theta (x[2]) is an angle: wrapped to (-pi, pi] after every step, averaged on the circle by
+// the UKF and PF (doc/configuration.md, Angles). Every state with a pose declares it.
+#define PIONEER_ANGLE_STATES (2)
 
 // Known start pose. The robot starts on a marked position (section 5.1), so the models with
 // a pose start at x = y = theta = 0 with a variance of 1e-4 (1 cm, 0.6 deg) on x, y and theta

@@ -129,14 +129,15 @@ TEST(NumericsOverflow, NonFiniteEstimateIsRejected) {
 }
 
 TEST(NumericsOverflow, HugeCovarianceGivesNumericalErrorNotNan) {
-  // P = 1e300 and H = 1e10: H P H^T overflows to inf.
+  // P = 1e100 (the largest covariance entry a filter accepts, parameter_checks.hpp) and
+  // H = 1e210: P H^T = 1e310 and H P H^T overflow to inf, so the gain is inf / inf.
   KalmanFilter<1, 1> kf(Matrix<1, 1>::Constant(1.0), Matrix<1, 0>(),
-                        Matrix<1, 1>::Constant(1e10), Matrix<1, 1>::Constant(0.0),
+                        Matrix<1, 1>::Constant(1e210), Matrix<1, 1>::Constant(0.0),
                         Matrix<1, 1>::Constant(1.0), Vector<1>::Constant(2.0),
-                        Matrix<1, 1>::Constant(1e300));
+                        Matrix<1, 1>::Constant(1e100));
   EXPECT_THROW(kf.estimate(Measurement<1>::complete(Vector<1>::Constant(1.0))), NumericalError);
   EXPECT_EQ(kf.state()(0), 2.0);
-  EXPECT_EQ(kf.covariance()(0, 0), 1e300);
+  EXPECT_EQ(kf.covariance()(0, 0), 1e100);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -296,9 +296,39 @@ TEST(ParticleFilterResampling, SystematicResamplingCopiesFloorOrCeilOfNw) {
     ASSERT_GE(count, std::floor(expected - 1e-9)) << "particle " << i << ", N w = " << expected;
     ASSERT_LE(count, std::ceil(expected + 1e-9)) << "particle " << i << ", N w = " << expected;
   }
-  // The estimate is the plain mean of the resampled set.
-  const Vector<2> mean = always.particles().rowwise().mean();
+  // The estimate is the moments of the weighted set before resampling (the twin's particles
+  // and weights), not those of the resampled copies: sum w_i x_i and sum w_i (x_i - m)^2.
+  Vector<2> mean = Vector<2>::Zero();
+  for (Index i = 0; i < N; ++i) mean += std::exp(never.logWeights()(i)) * never.particles().col(i);
+  Matrix<2, 2> covariance = Matrix<2, 2>::Zero();
+  for (Index i = 0; i < N; ++i) {
+    const Vector<2> d = never.particles().col(i) - mean;
+    covariance += std::exp(never.logWeights()(i)) * d * d.transpose();
+  }
   EXPECT_LE(sftest::maxAbsDiff(always.state(), mean), 1e-12);
+  EXPECT_LE(sftest::maxAbsDiff(always.covariance(), covariance), 1e-12);
+  EXPECT_EQ(always.state(), never.state());
+  EXPECT_EQ(always.covariance(), never.covariance());
+  // The resampled set's plain mean differs from it (by the Monte-Carlo noise of resampling).
+  const Vector<2> resampledMean = always.particles().rowwise().mean();
+  EXPECT_GT(sftest::maxAbsDiff(always.state(), resampledMean), 1e-9);
+}
+
+TEST(ParticleFilterResampling, ThresholdOneResamplesWhenTheEffectiveSampleSizeIsN) {
+  // Equal weights (no measurement): N_eff = N exactly (N = 8: the weights 1/8 are exact).
+  // The rule is N_eff <= threshold N, inclusive: threshold 1 resamples every step.
+  ParticleFilterSIR<RandomWalk> pf(RandomWalk{}, Matrix<1, 1>::Constant(0.1),
+                                   Matrix<1, 1>::Constant(0.2), Vector<1>::Zero(),
+                                   Matrix<1, 1>::Identity(), parameters(8, 3, 1.0));
+  pf.estimate(Measurement<1>::missing());
+  EXPECT_EQ(pf.effectiveSampleSize(), 8.0);
+  EXPECT_TRUE(pf.resampledLastStep());
+  // Threshold 0 never resamples (N_eff >= 1).
+  ParticleFilterSIR<RandomWalk> never(RandomWalk{}, Matrix<1, 1>::Constant(0.1),
+                                      Matrix<1, 1>::Constant(0.2), Vector<1>::Zero(),
+                                      Matrix<1, 1>::Identity(), parameters(8, 3, 0.0));
+  never.estimate(Measurement<1>::complete(Vector<1>::Constant(100.0)));
+  EXPECT_FALSE(never.resampledLastStep());
 }
 
 TEST(ParticleFilterResampling, ThresholdDecidesWhenToResample) {
@@ -314,7 +344,7 @@ TEST(ParticleFilterResampling, ThresholdDecidesWhenToResample) {
   int resampled = 0;
   for (const auto& step : run) {
     pf.estimate(step.z);
-    const bool below = pf.effectiveSampleSize() < 0.5 * 600.0;
+    const bool below = pf.effectiveSampleSize() <= 0.5 * 600.0;
     ASSERT_EQ(pf.resampledLastStep(), below);
     resampled += below ? 1 : 0;
   }

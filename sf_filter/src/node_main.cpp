@@ -140,8 +140,9 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       "the bag's /tf_static and /tf. --allow-missing-topics: a configured topic missing from\n"
       "the bag is a warning (its inputs are missing in every period), not an error.\n"
       "Times in seconds like the node's parameters (--estimation-period 0.01: 10 ms;\n"
-      "--estimation-period-ms 10 is the same). --strict: exit status 1 if a step failed\n"
-      "or a value was dropped. --params: the node's private parameters from a YAML file\n"
+      "--estimation-period-ms 10 is the same). --strict: exit status 1 if a step failed,\n"
+      "the filter was reset or a value was dropped. --params: the node's private parameters from a "
+      "YAML file\n"
       "(as rosparam load takes it), parsed and checked as the node does; options given\n"
       "here override it. FROM:=TO reads the configured topic FROM from the bag's topic TO.\n"
       "--static-transform: a transform as static_transform_publisher takes it (metres,\n"
@@ -359,11 +360,12 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
         substituted += replay.core().counters(i).substituted;
       }
       const std::uint64_t failures = replay.core().estimationFailures();
+      const std::uint64_t resets = replay.core().filterResets();
       const std::uint64_t unrotated = aligner ? aligner->droppedTotal() : 0;
       std::cout << options.nodeName << ": " << s.messages << " messages, " << s.estimates
-                << " estimates, " << failures << " failed steps (filter reset), " << s.skippedGaps
-                << " gaps skipped, " << s.dropped << " dropped values (" << late << " late), "
-                << gated << " gated, " << substituted << " substitutes, "
+                << " estimates, " << failures << " failed steps, " << resets << " filter resets, "
+                << s.skippedGaps << " gaps skipped, " << s.dropped << " dropped values (" << late
+                << " late), " << gated << " gated, " << substituted << " substitutes, "
                 << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
                 << " us per estimation step, " << wall << " s in all" << std::endl;
       printInputCounters(options.nodeName, replay.core());
@@ -374,9 +376,9 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                   << aligner->droppedTotal() << " values dropped: not rotatable into '"
                   << aligner->baseFrame() << "'" << std::endl;
       }
-      if (strict && (failures > 0 || s.dropped > 0 || unrotated > 0)) {
-        std::cerr << program << ": --strict: " << failures << " failed steps, "
-                  << s.dropped + unrotated << " dropped values" << std::endl;
+      if (strict && (failures > 0 || resets > 0 || s.dropped > 0 || unrotated > 0)) {
+        std::cerr << program << ": --strict: " << failures << " failed steps, " << resets
+                  << " filter resets, " << s.dropped + unrotated << " dropped values" << std::endl;
         return EXIT_FAILURE;
       }
     } catch (const std::exception& e) {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <iomanip>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "train_core.hpp"
@@ -282,6 +283,67 @@ TEST(FusionCore, RefusesANonPositivePeriod) {
   Core::Options options;
   options.period = 0.0;
   EXPECT_THROW(Core(makeTrain(), options), estimation::ParameterError);
+}
+
+/// The message of the ParameterError the options raise ("" if none).
+std::string optionsError(const Core::Options& options) {
+  try {
+    Core core(makeTrain(), options);
+  } catch (const estimation::ParameterError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The period is bounded to 0.1 ms .. 1 h, refused with the unit named: 1e-6 s (a unit mistake)
+// took a full core and flooded the log, 1e13 s never estimated.
+TEST(FusionCore, RefusesAPeriodOutside0Point1MsTo1HourNamingTheUnit) {
+  Core::Options options;
+  for (const double period : {1e-6, 9.9e-5, 3600.5, 1e13, std::nan("")}) {
+    options.period = period;
+    const std::string error = optionsError(options);
+    EXPECT_NE(error.find("from 0.1 ms to 1 h"), std::string::npos) << period << ": " << error;
+    EXPECT_NE(error.find(" s"), std::string::npos) << error;
+  }
+  for (const double period : {1e-4, 0.05, 3600.0}) {
+    options.period = period;
+    EXPECT_EQ(optionsError(options), "") << period;
+  }
+  options.period = kPeriod;
+  options.maxCatchUpPeriods = 0;
+  EXPECT_NE(optionsError(options).find("catch-up"), std::string::npos);
+  options.maxCatchUpPeriods = Core::kMaxCatchUpLimit + 1;
+  EXPECT_NE(optionsError(options).find("catch-up"), std::string::npos);
+}
+
+// A gap of 1.7e9 s (a bag with one message at 1 s and the rest at 1.7e9 s) is crossed with one
+// estimate - the prediction of the current period - whatever its length, by advanceTo() and by
+// skipGap(), which an adapter stepping through gaps itself calls for a gap too long to step.
+TEST(FusionCore, AGapOfAnyLengthCostsOneEstimate) {
+  for (const bool explicitSkip : {false, true}) {
+    Core core = makeCore();
+    Collector out;
+    Train reference = makeTrain();
+    core.advanceTo(1.0, out);
+    core.addMeasurement(0, 1.05, 2.0);
+    const double later = 1.7e9 + 0.05;
+    // Periods end at 1 + k T; the one holding `later` is k = 17 000 000 000 - 9 (end
+    // 1.7e9 + 0.1); all before it are due: 1.7e10 - 10.
+    const std::uint64_t due = 16999999990u;
+    EXPECT_EQ(core.periodsDue(later), due);
+    const auto event = explicitSkip ? core.skipGap(later, out) : core.advanceTo(later, out);
+    EXPECT_EQ(event, sf_filter::ClockEvent::SkippedGap);
+    ASSERT_EQ(out.estimates.size(), 1u);
+    reference.estimate(speedOnly(2.0));  // period 1 with its value
+    expectSameBelief(out.estimates[0], reference);
+    EXPECT_EQ(core.skippedGaps(), 1u);
+    EXPECT_EQ(core.skippedPeriods(), due - 1);
+    EXPECT_EQ(core.periodsDue(later), 0u);
+    // The phase is kept: the next period ends at 1.7e9 + 0.1.
+    core.advanceTo(1.7e9 + 0.1, out);
+    ASSERT_EQ(out.estimates.size(), 2u);
+    EXPECT_NEAR(out.estimates[1].time, 1.7e9 + 0.1, 1e-6);
+  }
 }
 
 }  // namespace

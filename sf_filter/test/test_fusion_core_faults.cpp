@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -137,6 +138,93 @@ TEST(FusionCoreFaults, GarbageValuesDoNotKeepAnInputAlive) {
   EXPECT_TRUE(core.timedOut(0));  // received at 0.45, but nothing accepted since 0.05
   EXPECT_EQ(core.counters(0).received, 7u);
   EXPECT_EQ(core.counters(0).dropped(), 6u);
+}
+
+// Only a value that reaches the filter keeps an input alive (doc/reliability.md): a HOLD
+// input whose sensor goes on publishing values that all fail the gate times out and stops
+// extrapolating its last good samples (before, every gated arrival reset the timeout, so the
+// hold substituted 1.0 forever while the sensor said 100).
+TEST(FusionCoreFaults, GatedValuesDoNotKeepAHoldInputAlive) {
+  std::vector<InputOptions> inputs(2);
+  inputs[0].alignment = AlignmentPolicy::hold(HoldPrimitive::Lagrange, 0, 0.5);
+  inputs[0].gateThreshold = 9.0;
+  inputs[0].timeout = 0.3;
+  Core core = makeCore(inputs);
+  Collector out;
+  Train reference = makeTrain();
+  core.advanceTo(0.0, out);
+  for (int k = 1; k <= 30; ++k) {
+    // Periods 1-10: 1.0 (used); 11-30: 100.0, at least 40 sigma away: gated.
+    EXPECT_EQ(core.addMeasurement(0, (k - 1) * kPeriod + 0.05, k <= 10 ? 1.0 : 100.0),
+              Rejection::None);
+    core.advanceTo(k * kPeriod, out);
+    // The last used value arrived at 0.95: periods 11 and 12 (ends 1.1, 1.2) hold it with
+    // the policy's variance; from period 13 (end 1.3, 0.35 s later) the input is timed out.
+    if (k <= 10) {
+      reference.estimate(speedOnly(1.0));
+    } else if (k <= 12) {
+      reference.estimate(speedOnly(1.0, 0.5));
+    } else {
+      reference.estimate(Measurement<2>::missing());
+    }
+    expectSameBelief(out.estimates.back(), reference);
+    EXPECT_EQ(core.timedOut(0, k * kPeriod), k >= 13) << "period " << k;
+  }
+  EXPECT_EQ(core.counters(0).gated, 20u);
+  EXPECT_EQ(core.counters(0).substituted, 2u);
+  EXPECT_EQ(core.counters(0).timedOutPeriods, 18u);
+  EXPECT_DOUBLE_EQ(core.counters(0).lastAccepted, 9 * kPeriod + 0.05);
+}
+
+// A stamped value too late for its period never reaches the filter: it does not keep the
+// input alive either.
+TEST(FusionCoreFaults, LateValuesDoNotKeepAnInputAlive) {
+  std::vector<InputOptions> inputs = speedTimeout(0.3);
+  inputs[0].alignByStamp = true;
+  Core core = makeCore(inputs);
+  Collector out;
+  core.advanceTo(0.0, out);
+  EXPECT_EQ(core.addMeasurement(0, 0.05, 1.0, std::nullopt, 0.01), Rejection::None);
+  core.advanceTo(0.1, out);
+  EXPECT_EQ(core.counters(0).lastAccepted, 0.05);
+  // Periods 2-6: each value stamped 0.12 s before its arrival, in a period already estimated.
+  for (int k = 2; k <= 6; ++k) {
+    const double arrival = (k - 1) * kPeriod + 0.05;
+    EXPECT_EQ(core.addMeasurement(0, arrival, 2.0, std::nullopt, arrival - 0.12),
+              Rejection::TooLate);
+    core.advanceTo(k * kPeriod, out);
+    EXPECT_EQ(core.timedOut(0), k * kPeriod - 0.05 > 0.3) << "period " << k;
+  }
+  EXPECT_EQ(core.counters(0).late, 5u);
+  EXPECT_EQ(core.counters(0).lastAccepted, 0.05);
+  EXPECT_EQ(core.counters(0).timedOutPeriods, 3u);  // periods 4-6 (ends 0.4 to 0.6)
+}
+
+// A finite but huge variance field (1e308): two of them in a period summed to infinity, the
+// step failed and the filter restarted every period. Beyond kMaxVariance (1e100) a variance
+// is dropped as bad variance; up to it the period's mean variance is exact.
+TEST(FusionCoreFaults, AVarianceBeyondTheMaximumIsDroppedAndNeverOverflows) {
+  Core core = makeCore({});
+  Collector out;
+  Train reference = makeTrain();
+  core.advanceTo(0.0, out);
+  // Period 1: two values of variance 1e308: both dropped, the speed is missing.
+  EXPECT_EQ(core.addMeasurement(0, 0.03, 1.0, 1e308), Rejection::BadVariance);
+  EXPECT_EQ(core.addMeasurement(0, 0.06, 2.0, 1e308), Rejection::BadVariance);
+  core.advanceTo(0.1, out);
+  reference.estimate(Measurement<2>::missing());
+  expectSameBelief(out.estimates.back(), reference);
+  // Period 2: two values of variance 1e100 (the maximum): their mean 1.5 with variance
+  // (1e100 + 1e100) / 2^2 = 5e99.
+  EXPECT_EQ(core.addMeasurement(0, 0.13, 1.0, 1e100), Rejection::None);
+  EXPECT_EQ(core.addMeasurement(0, 0.16, 2.0, 1e100), Rejection::None);
+  core.advanceTo(0.2, out);
+  reference.estimate(speedOnly(1.5, 5e99));
+  expectSameBelief(out.estimates.back(), reference);
+  EXPECT_EQ(core.estimationFailures(), 0u);
+  EXPECT_EQ(core.counters(0).badVariance, 2u);
+  EXPECT_EQ(core.counters(0).used, 2u);
+  EXPECT_EQ(core.lastEstimate().presentInputs, 1);
 }
 
 // --- plausible range ------------------------------------------------------------------------

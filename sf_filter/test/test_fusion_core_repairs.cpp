@@ -3,7 +3,9 @@
 // WARN. The fault: a UKF of x' = x^2 with alpha = 1, kappa = 0, beta = -10, whose predicted
 // covariance from x ~ N(0, 1) is -10 + Q in closed form (sigma points 0, +1, -1, weights of
 // the covariance -10, 1/2, 1/2; their squares 0, 1, 1 have mean 1): repaired to 0. And a
-// failure no repair mends (an infinite time update) restarts the filter, estimates go on.
+// failure no repair mends (an infinite time update) keeps the last good estimate, flagged,
+// its covariance inflated by Q; only Options::maxConsecutiveFailures of them in a row restart
+// the filter.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -97,36 +99,87 @@ struct ReciprocalControl {
   }
 };
 
-TEST(FusionCoreRepairs, AFailedStepRestartsTheFilterAndTheEstimatesGoOn) {
-  using FailingUkf = estimation::UnscentedKalmanFilter<ReciprocalControl>;
-  sf_filter::FusionCore<FailingUkf>::Options options;
+using FailingUkf = estimation::UnscentedKalmanFilter<ReciprocalControl>;
+using FailingCore = sf_filter::FusionCore<FailingUkf>;
+
+FailingCore makeFailingCore(std::uint64_t maxConsecutiveFailures = 10) {
+  FailingCore::Options options;
   options.period = kT;
-  sf_filter::FusionCore<FailingUkf> core(
+  options.maxConsecutiveFailures = maxConsecutiveFailures;
+  return FailingCore(
       FailingUkf(ReciprocalControl{}, Matrix<1, 1>::Constant(0.01), Matrix<1, 1>::Constant(0.1),
                  Vector<1>::Zero(), Matrix<1, 1>::Identity()),
       options);
-  std::vector<double> states, variances;
-  const auto collect = [&](const auto& e) {
-    states.push_back(e.state(0));
-    variances.push_back(e.covariance(0, 0));
-  };
+}
+
+TEST(FusionCoreRepairs, AFailedStepKeepsTheLastGoodEstimateAndTheEstimatesGoOn) {
+  FailingCore core = makeFailingCore();
+  std::vector<FailingCore::Estimate> out;
+  const auto collect = [&](const auto& e) { out.push_back(e); };
   core.advanceTo(0.0, collect);
-  // Periods 1 and 3 with u = 1: from (0, 1) the prediction is (1, 1 + Q). Period 2 with u = 0:
-  // rejected, and the filter restarts from its initial belief (0, 1).
+  // Periods 1 and 3 with u = 1, period 2 with u = 0 (rejected). The UKF of the linear
+  // x' = x + 1 is exact: from (0, 1) period 1 predicts (1, 1 + Q). Period 2 keeps the state 1,
+  // the filter unchanged by the rejected step, with the covariance inflated by Q for the period
+  // that passed without a time update: (1, 1.02); period 3 predicts from it (2, 1.02 + Q).
   for (const double u : {1.0, 0.0, 1.0}) {
     ASSERT_EQ(core.addControl(0, u), sf_filter::Rejection::None);
     core.advanceTo(core.clock() + kT, collect);
   }
-  ASSERT_EQ(states.size(), 3u);  // an estimate for every period, the failed one included
-  EXPECT_NEAR(states[0], 1.0, 1e-12);
-  EXPECT_NEAR(variances[0], 1.01, 1e-9);
-  EXPECT_EQ(states[1], 0.0);
-  EXPECT_EQ(variances[1], 1.0);
-  EXPECT_NEAR(states[2], 1.0, 1e-12);
-  EXPECT_NEAR(variances[2], 1.01, 1e-9);
+  ASSERT_EQ(out.size(), 3u);  // an estimate for every period, the failed one included
+  EXPECT_NEAR(out[0].state(0), 1.0, 1e-12);
+  EXPECT_NEAR(out[0].covariance(0, 0), 1.01, 1e-9);
+  EXPECT_FALSE(out[0].stepFailed);
+  EXPECT_EQ(out[1].state(0), out[0].state(0));
+  EXPECT_NEAR(out[1].covariance(0, 0), 1.02, 1e-9);
+  EXPECT_TRUE(out[1].stepFailed);
+  EXPECT_FALSE(out[1].filterReset);
+  EXPECT_NEAR(out[1].time, 2 * kT, 1e-12);
+  // The UKF's default alpha = 1e-3 gives a mean weight of about -1e6: rounding of 1e6 * eps
+  // * |x| = 4.4e-10 at x = 2.
+  EXPECT_NEAR(out[2].state(0), 2.0, 1e-9);
+  EXPECT_NEAR(out[2].covariance(0, 0), 1.03, 1e-9);
+  EXPECT_FALSE(out[2].stepFailed);
   EXPECT_EQ(core.estimationFailures(), 1u);
+  EXPECT_EQ(core.consecutiveFailures(), 0u);
+  EXPECT_EQ(core.filterResets(), 0u);
   EXPECT_NE(core.lastFailure().find("non-finite"), std::string::npos) << core.lastFailure();
   EXPECT_EQ(core.numericalRepairs().total(), 0u);
+}
+
+TEST(FusionCoreRepairs, OnlyNConsecutiveFailuresRestartTheFilter) {
+  FailingCore core = makeFailingCore(3);
+  std::vector<FailingCore::Estimate> out;
+  const auto collect = [&](const auto& e) { out.push_back(e); };
+  core.advanceTo(0.0, collect);
+  // u = 1, then 0 for four periods, then 1: failures 1 and 2 keep the state 1 and add Q to
+  // the covariance each (1.02, 1.03); the third in a row restarts from (0, 1); the fourth is
+  // the first of a new run: (0, 1 + Q); the last period predicts from it (1, 1 + 2 Q).
+  for (const double u : {1.0, 0.0, 0.0, 0.0, 0.0, 1.0}) {
+    ASSERT_EQ(core.addControl(0, u), sf_filter::Rejection::None);
+    core.advanceTo(core.clock() + kT, collect);
+  }
+  ASSERT_EQ(out.size(), 6u);
+  for (int k : {1, 2}) {
+    EXPECT_NEAR(out[k].state(0), 1.0, 1e-12) << k;
+    EXPECT_NEAR(out[k].covariance(0, 0), 1.01 + 0.01 * k, 1e-9) << k;
+    EXPECT_TRUE(out[k].stepFailed && !out[k].filterReset) << k;
+  }
+  EXPECT_EQ(out[3].state(0), 0.0);
+  EXPECT_EQ(out[3].covariance(0, 0), 1.0);
+  EXPECT_TRUE(out[3].stepFailed && out[3].filterReset);
+  EXPECT_EQ(out[4].state(0), 0.0);
+  EXPECT_NEAR(out[4].covariance(0, 0), 1.01, 1e-12);
+  EXPECT_TRUE(out[4].stepFailed && !out[4].filterReset);
+  EXPECT_NEAR(out[5].state(0), 1.0, 1e-9);
+  EXPECT_NEAR(out[5].covariance(0, 0), 1.02, 1e-9);
+  EXPECT_FALSE(out[5].stepFailed);
+  EXPECT_EQ(core.estimationFailures(), 4u);
+  EXPECT_EQ(core.filterResets(), 1u);
+  EXPECT_EQ(core.consecutiveFailures(), 0u);
+}
+
+TEST(FusionCoreRepairs, RefusesZeroConsecutiveFailures) {
+  EXPECT_THROW(makeFailingCore(0), estimation::ParameterError);
 }
 
 TEST(FusionCoreRepairs, AHealthyFilterReportsNone) {

@@ -110,6 +110,7 @@ sf_filter::EstimationInterval estimationOf(const Core& core,
   sf_filter::EstimationInterval e;
   e.now.estimates = core.estimateCount();
   e.now.failures = core.estimationFailures();
+  e.now.filterResets = core.filterResets();
   e.now.clockResets = core.clockResets();
   e.now.estimatorSeconds = core.estimatorSeconds();
   e.before = before;
@@ -162,8 +163,24 @@ TEST(EstimationHealth, FlagsAnInconsistentNisAndErrsOnAFailure) {
   e.lastFailure = "innovation covariance is not positive definite";
   h = sf_filter::estimationHealth(e, nis);
   EXPECT_EQ(h.level, HealthLevel::Error);
-  EXPECT_EQ(h.message.rfind("1 estimation steps failed, filter reset: innovation covariance", 0),
-            0u);
+  // A failed step keeps the last good estimate; the filter is reset only after repeated
+  // failures (FusionCore::Options::maxConsecutiveFailures), and only then does the message
+  // say so.
+  EXPECT_EQ(h.message.rfind(
+                "1 estimation steps failed, last good estimate kept: innovation covariance", 0),
+            0u)
+      << h.message;
+  EXPECT_EQ(h.value("filter resets"), "0");
+  e.now.failures = 10;
+  e.now.filterResets = 1;
+  h = sf_filter::estimationHealth(e, nis);
+  EXPECT_EQ(h.level, HealthLevel::Error);
+  EXPECT_EQ(h.message.rfind("10 estimation steps failed, filter reset 1 times after repeated "
+                            "failures: innovation covariance",
+                            0),
+            0u)
+      << h.message;
+  EXPECT_EQ(h.value("filter resets"), "1");
   e.now.failures = 0;
   e.covarianceTrace = std::nan("");
   EXPECT_EQ(sf_filter::estimationHealth(e, sf_filter::NisWindow()).level, HealthLevel::Error);

@@ -10,6 +10,8 @@ lines say what compiling it must give:
                                  (several EXPECT lines: it must contain each of them)
   // MAX_ERRORS: <k>             (optional) at most k errors in total, default 1
   // REQUIRES: <path>            (optional, repeatable) skip the case unless <path> exists
+                                 (a skip is reported as skipped, in the summary and in the
+                                 JUnit file, never as a pass)
 
 Each header is compiled like the node's generated translation unit:
 
@@ -20,7 +22,7 @@ The error that deliberately ends a compilation after a fatal configuration error
 ("SF_CONFIGURATION_ERROR__...: No such file or directory") is not counted.
 
 Usage: check_config_errors.py [--cxx g++] [--eigen /usr/include/eigen3] [-j N] [-v] [header ...]
-Prints one line per case and "N passed, N failed"; exits 1 on any failure.
+Prints one line per case and "N passed, N failed, N skipped"; exits 1 on any failure.
 """
 
 import argparse
@@ -36,6 +38,7 @@ REPO = os.path.dirname(os.path.dirname(HERE))
 INCLUDE = os.path.join(REPO, "sf_filter", "include")
 TU = os.path.join(HERE, "config_tu.cpp")
 STOP_MARKER = "SF_CONFIGURATION_ERROR__"
+PASS, FAIL, SKIP = "pass", "fail", "skip"
 ERROR_RE = re.compile(r"(?:^|: )(?:fatal )?error: ")
 WARNING_RE = re.compile(r"(?:^|: )warning: ")
 
@@ -71,10 +74,10 @@ def check(cxx, eigen, header, verbose):
     expects, max_errors, requires = read_directives(header)
     expect = expects[0] if expects else None
     if expect is None:
-        return None, "FAIL %s: no '// EXPECT:' line" % name
+        return FAIL, "FAIL %s: no '// EXPECT:' line" % name
     missing = [r for r in requires if not os.path.exists(r)]
     if missing:
-        return True, "SKIP %s (missing %s)" % (name, ", ".join(missing))
+        return SKIP, "SKIP %s (missing %s)" % (name, ", ".join(missing))
     rc, out, cmd = compile_header(cxx, eigen, header)
     lines = out.splitlines()
     errors = [l for l in lines if ERROR_RE.search(l) and STOP_MARKER not in l]
@@ -86,35 +89,35 @@ def check(cxx, eigen, header, verbose):
     if expect == "OK":
         if rc != 0:
             first = errors[0] if errors else "exit code %d" % rc
-            return False, "FAIL %s: expected to compile, got: %s%s" % (name, first, detail)
+            return FAIL, "FAIL %s: expected to compile, got: %s%s" % (name, first, detail)
         if warnings:
-            return False, "FAIL %s: expected no warnings, got: %s%s" % (name, warnings[0], detail)
-        return True, "PASS %s (compiles)%s" % (name, detail)
+            return FAIL, "FAIL %s: expected no warnings, got: %s%s" % (name, warnings[0], detail)
+        return PASS, "PASS %s (compiles)%s" % (name, detail)
 
     if expect.startswith("WARNING "):
         text = expect[len("WARNING "):]
         if rc != 0:
             first = errors[0] if errors else "exit code %d" % rc
-            return False, "FAIL %s: expected to compile, got: %s%s" % (name, first, detail)
+            return FAIL, "FAIL %s: expected to compile, got: %s%s" % (name, first, detail)
         if text not in out:
-            return False, "FAIL %s: warning '%s' not printed%s" % (name, text, detail)
-        return True, "PASS %s (warns: %s)%s" % (name, text, detail)
+            return FAIL, "FAIL %s: warning '%s' not printed%s" % (name, text, detail)
+        return PASS, "PASS %s (warns: %s)%s" % (name, text, detail)
 
     expect = "' and '".join(expects)
     if rc == 0:
-        return False, "FAIL %s: expected an error containing '%s', but it compiled%s" % (
+        return FAIL, "FAIL %s: expected an error containing '%s', but it compiled%s" % (
             name, expect, detail)
     if not errors:
-        return False, "FAIL %s: compiler failed without an error line%s" % (name, detail)
+        return FAIL, "FAIL %s: compiler failed without an error line%s" % (name, detail)
     if not all(e in errors[0] for e in expects):
         later = any(all(e in error for e in expects) for error in errors[1:])
         where = "a later error" if later else "no error"
-        return False, "FAIL %s: first error is\n    %s\n  expected it to contain '%s' (%s has it)%s" % (
+        return FAIL, "FAIL %s: first error is\n    %s\n  expected it to contain '%s' (%s has it)%s" % (
             name, errors[0], expect, where, detail)
     if len(errors) > max_errors:
-        return False, "FAIL %s: %d errors, at most %d expected; the second is\n    %s%s" % (
+        return FAIL, "FAIL %s: %d errors, at most %d expected; the second is\n    %s%s" % (
             name, len(errors), max_errors, errors[1], detail)
-    return True, "PASS %s (%d error%s)%s" % (name, len(errors), "" if len(errors) == 1 else "s",
+    return PASS, "PASS %s (%d error%s)%s" % (name, len(errors), "" if len(errors) == 1 else "s",
                                              detail)
 
 
@@ -131,33 +134,33 @@ def main():
 
     headers = args.headers or sorted(
         h for h in glob.glob(os.path.join(HERE, "*.h")) if os.path.basename(h) != "fake_msgs.h")
-    passed = failed = 0
+    counts = {PASS: 0, FAIL: 0, SKIP: 0}
     cases = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
         results = pool.map(
             lambda h: check(args.cxx, args.eigen, os.path.abspath(h), args.verbose), headers)
-        for header, (ok, message) in zip(headers, results):
+        for header, (status, message) in zip(headers, results):
             print(message, flush=True)
-            cases.append((os.path.basename(header), ok, message))
-            if ok:
-                passed += 1
-            else:
-                failed += 1
-    print("%d passed, %d failed" % (passed, failed))
+            cases.append((os.path.basename(header), status, message))
+            counts[status] += 1
+    print("%d passed, %d failed, %d skipped" % (counts[PASS], counts[FAIL], counts[SKIP]))
     if args.junit:
         write_junit(args.junit, cases)
-    return 1 if failed else 0
+    return 1 if counts[FAIL] else 0
 
 
 def write_junit(path, cases):
     """One testcase per header, so catkin_test_results counts them like gtest cases."""
     import xml.etree.ElementTree as ET
     suite = ET.Element("testsuite", name="config_errors", tests=str(len(cases)),
-                       failures=str(sum(1 for c in cases if not c[1])), errors="0", skipped="0")
-    for name, ok, message in cases:
+                       failures=str(sum(1 for c in cases if c[1] == FAIL)), errors="0",
+                       skipped=str(sum(1 for c in cases if c[1] == SKIP)))
+    for name, status, message in cases:
         case = ET.SubElement(suite, "testcase", classname="config_errors", name=name)
-        if not ok:
+        if status == FAIL:
             ET.SubElement(case, "failure", message=message.splitlines()[0]).text = message
+        elif status == SKIP:
+            ET.SubElement(case, "skipped", message=message.splitlines()[0]).text = message
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     ET.ElementTree(suite).write(path, encoding="utf-8", xml_declaration=True)
 

@@ -352,11 +352,12 @@ class ReplayFaultTest(unittest.TestCase):
         write_small_bag(source, odom_value=float("nan"))
         lenient = self.replay(source, out_bag="")
         self.assertEqual(lenient.returncode, 0, lenient.stderr)
-        self.assertIn(" failed steps (filter reset), ", lenient.stdout)
+        self.assertIn(" 0 failed steps, 0 filter resets, ", lenient.stdout)
         self.assertIn(", 100 dropped values ", lenient.stdout)
         strict = self.replay(source, "--strict", csv="", out_bag="")
         self.assertEqual(strict.returncode, 1, strict.stderr)
-        self.assertIn("--strict: 0 failed steps, 100 dropped values", strict.stderr)
+        self.assertIn("--strict: 0 failed steps, 0 filter resets, 100 dropped values",
+                      strict.stderr)
         clean = self.replay(SHIPPED, "--strict", csv="", out_bag="")
         self.assertEqual(clean.returncode, 0, clean.stdout + clean.stderr)
 

@@ -81,7 +81,7 @@ class ExtendedKalmanFilter
     Matrix<N, N> A(n, n);
     transitionJacobian(model_, this->x_, this->u_, A);
     model_.transition(this->x_, this->u_, x);
-    P = A * this->P_ * A.transpose() + this->Q_;
+    propagateCovariance<N>(A, this->P_, this->Q_, P);
   }
 
   Model model_;

@@ -90,4 +90,45 @@ void linearCorrection(Vector<N>& x, Matrix<N, N>& P, const Matrix<M, N>& H, cons
   P = IKHP * IKH.transpose() + K * R * K.transpose();
 }
 
+/// Covariance time update P_next = A P A^T + Q, shared by KF and EKF.
+template <int N>
+void propagateCovariance(const Matrix<N, N>& A, const Matrix<N, N>& P, const Matrix<N, N>& Q,
+                         Matrix<N, N>& next) {
+  next = A * P * A.transpose() + Q;
+}
+
+// The size-only steps above are compiled once in the library for the state sizes N = 1..9
+// and measurement sizes M = 1..6 that configurations use most (src/kalman_steps_*.cpp): a
+// node's translation unit then does not instantiate them again, which halves a Kalman-type
+// configuration's compile time. Other sizes are instantiated where they are used, as before.
+#define SF_ESTIMATION_FOR_MEASUREMENT_SIZES(X, N) X(N, 1) X(N, 2) X(N, 3) X(N, 4) X(N, 5) X(N, 6)
+#define SF_ESTIMATION_CORRECTION(N, M)                                                        \
+  template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&,        \
+                                       const Vector<M>&, const Matrix<M, M>&);
+#define SF_ESTIMATION_KALMAN_STEPS(N)                                                         \
+  template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&,              \
+                                       const Matrix<N, N>&, Matrix<N, N>&);                   \
+  SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_CORRECTION, N)
+#ifndef SF_ESTIMATION_INSTANTIATING_KALMAN_STEPS
+// "extern" applies to the first declaration only; each size's declarations are listed apart.
+#define SF_ESTIMATION_EXTERN_CORRECTION(N, M)                                                 \
+  extern template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&, \
+                                              const Vector<M>&, const Matrix<M, M>&);
+#define SF_ESTIMATION_EXTERN_STEPS(N)                                                         \
+  extern template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&,       \
+                                              const Matrix<N, N>&, Matrix<N, N>&);            \
+  SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_EXTERN_CORRECTION, N)
+SF_ESTIMATION_EXTERN_STEPS(1)
+SF_ESTIMATION_EXTERN_STEPS(2)
+SF_ESTIMATION_EXTERN_STEPS(3)
+SF_ESTIMATION_EXTERN_STEPS(4)
+SF_ESTIMATION_EXTERN_STEPS(5)
+SF_ESTIMATION_EXTERN_STEPS(6)
+SF_ESTIMATION_EXTERN_STEPS(7)
+SF_ESTIMATION_EXTERN_STEPS(8)
+SF_ESTIMATION_EXTERN_STEPS(9)
+#undef SF_ESTIMATION_EXTERN_STEPS
+#undef SF_ESTIMATION_EXTERN_CORRECTION
+#endif
+
 }  // namespace estimation

@@ -66,7 +66,7 @@ class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
   /// Time update of the current belief: x(k|k-1) = A x + B u, P(k|k-1) = A P A^T + Q.
   void predict(Vector<N>& x, Matrix<N, N>& P) const {
     x = A_ * this->x_ + B_ * this->u_;
-    P = A_ * this->P_ * A_.transpose() + this->Q_;
+    propagateCovariance<N>(A_, this->P_, this->Q_, P);
   }
 
   Matrix<N, N> A_;

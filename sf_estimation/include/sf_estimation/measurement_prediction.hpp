@@ -92,6 +92,23 @@ double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction, In
   return y * y / s;
 }
 
+// The NIS of a whole measurement vector is compiled once in the library for the measurement
+// sizes 1..6 (src/mahalanobis_distances.cpp); other sizes are instantiated where used.
+#ifndef SF_ESTIMATION_INSTANTIATING_MAHALANOBIS
+extern template double squaredMahalanobisDistance<1>(const MeasurementPrediction<1>&,
+                                                     const Measurement<1>&);
+extern template double squaredMahalanobisDistance<2>(const MeasurementPrediction<2>&,
+                                                     const Measurement<2>&);
+extern template double squaredMahalanobisDistance<3>(const MeasurementPrediction<3>&,
+                                                     const Measurement<3>&);
+extern template double squaredMahalanobisDistance<4>(const MeasurementPrediction<4>&,
+                                                     const Measurement<4>&);
+extern template double squaredMahalanobisDistance<5>(const MeasurementPrediction<5>&,
+                                                     const Measurement<5>&);
+extern template double squaredMahalanobisDistance<6>(const MeasurementPrediction<6>&,
+                                                     const Measurement<6>&);
+#endif
+
 /// True if Filter has predictMeasurement(MeasurementPrediction<MeasurementSize>&) const.
 template <class Filter, class = void>
 struct HasMeasurementPrediction : std::false_type {};

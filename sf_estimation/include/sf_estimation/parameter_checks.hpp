@@ -12,6 +12,11 @@
 
 namespace estimation {
 
+/// The largest magnitude of a covariance entry (Q, R, P0): beyond it a filter's products
+/// (P + Q, H P H^T, the Cholesky factor's squares) overflow to infinity and every step fails.
+/// 1e100 is far beyond any physical variance and still leaves 1e200 of headroom.
+constexpr double kMaxCovarianceEntry = 1e100;
+
 inline std::string sizeText(Index rows, Index cols) {
   return std::to_string(rows) + "x" + std::to_string(cols);
 }
@@ -28,8 +33,10 @@ void requireSize(const std::string& method, const std::string& name,
   }
 }
 
-/// A covariance must be symmetric and positive semi-definite (positive definite when
-/// `strict`, e.g. the measurement noise R, whose inverse the filters use). Not a template:
+/// A covariance must be finite with entries of magnitude at most kMaxCovarianceEntry,
+/// symmetric (to a relative tolerance) and positive semi-definite (positive definite when
+/// `strict`, e.g. the measurement noise R, whose inverse the Kalman-type filters use). Each
+/// refusal names the method and the matrix. Not a template:
 /// compiled once in the library, whatever the filters' sizes (src/parameter_checks.cpp).
 void requireCovariance(const std::string& method, const std::string& name,
                        const Eigen::Ref<const Eigen::MatrixXd>& value, Index size, bool strict);

@@ -1,10 +1,13 @@
 // SIR particle filter (thesis Algorithms 3.4 and 3.5) with Gaussian process noise and
 // Gaussian likelihood, both with full covariance. Weights are kept as logarithms so that a
 // very accurate sensor does not underflow every weight to zero; resampling is systematic and
-// happens when the effective sample size falls below a threshold. All buffers are allocated
-// at construction, none in a step.
+// happens when the effective sample size is at or below a threshold (N_eff <= threshold * N).
+// The reported state and covariance are the moments of the weighted particles before
+// resampling (resampling only adds Monte-Carlo noise to them). All buffers are allocated at
+// construction, none in a step.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -31,7 +34,8 @@ struct ParticleFilterParameters {
   static constexpr Index kMaxParticles = 1000000;
   Index particles = 1000;
   std::uint64_t seed = 42;
-  /// Resample when N_eff < threshold * particles (0 = never, 1 = every step).
+  /// Resample when N_eff <= threshold * particles, inclusive (0 = never, as N_eff >= 1;
+  /// 1 = every step, as N_eff <= particles).
   double resamplingThreshold = 0.5;
 };
 
@@ -104,7 +108,8 @@ class ParticleFilterSIR {
   const Vector<L>& control() const { return u_; }
   const Particles& particles() const { return particles_; }
   const Eigen::VectorXd& logWeights() const { return logWeights_; }
-  /// Effective sample size after the last step, before any resampling.
+  /// Effective sample size after the last step, before any resampling: 1 / sum w_i^2,
+  /// capped at the particle count (rounding can exceed it by an ulp for equal weights).
   double effectiveSampleSize() const { return effectiveSampleSize_; }
   bool resampledLastStep() const { return resampled_; }
   const AngleMask<N>& angleStates() const { return angleStates_; }
@@ -210,10 +215,11 @@ class ParticleFilterSIR {
 
     particles_.swap(scratch_);
     logWeights_.swap(newLogWeights_);
-    effectiveSampleSize_ = 1.0 / weights_.squaredNorm();
-    resampled_ = effectiveSampleSize_ < params_.resamplingThreshold * static_cast<double>(p);
-    if (resampled_) resample();
+    effectiveSampleSize_ = std::min(1.0 / weights_.squaredNorm(), static_cast<double>(p));
+    // The moments of the weighted particles, before resampling replaces them by copies.
     updateMoments();
+    resampled_ = effectiveSampleSize_ <= params_.resamplingThreshold * static_cast<double>(p);
+    if (resampled_) resample();
     if (weightsVanished) ++repairs_.weights;
   }
 

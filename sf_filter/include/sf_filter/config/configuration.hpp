@@ -57,6 +57,8 @@
 //   ALIGN_BY_STAMP, MAX_MEASUREMENT_LAG      o    o    o    o    o    o    o
 //   INPUT_TIMEOUT, INPUT_RANGE               o    o    o    o    o    o    o
 //   ANGLE_STATES, ANGLE_INPUTS               o    o    o    o    x    x    x
+//   DERIVED_INPUTS, INPUT_COVARIANCE         o    o    o    o    o    o    o
+//     (ROLL, PITCH, YAW derived inputs:      o    o    o    o    x    x    x)
 //   R required (#error if missing), o optional, c required if TOPICS_IN_CTRL is defined,
 //   x not allowed (#error), - not used (a "#pragma GCC warning" says it is ignored).
 //   T, x and u must not be macros (#error): the expressions use them.
@@ -105,7 +107,8 @@
 //   INPUT_GATE                  ((i)(threshold)) per gated input: chi-square threshold > 0 on
 //                               the squared Mahalanobis distance.          Default no gate.
 //   ALIGN_BY_STAMP              (i)(j)...: inputs aligned by header.stamp (stamped types).
-//   MAX_MEASUREMENT_LAG         ms >= 0 a period waits for stamped values.  Default 0.
+//   MAX_MEASUREMENT_LAG         ms >= 0 a period waits for stamped values.  Default one
+//                               ESTIMATION_PERIOD with ALIGN_BY_STAMP, else 0.
 //   INPUT_TIMEOUT               ((i)(ms)) per input with a sensor timeout, ms > 0: with no
 //                               value accepted for longer the input is timed out (missing,
 //                               no HOLD/FILL substitute, diagnostic WARN). Default none.
@@ -115,6 +118,18 @@
 //                               wrapped to (-pi, pi], averaged on the circle. Default none.
 //   ANGLE_INPUTS                (i)(j)...: TOPICS_IN entries measuring an angle in radians;
 //                               their innovations are wrapped.             Default none.
+//   DERIVED_INPUTS              ((i)(quantity)(mode)) per TOPICS_IN entry whose field is a
+//                               quaternion or pose member: quantity X Y Z (pose position) or
+//                               ROLL PITCH YAW (angle inputs automatically), mode ABSOLUTE or
+//                               DIFFERENTIAL (change since the topic's previous message, in the
+//                               previous pose's frame; derived_inputs.hpp).  Default none.
+//   TWIST_OUT                   (v index)(omega index): the published Odometry's twist and its
+//                               covariance from the state (requires POSE_OUT;
+//                               twist_output.hpp).                          Default: unknown
+//                               twist (zero, variance 1e6).
+//   INPUT_COVARIANCE            ((i)(covariance array member)(entry)) per TOPICS_IN entry taking
+//                               its variance from the message's covariance array; "unknown"
+//                               arrays (all zero, -1 first) fall back to R (input_covariance.hpp).
 //
 // STATE SIZE n: rows of STATE_TRANSITION_MATRIX (KF); entries of STATE_TRANSITION_MODEL
 //   (EKF, UKF, PF); m (MA, MM: one averaged output per input); 1 (CWA: one fused value).
@@ -251,4 +266,9 @@
 #include "sf_filter/config/detail/model.hpp"
 #include "sf_filter/config/detail/parameters.hpp"
 #include "sf_filter/config/detail/topics.hpp"
+
+// After the inputs (they read Input<i>::Field and the message types).
+#include "sf_filter/config/derived_inputs.hpp"
+#include "sf_filter/config/input_covariance.hpp"
+#include "sf_filter/config/twist_output.hpp"
 #endif

@@ -13,9 +13,17 @@
 namespace sf_filter {
 
 struct FusionCoreOptions {
-  double period = 0.1;  ///< estimation period [s]
+  /// Bounds of period [s]: 0.1 ms .. 1 h (a period outside them is a unit mistake: 1e-6 meant
+  /// as ms, 50 meant as ms, and would load a core or never estimate).
+  static constexpr double kMinPeriod = 1e-4;
+  static constexpr double kMaxPeriod = 3600.0;
+  /// Upper bound of maxCatchUpPeriods: one advanceTo() never estimates more periods.
+  static constexpr std::uint64_t kMaxCatchUpLimit = 100000;
+
+  double period = 0.1;  ///< estimation period [s], kMinPeriod .. kMaxPeriod
   /// A forward clock jump longer than this many periods is skipped (one estimate) instead
   /// of estimating every missed period, so a stalled clock never floods the output.
+  /// 1 .. kMaxCatchUpLimit.
   std::uint64_t maxCatchUpPeriods = 100;
   /// One entry per input, or none: every input AVERAGE, by arrival time, without gate.
   std::vector<InputOptions> inputs;
@@ -28,6 +36,13 @@ struct FusionCoreOptions {
   /// Periods over which the NIS is averaged (nis_window.hpp); 0: not computed. Costs one
   /// measurement prediction per period when no gate or FILL needs it anyway.
   std::size_t nisWindow = 0;
+  /// A step the estimator rejects (EstimationError) leaves the filter as it was: the period's
+  /// estimate is the last good one, flagged Estimate::stepFailed (for the Kalman-type
+  /// filters with its covariance inflated by Q: the period passed without a time update). Only
+  /// after this many rejected steps in a row does the filter restart from its initial belief (a
+  /// fault that waiting does not mend); counted by filterResets(). At least 1 (1: restart at
+  /// once).
+  std::uint64_t maxConsecutiveFailures = 10;
 };
 
 }  // namespace sf_filter

@@ -6,6 +6,7 @@
 // through Eigen::Map views of the core's own storage.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -32,6 +33,8 @@ struct EstimateRef {
   Eigen::Map<const Eigen::MatrixXd> covariance;
   Index presentInputs;      ///< inputs with a measured value (not gated) in the period
   Index substitutedInputs;  ///< inputs given a HOLD or FILL substitute
+  bool stepFailed;          ///< the step was rejected: the last good estimate (fusion_core.hpp)
+  bool filterReset;         ///< ... and the filter restarted from its initial belief
 };
 
 /// A non-owning, allocation-free callback for the estimates of advanceTo().
@@ -57,6 +60,13 @@ class FusionEngine {
                                    std::optional<double> variance, double stamp) = 0;
   virtual Rejection addControl(Index control, double value) = 0;
   virtual void reset() = 0;
+  /// Replaces the pose part of the current belief (set_pose, initialpose): the state
+  /// variables `indices` (x, y, heading) get `xyYaw`, their 3 x 3 covariance block
+  /// `covariance`, and their correlations with the other state variables become 0. False
+  /// (belief unchanged) when the filter cannot be re-initialised (particle filter, averaging
+  /// methods); throws estimation::ParameterError for a covariance that is not a covariance.
+  virtual bool setPose(const std::array<int, 3>& indices, const std::array<double, 3>& xyYaw,
+                       const Eigen::Matrix3d& covariance) = 0;
 
   virtual EstimateRef lastEstimate() const = 0;
   virtual const InputCounters& counters(Index input) const = 0;
@@ -69,6 +79,12 @@ class FusionEngine {
   virtual std::uint64_t nisFailures() const = 0;
   virtual std::uint64_t clockResets() const = 0;
   virtual std::uint64_t estimationFailures() const = 0;
+  virtual std::uint64_t filterResets() const = 0;
+  virtual std::uint64_t skippedGaps() const = 0;
+  virtual std::uint64_t skippedPeriods() const = 0;
+  virtual std::uint64_t periodsDue(double now) const = 0;
+  /// FusionCore::skipGap: crosses a forward gap to `now` with one estimate.
+  virtual ClockEvent skipGap(double now, EstimateCallback onEstimate) = 0;
   virtual const std::string& lastFailure() const = 0;
   virtual std::uint64_t controlNonFinite() const = 0;
   virtual estimation::NumericalRepairs numericalRepairs() const = 0;

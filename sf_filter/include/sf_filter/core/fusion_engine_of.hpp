@@ -3,13 +3,23 @@
 // unit of a configuration header; everything here forwards to FusionCore<Filter>.
 #pragma once
 
+#include <array>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
 
 namespace sf_filter {
+
+/// Whether Filter can replace its belief (the Kalman filter family: setBelief(x, P)).
+template <class Filter, class = void>
+struct HasSetBelief : std::false_type {};
+template <class Filter>
+struct HasSetBelief<Filter, std::void_t<decltype(std::declval<Filter&>().setBelief(
+                                std::declval<const Filter&>().state(),
+                                std::declval<const Filter&>().covariance()))>> : std::true_type {};
 
 template <class Filter>
 class FusionEngineOf final : public FusionEngine {
@@ -23,6 +33,9 @@ class FusionEngineOf final : public FusionEngine {
     return core_.advanceTo(now,
                            [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
   }
+  ClockEvent skipGap(double now, EstimateCallback onEstimate) override {
+    return core_.skipGap(now, [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
+  }
   Rejection addMeasurement(Index input, double now, double value, std::optional<double> variance,
                            double stamp) override {
     return core_.addMeasurement(input, now, value, variance, stamp);
@@ -31,6 +44,29 @@ class FusionEngineOf final : public FusionEngine {
     return core_.addControl(control, value);
   }
   void reset() override { core_.reset(); }
+  bool setPose(const std::array<int, 3>& indices, const std::array<double, 3>& xyYaw,
+               const Eigen::Matrix3d& covariance) override {
+    if constexpr (HasSetBelief<Filter>::value) {
+      const Filter& filter = core_.filter();
+      auto x = filter.state();
+      auto P = filter.covariance();
+      for (int r = 0; r < 3; ++r) {
+        x(indices[r]) = xyYaw[static_cast<std::size_t>(r)];
+        P.row(indices[r]).setZero();
+        P.col(indices[r]).setZero();
+      }
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) P(indices[r], indices[c]) = covariance(r, c);
+      }
+      core_.setBelief(x, P);  // the next period starts from it; the last estimate shows it
+      return true;
+    } else {
+      static_cast<void>(indices);
+      static_cast<void>(xyYaw);
+      static_cast<void>(covariance);
+      return false;
+    }
+  }
 
   EstimateRef lastEstimate() const override { return view(core_.lastEstimate()); }
   const InputCounters& counters(Index input) const override { return core_.counters(input); }
@@ -45,6 +81,10 @@ class FusionEngineOf final : public FusionEngine {
   std::uint64_t nisFailures() const override { return core_.nisFailures(); }
   std::uint64_t clockResets() const override { return core_.clockResets(); }
   std::uint64_t estimationFailures() const override { return core_.estimationFailures(); }
+  std::uint64_t filterResets() const override { return core_.filterResets(); }
+  std::uint64_t skippedGaps() const override { return core_.skippedGaps(); }
+  std::uint64_t skippedPeriods() const override { return core_.skippedPeriods(); }
+  std::uint64_t periodsDue(double now) const override { return core_.periodsDue(now); }
   const std::string& lastFailure() const override { return core_.lastFailure(); }
   std::uint64_t controlNonFinite() const override { return core_.controlNonFinite(); }
   estimation::NumericalRepairs numericalRepairs() const override {
@@ -71,7 +111,9 @@ class FusionEngineOf final : public FusionEngine {
                        Eigen::Map<const Eigen::VectorXd>(e.state.data(), n),
                        Eigen::Map<const Eigen::MatrixXd>(e.covariance.data(), n, n),
                        e.presentInputs,
-                       e.substitutedInputs};
+                       e.substitutedInputs,
+                       e.stepFailed,
+                       e.filterReset};
   }
 
   Core core_;

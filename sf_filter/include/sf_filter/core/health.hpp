@@ -9,7 +9,9 @@
 //          dropped, or some failed the Mahalanobis gate
 //   OK     otherwise
 // Estimation:
-//   ERROR  an estimation step failed (the filter was reset), or the covariance is not finite
+//   ERROR  an estimation step failed (the last good estimate was kept; after
+//          FusionCore::Options::maxConsecutiveFailures in a row the filter was reset), or the
+//          covariance is not finite
 //   WARN   the clock jumped backwards (filter reset); the filter repaired its numbers
 //          (covariance made positive semi-definite, particle weights all vanished, UKF
 //          sigma spread widened: numerical_repairs.hpp); the NIS window is full and its mean
@@ -124,6 +126,7 @@ inline HealthStatus inputHealth(const InputOptions& o, const InputInterval& in) 
 struct EstimationTotals {
   std::uint64_t estimates = 0;  ///< successful steps
   std::uint64_t failures = 0;
+  std::uint64_t filterResets = 0;  ///< restarts after too many failures in a row
   std::uint64_t clockResets = 0;
   std::uint64_t nisFailures = 0;
   std::uint64_t controlDropped = 0;
@@ -148,8 +151,13 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
   const std::uint64_t steps = c.estimates - b.estimates;
   const double stepSeconds = steps ? (c.estimatorSeconds - b.estimatorSeconds) / steps : 0.0;
   if (c.failures > b.failures) {
-    s.raise(HealthLevel::Error, std::to_string(c.failures - b.failures) +
-                                    " estimation steps failed, filter reset: " + e.lastFailure);
+    const std::uint64_t resets = c.filterResets - b.filterResets;
+    s.raise(HealthLevel::Error,
+            std::to_string(c.failures - b.failures) + " estimation steps failed, " +
+                (resets > 0
+                     ? "filter reset " + std::to_string(resets) + " times after repeated failures"
+                     : std::string("last good estimate kept")) +
+                ": " + e.lastFailure);
   }
   if (!std::isfinite(e.covarianceTrace)) s.raise(HealthLevel::Error, "covariance not finite");
   if (c.clockResets > b.clockResets) {
@@ -195,6 +203,7 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
   }
   s.add("clock resets", c.clockResets);
   s.add("estimation failures", c.failures);
+  s.add("filter resets", c.filterResets);
   s.add("last failure", e.lastFailure.empty() ? std::string("none") : e.lastFailure);
   s.add("control values dropped", c.controlDropped);
   s.add("numerical repairs", c.repairs.total());

@@ -8,6 +8,11 @@
 
 namespace sf_filter {
 
+/// The largest variance a value may carry (the variance field of its message): a larger one is
+/// dropped as bad variance. 1e100 says "no information" as well as infinity would, and the
+/// average of up to 2^32 values per period (their variances summed) cannot overflow.
+constexpr double kMaxVariance = 1e100;
+
 /// Why a value was refused by the fusion core (None: accepted).
 enum class Rejection {
   None,
@@ -28,7 +33,7 @@ inline const char* toString(Rejection r) {
     case Rejection::NonFinite:
       return "value is not finite";
     case Rejection::BadVariance:
-      return "variance is not finite and positive";
+      return "variance is not finite, positive and at most 1e100";
     case Rejection::OutOfRange:
       return "value outside the input's plausible range";
     case Rejection::OutOfOrder:
@@ -46,23 +51,24 @@ inline const char* toString(Rejection r) {
 }
 
 struct InputCounters {
-  std::uint64_t received = 0;         ///< values handed to the core
-  std::uint64_t used = 0;             ///< values that entered an estimate
-  std::uint64_t nonFinite = 0;        ///< dropped: NaN or infinite value
-  std::uint64_t badVariance = 0;      ///< dropped: variance field zero, negative or non-finite
-  std::uint64_t outOfRange = 0;       ///< dropped: value outside the plausible range
-  std::uint64_t outOfOrder = 0;       ///< dropped: stamp older than the previous one of this input
-  std::uint64_t duplicate = 0;        ///< dropped: stamp equal to the previous one of this input
-  std::uint64_t future = 0;           ///< dropped: stamp ahead of the clock by more than allowed
-  std::uint64_t late = 0;             ///< dropped: stamp in a period already estimated
-  std::uint64_t gated = 0;            ///< values of periods whose value failed the gate
-  std::uint64_t superseded = 0;       ///< LAST, SAMPLED: values replaced by a newer one in a period
-  std::uint64_t substituted = 0;      ///< periods given a HOLD or FILL substitute (not values)
+  std::uint64_t received = 0;     ///< values handed to the core
+  std::uint64_t used = 0;         ///< values that entered an estimate
+  std::uint64_t nonFinite = 0;    ///< dropped: NaN or infinite value
+  std::uint64_t badVariance = 0;  ///< dropped: variance field zero, negative, NaN or > kMaxVariance
+  std::uint64_t outOfRange = 0;   ///< dropped: value outside the plausible range
+  std::uint64_t outOfOrder = 0;   ///< dropped: stamp older than the previous one of this input
+  std::uint64_t duplicate = 0;    ///< dropped: stamp equal to the previous one of this input
+  std::uint64_t future = 0;       ///< dropped: stamp ahead of the clock by more than allowed
+  std::uint64_t late = 0;         ///< dropped: stamp in a period already estimated
+  std::uint64_t gated = 0;        ///< values of periods whose value failed the gate
+  std::uint64_t superseded = 0;   ///< LAST, SAMPLED: values replaced by a newer one in a period
+  std::uint64_t substituted = 0;  ///< periods given a HOLD or FILL substitute (not values)
   std::uint64_t aheadOfClock = 0;     ///< stamps beyond the open periods, used in the newest one
   std::uint64_t timedOutPeriods = 0;  ///< periods estimated while the input was timed out
   double lastArrival = std::numeric_limits<double>::quiet_NaN();
-  /// Arrival of the newest value that passed the checks on arrival (NaN: none since the start
-  /// or the last reset); the sensor timeout counts from it.
+  /// Arrival of the newest value that reached the filter (NaN: none since the start or the
+  /// last reset): set when its period is estimated, for a value that passed the checks on
+  /// arrival, was not late and passed the gate. The sensor timeout counts from it.
   double lastAccepted = std::numeric_limits<double>::quiet_NaN();
   double lastStamp = -std::numeric_limits<double>::infinity();
 

@@ -9,7 +9,11 @@
 #include <optional>
 #include <string>
 
+#include <vector>
+
 #include <sf_estimation/types.hpp>
+
+#include "sf_filter/config/extractors/pose_difference.hpp"
 
 namespace sf_filter {
 
@@ -28,6 +32,32 @@ class MessageSink {
   virtual std::optional<double> rotated(estimation::Index input, const std::string& frame,
                                         std::uint32_t sec, std::uint32_t nsec,
                                         const std::array<double, 3>& vector, int axis) = 0;
+
+  /// The previous pose of DERIVED_INPUTS DIFFERENTIAL input `input` (kept by the sink, so
+  /// that every node and replay run starts the differences anew).
+  sf_config::extractors::PoseMemory& previousPose(estimation::Index input) {
+    const auto i = static_cast<std::size_t>(input);
+    if (previousPoses_.size() <= i) previousPoses_.resize(i + 1);
+    return previousPoses_[i];
+  }
+  /// Counts a message of `input` whose covariance was unknown (INPUT_COVARIANCE: all zero or
+  /// -1 first), so that the header's R was used.
+  void countCovarianceFallback(estimation::Index input) {
+    const auto i = static_cast<std::size_t>(input);
+    if (covarianceFallbacks_.size() <= i) covarianceFallbacks_.resize(i + 1, 0);
+    ++covarianceFallbacks_[i];
+  }
+  /// Messages of `input` whose unknown covariance fell back to the header's R.
+  std::uint64_t covarianceFallbacks(estimation::Index input) const {
+    const auto i = static_cast<std::size_t>(input);
+    return i < covarianceFallbacks_.size() ? covarianceFallbacks_[i] : 0;
+  }
+  /// Forgets the previous poses of the differential inputs (after a reset of the estimate).
+  void forgetPreviousPoses() { previousPoses_.clear(); }
+
+ private:
+  std::vector<sf_config::extractors::PoseMemory> previousPoses_;
+  std::vector<std::uint64_t> covarianceFallbacks_;
 };
 
 /// One subscribed topic: its message type and the reader of its serialized messages.

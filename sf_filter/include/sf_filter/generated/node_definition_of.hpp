@@ -14,10 +14,10 @@
 #include <utility>
 #include <vector>
 
-#include <boost/preprocessor/seq/elem.hpp>
-#include <boost/preprocessor/seq/size.hpp>
 #include <ros/message_traits.h>
 #include <ros/serialization.h>
+#include <boost/preprocessor/seq/elem.hpp>
+#include <boost/preprocessor/seq/size.hpp>
 
 #include "sf_filter/config/filter_binding.hpp"
 #include "sf_filter/config/frame_alignment.hpp"
@@ -81,6 +81,57 @@ std::optional<double> inputValue(const Message& msg, MessageSink& sink) {
   }
 }
 
+/// The variance input In's message carries: its INPUT_COVARIANCE entry (nullopt and counted
+/// when the message's covariance is unknown), its variance field, or none.
+template <class In, class Message>
+std::optional<double> inputVariance(const Message& msg, MessageSink& sink) {
+  using Source = sf_config::CovarianceSource<In::index>;
+  if constexpr (Source::given) {
+    if constexpr (Source::valid) {
+      const std::optional<double> variance = Source::variance(msg);
+      if (!variance) sink.countCovarianceFallback(In::index);
+      return variance;
+    } else {
+      return std::nullopt;  // not built: a static_assert of the configuration reported why
+    }
+  } else if constexpr (In::has_variance) {
+    return In::variance(msg);
+  } else {
+    return std::nullopt;
+  }
+}
+
+/// Reads input In from `msg` into the sink: a DERIVED_INPUTS quantity (a differential one
+/// from the change since the topic's previous message), or the field (or rotated vector).
+template <class In, class Message>
+void readInput(const Message& msg, MessageSink& sink, double now) {
+  using Derivation = sf_config::Derivation<In::index>;
+  static_assert(!(Derivation::derived && sf_config::FrameAlignment<In::index>::aligned),
+                "DERIVED_INPUTS and FRAME_ALIGNED_INPUTS: an input is listed in both; a derived "
+                "input reads a quaternion or pose member, which is not rotated");
+  const std::optional<double> variance = inputVariance<In>(msg, sink);
+  const double stamp = stampOf(msg);
+  if constexpr (Derivation::derived) {
+    if constexpr (Derivation::valid) {
+      const sf_config::extractors::Pose pose = Derivation::pose(In::member(msg));
+      if constexpr (Derivation::differential) {
+        const std::optional<sf_config::extractors::Sample> sample =
+            sf_config::extractors::differentialSample(Derivation::quantity, pose, variance, stamp,
+                                                      sink.previousPose(In::index));
+        if (sample) sink.measurement(In::index, now, sample->value, sample->variance, stamp);
+      } else {
+        sink.measurement(In::index, now,
+                         sf_config::extractors::absoluteValue(Derivation::quantity, pose), variance,
+                         stamp);
+      }
+    }
+  } else {
+    const std::optional<double> value = inputValue<In>(msg, sink);
+    if (!value) return;
+    sink.measurement(In::index, now, *value, variance, stamp);
+  }
+}
+
 /// One reader per distinct topic of TOPICS_IN and of TOPICS_IN_CTRL; a reader takes every
 /// field used from its topic.
 inline std::vector<TopicReader> topicReaders() {
@@ -95,13 +146,7 @@ inline std::vector<TopicReader> topicReaders() {
         const Message msg = deserialize<Message>(data, size);
         sf_config::forEachInput([&](auto in) {
           using In = decltype(in);
-          if constexpr (In::first_same_topic == Owner::index) {
-            const std::optional<double> value = inputValue<In>(msg, sink);
-            if (!value) return;
-            std::optional<double> variance;
-            if constexpr (In::has_variance) variance = In::variance(msg);
-            sink.measurement(In::index, now, *value, variance, stampOf(msg));
-          }
+          if constexpr (In::first_same_topic == Owner::index) readInput<In>(msg, sink, now);
         });
       };
       readers.push_back(std::move(reader));
@@ -116,7 +161,8 @@ inline std::vector<TopicReader> topicReaders() {
         const Message msg = deserialize<Message>(data, size);
         sf_config::forEachControl([&](auto in) {
           using In = decltype(in);
-          if constexpr (In::first_same_topic == Owner::index) sink.control(In::index, In::value(msg));
+          if constexpr (In::first_same_topic == Owner::index)
+            sink.control(In::index, In::value(msg));
         });
       };
       readers.push_back(std::move(reader));
@@ -147,9 +193,9 @@ inline FilterParameters toRunTime(const sf_config::Parameters& p) {
 template <class Fixed>
 void assignChecked(Fixed& to, const Eigen::MatrixXd& from, const char* name) {
   if (from.rows() != to.rows() || from.cols() != to.cols()) {
-    throw estimation::ParameterError(std::string(name) + ": expected " +
-                                     std::to_string(to.rows()) + "x" + std::to_string(to.cols()) +
-                                     ", found " + std::to_string(from.rows()) + "x" +
+    throw estimation::ParameterError(std::string(name) + ": expected " + std::to_string(to.rows()) +
+                                     "x" + std::to_string(to.cols()) + ", found " +
+                                     std::to_string(from.rows()) + "x" +
                                      std::to_string(from.cols()));
   }
   to = from;
@@ -178,8 +224,14 @@ inline std::vector<std::string> inputNames() {
   sf_config::forEachInput([&](auto in) {
     using In = decltype(in);
     using Align = sf_config::FrameAlignment<In::index>;
+    using Derivation = sf_config::Derivation<In::index>;
     if constexpr (Align::aligned) {
       names.push_back(std::string(In::topic) + " " + std::string(Align::member));
+    } else if constexpr (Derivation::derived) {
+      constexpr const char* kQuantities[] = {"x", "y", "z", "roll", "pitch", "yaw"};
+      names.push_back(std::string(In::topic) + " " + std::string(In::field) + " " +
+                      kQuantities[static_cast<int>(Derivation::quantity)] +
+                      (Derivation::differential ? " differential" : ""));
     } else {
       names.push_back(std::string(In::topic) + " " + std::string(In::field));
     }
@@ -201,10 +253,11 @@ inline NodeDefinition nodeDefinition() {
     description.outputs.emplace_back(std::string(Out::topic), Out::state_index);
   });
 #ifdef POSE_OUT
-  description.pose = std::array<int, 3>{BOOST_PP_SEQ_ELEM(0, POSE_OUT),
-                                        BOOST_PP_SEQ_ELEM(1, POSE_OUT),
-                                        BOOST_PP_SEQ_ELEM(2, POSE_OUT)};
+  description.pose =
+      std::array<int, 3>{BOOST_PP_SEQ_ELEM(0, POSE_OUT), BOOST_PP_SEQ_ELEM(1, POSE_OUT),
+                         BOOST_PP_SEQ_ELEM(2, POSE_OUT)};
 #endif
+  if constexpr (sf_config::kHasTwistOut) description.twist = sf_config::kTwistOut;
   d.capabilities.canPredict = estimation::HasMeasurementPrediction<Filter>::value;
   d.capabilities.hasStamp.assign(sf_config::kInputHasStamp.begin(),
                                  sf_config::kInputHasStamp.end());

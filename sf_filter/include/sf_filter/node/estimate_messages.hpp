@@ -3,11 +3,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
-#include <Eigen/Core>
 #include <nav_msgs/Odometry.h>
 #include <tf2/LinearMath/Quaternion.h>
+#include <Eigen/Core>
 
 #include <sf_pkg/OutputEntityStamped.h>
 #include <sf_pkg/StateEstimateStamped.h>
@@ -44,11 +45,18 @@ sf_pkg::StateEstimateStamped makeStateEstimate(const Estimate& e, const std::str
   return msg;
 }
 
+/// Variance of the Odometry's pose and twist components the state does not hold.
+constexpr double kUnknownVariance = 1e6;
+
 /// Planar pose (x, y, heading state indices) as nav_msgs/Odometry. The covariance block of
-/// (x, y, yaw) comes from the state; z, roll and pitch are marked unknown (1e6).
+/// (x, y, yaw) comes from the state; z, roll and pitch are marked unknown (1e6). With `twist`
+/// (TWIST_OUT: v, omega state indices) twist.linear.x, twist.angular.z and their covariance
+/// block come from the state; every other twist component, and all of them without `twist`,
+/// is zero with the variance 1e6 (unknown, never a certain zero).
 template <class Estimate>
 nav_msgs::Odometry makeOdometry(const Estimate& e, const std::array<int, 3>& pose,
-                                const std::string& frame, const std::string& childFrame) {
+                                const std::string& frame, const std::string& childFrame,
+                                const std::optional<std::array<int, 2>>& twist = std::nullopt) {
   const auto [ix, iy, ith] = pose;
   tf2::Quaternion q;
   q.setRPY(0.0, 0.0, e.state(ith));
@@ -70,7 +78,21 @@ nav_msgs::Odometry makeOdometry(const Estimate& e, const std::array<int, 3>& pos
           e.covariance(index[r], index[c]);
     }
   }
-  for (int k : {2, 3, 4}) odom.pose.covariance[static_cast<std::size_t>(k * 7)] = 1e6;
+  for (int k : {2, 3, 4}) odom.pose.covariance[static_cast<std::size_t>(k * 7)] = kUnknownVariance;
+  for (int k = 0; k < 6; ++k)
+    odom.twist.covariance[static_cast<std::size_t>(k * 7)] = kUnknownVariance;
+  if (twist) {
+    const std::array<int, 2> tindex = *twist;
+    const std::array<int, 2> tslot = {0, 5};  // linear.x, angular.z
+    odom.twist.twist.linear.x = e.state(tindex[0]);
+    odom.twist.twist.angular.z = e.state(tindex[1]);
+    for (int r = 0; r < 2; ++r) {
+      for (int c = 0; c < 2; ++c) {
+        odom.twist.covariance[static_cast<std::size_t>(tslot[r] * 6 + tslot[c])] =
+            e.covariance(tindex[r], tindex[c]);
+      }
+    }
+  }
   return odom;
 }
 

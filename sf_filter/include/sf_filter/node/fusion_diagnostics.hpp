@@ -120,6 +120,7 @@ class FusionDiagnostics {
     EstimationTotals t;
     t.estimates = core_.estimateCount();
     t.failures = core_.estimationFailures();
+    t.filterResets = core_.filterResets();
     t.clockResets = core_.clockResets();
     t.nisFailures = core_.nisFailures();
     t.controlDropped = core_.controlNonFinite();

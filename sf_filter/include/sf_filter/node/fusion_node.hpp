@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -60,8 +61,16 @@ class FusionNode final : public MessageSink {
       outputs_.push_back(nh_.advertise<sf_pkg::OutputEntityStamped>(out.first, queueSize_));
     }
     state_ = pnh_.advertise<sf_pkg::StateEstimateStamped>("state", queueSize_);
-    if (description_.pose)
+    if (description_.pose) {
       odometry_ = nh_.advertise<nav_msgs::Odometry>("odometry/filtered", queueSize_);
+      // robot_localization's set_pose topic and rviz's 2D Pose Estimate (/initialpose).
+      for (const char* topic : {"set_pose", "initialpose"}) {
+        setPoseSubscribers_.push_back(nh_.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+            topic, 10, [this, topic](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+              onSetPose(topic, *m);
+            }));
+      }
+    }
     // What is lost before the core sees it is in the input's diagnostics too: a message of
     // another type on its topic, a value that cannot be rotated into the base frame.
     InputLossSource wrongType;
@@ -206,7 +215,12 @@ class FusionNode final : public MessageSink {
                         now, static_cast<unsigned long long>(skippedGaps_));
     }
     if (core_.estimationFailures() != failures) {
-      ROS_ERROR_THROTTLE(5.0, "estimation failed, filter reset: %s", core_.lastFailure().c_str());
+      ROS_ERROR_THROTTLE(5.0,
+                         "estimation step rejected (%llu so far, %llu filter resets): %s; the "
+                         "last good estimate is kept",
+                         static_cast<unsigned long long>(core_.estimationFailures()),
+                         static_cast<unsigned long long>(core_.filterResets()),
+                         core_.lastFailure().c_str());
     }
     reportTimeouts();
     std::uint64_t gated = 0;
@@ -230,6 +244,35 @@ class FusionNode final : public MessageSink {
                         static_cast<unsigned long long>(repairs.sigmaSpread));
       repairsReported_ = repairs.total();
     }
+  }
+
+  /// set_pose / initialpose: the pose part of the belief (POSE_OUT's x, y, heading) and its
+  /// covariance block (x, y, yaw slots of the message's 6 x 6 covariance) are replaced.
+  void onSetPose(const char* topic, const geometry_msgs::PoseWithCovarianceStamped& m) {
+    advance(ros::Time::now().toSec());
+    const auto& q = m.pose.pose.orientation;
+    const double yaw = sf_config::extractors::eulerAngles({q.x, q.y, q.z, q.w}).yaw;
+    const std::array<double, 3> pose = {m.pose.pose.position.x, m.pose.pose.position.y, yaw};
+    const std::array<int, 3> slot = {0, 1, 5};
+    Eigen::Matrix3d covariance;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) covariance(r, c) = m.pose.covariance[slot[r] * 6 + slot[c]];
+    }
+    try {
+      if (!core_.setPose(*description_.pose, pose, covariance)) {
+        ROS_WARN("%s: the %s cannot be re-initialised; pose ignored", topic,
+                 description_.method.c_str());
+        return;
+      }
+    } catch (const std::exception& e) {
+      ROS_ERROR("%s: pose refused: %s", topic, e.what());
+      return;
+    }
+    ++setPoses_;
+    measured_ = true;  // a pose given by the user is a real pose: odometry and tf follow
+    ROS_INFO("%s: pose set to x %.3f, y %.3f, yaw %.3f (variances %.3g, %.3g, %.3g); %llu so far",
+             topic, pose[0], pose[1], pose[2], covariance(0, 0), covariance(1, 1), covariance(2, 2),
+             static_cast<unsigned long long>(setPoses_));
   }
 
   /// Logs an input's timing out and its return once each.
@@ -259,7 +302,8 @@ class FusionNode final : public MessageSink {
     }
     state_.publish(makeStateEstimate(e, description_.method, frameId_));
     if (!description_.pose || !measured_) return;
-    const nav_msgs::Odometry odom = makeOdometry(e, *description_.pose, frameId_, childFrameId_);
+    const nav_msgs::Odometry odom =
+        makeOdometry(e, *description_.pose, frameId_, childFrameId_, description_.twist);
     odometry_.publish(odom);
     if (publishTf_) {
       geometry_msgs::TransformStamped t;
@@ -346,6 +390,8 @@ class FusionNode final : public MessageSink {
   }
   std::map<std::string, WrongType> wrongType_;  ///< by resolved topic name
   std::vector<ros::Subscriber> subscribers_;
+  std::vector<ros::Subscriber> setPoseSubscribers_;
+  std::uint64_t setPoses_ = 0;
   std::vector<ros::Publisher> outputs_;
   ros::Publisher state_, odometry_;
   ros::Timer timer_;

@@ -415,7 +415,8 @@ class BagReplay final : public MessageSink {
               makeStateEstimate(e, description_.method, options_.frameId));
     if (description_.pose) {
       bag.write("/odometry/filtered", stamp,
-                makeOdometry(e, *description_.pose, options_.frameId, options_.childFrameId));
+                makeOdometry(e, *description_.pose, options_.frameId, options_.childFrameId,
+                             description_.twist));
     }
   }
 

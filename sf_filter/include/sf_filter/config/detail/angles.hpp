@@ -1,7 +1,8 @@
 // Generated angle declarations (doc/configuration.md, "Angles") from the optional macros
 //
 //   ANGLE_STATES   (i)(j)...  state variables x[i] that are angles in radians (a heading)
-//   ANGLE_INPUTS   (i)(j)...  TOPICS_IN entries that measure an angle in radians (a compass)
+//   ANGLE_INPUTS   (i)(j)...  TOPICS_IN entries that measure an angle in radians (a compass);
+//                             DERIVED_INPUTS ROLL, PITCH and YAW are angle inputs without it
 //
 // into namespace sf_config:
 //
@@ -20,6 +21,7 @@
 #include <type_traits>
 
 #include "sf_filter/config/detail/constants.hpp"
+#include "sf_filter/config/detail/derived_inputs.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
 
 // clang-format off
@@ -128,6 +130,10 @@ constexpr std::array<bool, kStateSize> makeAngleStates() {
 
 constexpr std::array<bool, kMeasurementSize> makeAngleInputs() {
   std::array<bool, kMeasurementSize> flags{};
+  // DERIVED_INPUTS ROLL, PITCH and YAW are angles without being listed.
+  for (int i = 0; i < kMeasurementSize; ++i) {
+    if (derived_detail::isDerivedAngle(i)) flags[static_cast<std::size_t>(i)] = true;
+  }
 #if SF_ANGLE_INPUTS_OK
   BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_APPLY, (~, AngleInputEntry), ANGLE_INPUTS)
 #endif

@@ -6,7 +6,8 @@
 //                          ((index)(FILL)(omega)(N)) or ((index)(FILL)(omega)(N)(variance))
 //   INPUT_GATE           ((index)(threshold)) per gated input
 //   ALIGN_BY_STAMP       (index)(index)... the inputs aligned by header stamp
-//   MAX_MEASUREMENT_LAG  ms a period waits for stamped values (default 0)
+//   MAX_MEASUREMENT_LAG  ms a period waits for stamped values (default: one estimation period
+//                        with ALIGN_BY_STAMP, else 0)
 //
 // into namespace sf_config:
 //
@@ -374,11 +375,13 @@ static_assert(std::is_arithmetic<std::remove_const_t<decltype(kConfiguredLag)>>:
               "MAX_MEASUREMENT_LAG: expected a number of milliseconds >= 0, found '" SF_PP_STR(
                   MAX_MEASUREMENT_LAG) "'");
 }  // namespace input_alignment_detail
-/// MAX_MEASUREMENT_LAG [ms] (default 0).
+/// MAX_MEASUREMENT_LAG [ms] (as given: 0 is allowed and means "estimate at the period's end").
 constexpr double kMaxMeasurementLagMs = static_cast<double>(input_alignment_detail::kConfiguredLag);
 #else
-/// MAX_MEASUREMENT_LAG [ms] (default 0).
-constexpr double kMaxMeasurementLagMs = 0.0;
+/// MAX_MEASUREMENT_LAG [ms] not given: one estimation period when inputs are aligned by stamp
+/// (a lag of 0 would make every value arriving after its period's end late and dropped, so a
+/// stamped input with any transport delay would lose most of its values), else 0.
+constexpr double kMaxMeasurementLagMs = kHasAlignByStamp ? kEstimationPeriodMs : 0.0;
 #endif
 
 }  // namespace sf_config

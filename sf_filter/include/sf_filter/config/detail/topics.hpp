@@ -14,6 +14,7 @@
 #include <boost/preprocessor/repetition/repeat.hpp>
 
 #include "sf_filter/config/detail/constants.hpp"
+#include "sf_filter/config/detail/derived_inputs.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
 #include "sf_filter/config/detail/support.hpp"
 
@@ -24,15 +25,19 @@
   template <class MessageT, class = void>                                                          \
   struct DETECTOR {                                                                                \
     static constexpr int status = ::sf_config::detail::kFieldMissing;                              \
+    using type = ::sf_config::detail::UnknownMessage;                                              \
     static double get(const MessageT&) { return 0.0; }                                             \
+    static type member(const MessageT&) { return {}; }                                             \
   };                                                                                               \
   template <class MessageT>                                                                        \
   struct DETECTOR<MessageT, std::void_t<decltype(std::declval<const MessageT&>().FIELD)>> {        \
     static constexpr int status =                                                                  \
         ::sf_config::detail::fieldStatusOf<decltype(std::declval<const MessageT&>().FIELD)>();     \
+    using type = std::decay_t<decltype(std::declval<const MessageT&>().FIELD)>;                    \
     static double get(const MessageT& message) {                                                   \
       return ::sf_config::detail::toDouble(message.FIELD);                                         \
     }                                                                                              \
+    static const type& member(const MessageT& message) { return message.FIELD; }                   \
   };
 
 #define SF_CFG_TOPIC_NAME(entry) \
@@ -43,18 +48,20 @@
 #define SF_CFG_ENTRY_PREFIX(LIST, i, entry)                                                        \
   LIST " entry " SF_PP_STR(i) " (topic '" SF_PP_STR(BOOST_PP_SEQ_ELEM(0, entry)) "')"
 
-#define SF_CFG_FIELD_CHECKS(LIST, i, entry, DETECTOR, WHAT, FIELD)                                 \
+// DERIVED is a constant expression, true when the field is a member a value is derived from
+// (DERIVED_INPUTS): it must exist but need not be a number.
+#define SF_CFG_FIELD_CHECKS(LIST, i, entry, DETECTOR, WHAT, FIELD, DERIVED)                        \
   static_assert(::sf_config::detail::isUnknownMessage<Message>() ||                                \
                     DETECTOR<Message>::status != ::sf_config::detail::kFieldMissing,               \
                 SF_CFG_ENTRY_PREFIX(LIST, i, entry) ": message type '"                             \
                 SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry)) "' has no " WHAT " '" SF_PP_STR(FIELD)      \
                 "' (check the spelling against the message definition, e.g. with rosmsg show)");   \
-  static_assert(::sf_config::detail::isUnknownMessage<Message>() ||                                \
+  static_assert(::sf_config::detail::isUnknownMessage<Message>() || (DERIVED) ||                   \
                     DETECTOR<Message>::status != ::sf_config::detail::kFieldNotNumeric,            \
                 SF_CFG_ENTRY_PREFIX(LIST, i, entry) ": " WHAT " '" SF_PP_STR(FIELD)                \
                 "' of message type '" SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry))                       \
                 "' is not a number (not convertible to double); select a numeric member, "         \
-                "e.g. vector.x instead of vector");
+                "e.g. vector.x instead of vector, or derive a number from it with DERIVED_INPUTS");
 
 #define SF_CFG_TOPIC_NAME_CHECK(LIST, i, entry, NAME)                                              \
   static_assert(::sf_config::detail::isValidTopicName(NAME),                                       \
@@ -85,18 +92,25 @@
     static double value(const Message& message) {                                                  \
       return detail::BOOST_PP_CAT(InputValueField, i)<Message>::get(message);                      \
     }                                                                                              \
+    /* the field itself (UnknownMessage if missing): what DERIVED_INPUTS derive a value from */  \
+    using Field = typename detail::BOOST_PP_CAT(InputValueField, i)<Message>::type;                \
+    static decltype(auto) member(const Message& message) {                                         \
+      return detail::BOOST_PP_CAT(InputValueField, i)<Message>::member(message);                   \
+    }                                                                                              \
     static double variance(const Message& message) {                                               \
       BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_CFG_INPUT_VARIANCE_GET,         \
                    SF_CFG_INPUT_VARIANCE_NONE)(i)                                                  \
     }                                                                                              \
     SF_CFG_TOPIC_NAME_CHECK("TOPICS_IN", i, entry, topic)                                          \
     SF_CFG_FIELD_CHECKS("TOPICS_IN", i, entry, detail::BOOST_PP_CAT(InputValueField, i),           \
-                        "field", BOOST_PP_SEQ_ELEM(2, entry))                                      \
+                        "field", BOOST_PP_SEQ_ELEM(2, entry),                                      \
+                        ::sf_config::derived_detail::fieldMayBeMember(i))                             \
     BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_CFG_FIELD_CHECKS,                 \
                  SF_PP_NOTHING)("TOPICS_IN", i, entry,                                            \
                                 detail::BOOST_PP_CAT(InputVarianceField, i),                      \
                                 "variance field",                                                  \
-                                BOOST_PP_SEQ_ELEM(BOOST_PP_DEC(BOOST_PP_SEQ_SIZE(entry)), entry))  \
+                                BOOST_PP_SEQ_ELEM(BOOST_PP_DEC(BOOST_PP_SEQ_SIZE(entry)), entry),  \
+                                false)                                                             \
   };
 #define SF_CFG_INPUT_VARIANCE_GET(i)                                                               \
   return detail::BOOST_PP_CAT(InputVarianceField, i)<Message>::get(message);
@@ -139,7 +153,7 @@
     }                                                                                              \
     SF_CFG_TOPIC_NAME_CHECK("TOPICS_IN_CTRL", i, entry, topic)                                     \
     SF_CFG_FIELD_CHECKS("TOPICS_IN_CTRL", i, entry, detail::BOOST_PP_CAT(ControlValueField, i),    \
-                        "field", BOOST_PP_SEQ_ELEM(2, entry))                                      \
+                        "field", BOOST_PP_SEQ_ELEM(2, entry), false)                               \
   };
 
 // --- TOPICS_OUT ---------------------------------------------------------------------------------

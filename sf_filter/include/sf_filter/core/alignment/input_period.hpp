@@ -4,7 +4,9 @@
 // period is estimated). Fixed size, no allocation.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "sf_filter/core/alignment/period_newest.hpp"
@@ -19,7 +21,12 @@ class InputPeriod {
   explicit InputPeriod(int samplesKept = 0)
       : samples_(samplesKept), keepSamples_(samplesKept > 0) {}
 
-  void add(double value, std::optional<double> variance, double time) {
+  /// `time`: where the value belongs (its stamp or arrival); `arrival`: when it arrived
+  /// (default: `time`).
+  void add(double value, std::optional<double> variance, double time,
+           double arrival = std::numeric_limits<double>::quiet_NaN()) {
+    if (std::isnan(arrival)) arrival = time;
+    if (!(arrival <= newestArrival_)) newestArrival_ = arrival;
     average_.add(value, variance);
     newest_.add(value, variance, time);
     if (keepSamples_) samples_.push(time, value);
@@ -31,11 +38,14 @@ class InputPeriod {
   const PeriodNewest& newest() const { return newest_; }
   /// The period's newest samples, oldest first via samples()[size - 1 .. 0].
   const SampleHistory& samples() const { return samples_; }
+  /// The latest arrival of the period's values (NaN if none).
+  double newestArrival() const { return newestArrival_; }
 
   void clear() {
     average_.clear();
     newest_.clear();
     samples_.clear();
+    newestArrival_ = std::numeric_limits<double>::quiet_NaN();
   }
 
  private:
@@ -43,6 +53,7 @@ class InputPeriod {
   PeriodNewest newest_;
   SampleHistory samples_;
   bool keepSamples_;
+  double newestArrival_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace sf_filter

@@ -1,0 +1,3 @@
+// The UKF on the Husky recording with config/husky_diff_drive_odom_imu.h (doc/real_robot.md).
+#define METHOD UNSCENTED_KALMAN_FILTER
+#include "husky_diff_drive_odom_imu.h"

@@ -1,0 +1,188 @@
+// Variances from the message's covariance array (doc/configuration.md, "Covariance from the
+// message"):
+//
+//   INPUT_COVARIANCE  ((input index)(covariance array member)(entry)) per TOPICS_IN entry whose
+//                     variance is taken from a covariance array of its message, e.g.
+//                     ((0)(orientation_covariance)(8)) for the yaw of sensor_msgs::Imu,
+//                     ((1)(pose.covariance)(35)) for the yaw of nav_msgs::Odometry
+//
+// A message whose array is all zero or has -1 first (ROS's "unknown") gives no variance: the
+// header's MEASUREMENT_NOISE_COVARIANCE entry is used and the fallback counted
+// (extractors/message_covariance.hpp). The entry replaces a variance field of the TOPICS_IN
+// entry (both are refused). Generates, in namespace sf_config:
+//
+//   template <int I> struct CovarianceSource {      // the variance source of TOPICS_IN entry I
+//     static constexpr bool given;                  //   false: the variance field, if any
+//     template <class Message> static std::optional<double> variance(const Message&);
+//     static constexpr bool valid; };               //   false if a check below failed
+//
+// Checked at compile time, each reported once and naming the macro: the entries' form, input
+// index 0 <= index < m and listed once, no variance field as well, the member is an array of
+// numbers and the entry a non-negative integer below its size when the size is known.
+#pragma once
+
+#include <iterator>
+#include <optional>
+#include <type_traits>
+#include <utility>
+
+#include "sf_filter/config/extractors/message_covariance.hpp"
+
+// clang-format off
+#define SF_IC_FORMAT "((input index)(covariance array member)(entry)), e.g. " \
+  "((0)(orientation_covariance)(8))"
+
+#if defined(INPUT_COVARIANCE)
+SF_PP_CHECK_LIST("INPUT_COVARIANCE", 3, 3, SF_IC_FORMAT, INPUT_COVARIANCE)
+#define SF_IC_OK SF_PP_IS_LIST(3, 3, INPUT_COVARIANCE)
+#else
+#define SF_IC_OK 0
+#endif
+
+#define SF_IC_PREFIX(k, entry) "INPUT_COVARIANCE entry " SF_PP_STR(k) " (" SF_PP_STR(entry) ")"
+#define SF_IC_INDEX(entry) static_cast<int>(BOOST_PP_SEQ_ELEM(0, entry))
+#define SF_IC_INDEX_OP(r, data, k, entry) BOOST_PP_COMMA_IF(k) SF_IC_INDEX(entry)
+#define SF_IC_NAME_OP(r, data, k, entry) BOOST_PP_COMMA_IF(k) BOOST_PP_CAT(CovarianceEntry, k)
+
+#define SF_IC_ENTRY(r, data, k, entry)                                                             \
+  namespace covariance_detail {                                                                    \
+  template <class MessageT, class = void>                                                          \
+  struct BOOST_PP_CAT(ArrayMember, k) {                                                            \
+    static constexpr bool ok = false;                                                              \
+    static constexpr long size = -1;                                                               \
+    static std::optional<double> get(const MessageT&, long) { return std::nullopt; }               \
+  };                                                                                               \
+  template <class MessageT>                                                                        \
+  struct BOOST_PP_CAT(ArrayMember, k)<MessageT, std::void_t<                                       \
+      decltype(std::size(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry))),            \
+      decltype(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry)[0])>> {                 \
+    static constexpr bool ok = std::is_convertible_v<                                              \
+        decltype(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry)[0]), double>;         \
+    static constexpr long size = staticSize<std::remove_cv_t<std::remove_reference_t<             \
+        decltype(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry))>>>();                \
+    static std::optional<double> get(const MessageT& m, long index) {                              \
+      if constexpr (ok) {                                                                          \
+        return ::sf_config::extractors::covarianceEntry(m.BOOST_PP_SEQ_ELEM(1, entry),             \
+                                                        static_cast<std::size_t>(index));          \
+      } else {                                                                                     \
+        return std::nullopt;                                                                       \
+      }                                                                                            \
+    }                                                                                              \
+  };                                                                                               \
+  }                                                                                                \
+  struct BOOST_PP_CAT(CovarianceEntry, k) {                                                        \
+    static constexpr bool given = true;                                                            \
+    static constexpr int input_index = SF_IC_INDEX(entry);                                         \
+    static constexpr auto configured_entry = BOOST_PP_SEQ_ELEM(2, entry);                          \
+    static constexpr long entry_index = static_cast<long>(configured_entry);                       \
+    using Message = typename ::sf_config::detail::InputMessageOf<input_index>::type;               \
+    using Member = covariance_detail::BOOST_PP_CAT(ArrayMember, k)<Message>;                       \
+    template <class M>                                                                             \
+    static std::optional<double> variance(const M& message) {                                      \
+      return covariance_detail::BOOST_PP_CAT(ArrayMember, k)<M>::get(message, entry_index);       \
+    }                                                                                              \
+    static constexpr bool unknown = ::sf_config::detail::isUnknownMessage<Message>();              \
+    static constexpr bool valid = input_index >= 0 && input_index < kMeasurementSize &&           \
+        !unknown && Member::ok && entry_index >= 0 &&                                              \
+        (Member::size < 0 || entry_index < Member::size);                                          \
+    static_assert(std::is_integral<decltype(BOOST_PP_SEQ_ELEM(0, entry))>::value &&               \
+                      input_index >= 0 && input_index < kMeasurementSize,                          \
+                  SF_IC_PREFIX(k, entry) ": input index '" SF_PP_STR(BOOST_PP_SEQ_ELEM(0, entry))  \
+                  "' is out of range, expected an integer from 0 to "                              \
+                  SF_PP_STR(BOOST_PP_DEC(SF_CFG_M)) " (" SF_CFG_M_WHY ")");                        \
+    static_assert(covariance_detail::firstEntryOf(input_index) == k,                               \
+                  SF_IC_PREFIX(k, entry) ": the input is already listed in an earlier entry");     \
+    static_assert(!(input_index >= 0 && input_index < kMeasurementSize) ||                         \
+                      !covariance_detail::hasVarianceField(input_index),                          \
+                  SF_IC_PREFIX(k, entry) ": TOPICS_IN entry " SF_PP_STR(BOOST_PP_SEQ_ELEM(0, entry)) \
+                  " has a variance field too; remove one of the two variance sources");            \
+    static_assert(unknown || Member::ok,                                                           \
+                  SF_IC_PREFIX(k, entry) ": member '" SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry))       \
+                  "' of the message type of TOPICS_IN entry " SF_PP_STR(BOOST_PP_SEQ_ELEM(0, entry)) \
+                  " is not an array of numbers (e.g. orientation_covariance of sensor_msgs::Imu, " \
+                  "pose.covariance of nav_msgs::Odometry)");                                       \
+    static_assert(std::is_integral<decltype(configured_entry)>::value && entry_index >= 0 &&      \
+                      (unknown || !Member::ok || Member::size < 0 ||                               \
+                       entry_index < Member::size),                                                \
+                  SF_IC_PREFIX(k, entry) ": entry '" SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry))        \
+                  "' is not an integer index into the array (row-major: row r, column c of a "     \
+                  "6x6 covariance is 6 r + c, e.g. 35 for yaw; of a 3x3 one 3 r + c, 8 for yaw)"); \
+  };
+// clang-format on
+
+namespace sf_config {
+namespace covariance_detail {
+
+/// The size of a fixed-size array type (C array, std::array, boost::array), -1 otherwise.
+template <class T, class = void>
+struct StaticSize {
+  static constexpr long value = -1;
+};
+template <class T, std::size_t N>
+struct StaticSize<T[N]> {
+  static constexpr long value = static_cast<long>(N);
+};
+template <class T>
+struct StaticSize<T, std::void_t<decltype(T::static_size)>> {
+  static constexpr long value = static_cast<long>(T::static_size);  // boost::array
+};
+template <class T>
+constexpr long staticSize() {
+  return StaticSize<T>::value;
+}
+
+#if SF_IC_OK
+inline constexpr int kCovarianceIndices[] = {
+    BOOST_PP_SEQ_FOR_EACH_I(SF_IC_INDEX_OP, ~, INPUT_COVARIANCE)};
+#endif
+
+/// The first INPUT_COVARIANCE entry of `input`, -1 if none.
+constexpr int firstEntryOf([[maybe_unused]] int input) {
+#if SF_IC_OK
+  for (int k = 0; k < static_cast<int>(std::size(kCovarianceIndices)); ++k) {
+    if (kCovarianceIndices[k] == input) return k;
+  }
+#endif
+  return -1;
+}
+
+template <std::size_t... I>
+constexpr bool hasVarianceFieldOf(int input, std::index_sequence<I...>) {
+  return ((static_cast<int>(I) == input && std::tuple_element_t<I, Inputs>::has_variance) || ...);
+}
+constexpr bool hasVarianceField(int input) {
+  return hasVarianceFieldOf(input, std::make_index_sequence<kMeasurementSize>{});
+}
+
+}  // namespace covariance_detail
+
+/// No INPUT_COVARIANCE entry: the variance field, if any.
+struct NoCovarianceSource {
+  static constexpr bool given = false;
+  static constexpr bool valid = false;
+};
+
+#if SF_IC_OK
+BOOST_PP_SEQ_FOR_EACH_I(SF_IC_ENTRY, ~, INPUT_COVARIANCE)
+using CovarianceEntries = std::tuple<BOOST_PP_SEQ_FOR_EACH_I(SF_IC_NAME_OP, ~, INPUT_COVARIANCE)>;
+#else
+using CovarianceEntries = std::tuple<>;
+#endif
+
+namespace covariance_detail {
+template <int K>
+struct EntryType {
+  using type = std::tuple_element_t<K, CovarianceEntries>;
+};
+template <>
+struct EntryType<-1> {
+  using type = NoCovarianceSource;
+};
+}  // namespace covariance_detail
+
+/// The INPUT_COVARIANCE source of TOPICS_IN entry I, or NoCovarianceSource.
+template <int I>
+using CovarianceSource =
+    typename covariance_detail::EntryType<covariance_detail::firstEntryOf(I)>::type;
+
+}  // namespace sf_config

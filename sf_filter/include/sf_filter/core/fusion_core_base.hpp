@@ -1,0 +1,194 @@
+// The part of the fusion core (fusion_core.hpp) that does not depend on the filter's type:
+// the checks of arriving values, the schedule of periods, the ring of open periods, the
+// alignment of every input per period (policies, gates, timeouts, substitutes), the counters
+// and the NIS window. It is compiled once (src/core/fusion_core_base.cpp) and shared by every
+// configuration header's node; FusionCore<Filter> adds the filter and its fixed-size step.
+// The rules are those of fusion_core.hpp's header comment.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <sf_estimation/types.hpp>
+
+#include "sf_filter/core/fusion_core_options.hpp"
+#include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/core/input_counters.hpp"
+#include "sf_filter/core/input_options.hpp"
+#include "sf_filter/core/nis_window.hpp"
+
+namespace sf_filter {
+
+class FusionCoreBase {
+ public:
+  static constexpr double kMinPeriod = FusionCoreOptions::kMinPeriod;
+  static constexpr double kMaxPeriod = FusionCoreOptions::kMaxPeriod;
+  static constexpr std::uint64_t kMaxCatchUpLimit = FusionCoreOptions::kMaxCatchUpLimit;
+  /// The largest variance a measurement may carry (sf_filter::kMaxVariance, 1e100).
+  static constexpr double kMaxVariance = sf_filter::kMaxVariance;
+
+  /// A measurement of input `input` received at `now`, with the variance the message carried
+  /// (if any). `stamp` (NaN when the message has no header) must not run backwards per input;
+  /// it places the value in its period if the input is aligned by stamp.
+  Rejection addMeasurement(Index input, double now, double value,
+                           std::optional<double> variance = std::nullopt,
+                           double stamp = std::numeric_limits<double>::quiet_NaN());
+  /// A control value, received at the clock's last reading; a period uses the latest value of
+  /// each control received before its end.
+  Rejection addControl(Index control, double value);
+
+  const InputCounters& counters(Index input) const {
+    return counters_[static_cast<std::size_t>(input)];
+  }
+  /// The input's options (the defaults when Options::inputs is empty).
+  const InputOptions& inputOptions(Index input) const;
+  Index inputCount() const { return static_cast<Index>(counters_.size()); }
+  /// Whether input `input` has a timeout and used no value (one that reached the filter: not
+  /// dropped, late or gated) arriving later than `timeout` before time t
+  /// (counted from the schedule's start, or the last reset, if it never did).
+  bool timedOut(Index input, double t) const;
+  /// The same at the clock's last reading.
+  bool timedOut(Index input) const { return timedOut(input, clock_); }
+  /// The last clock reading passed to advanceTo().
+  double clock() const { return clock_; }
+  /// The clock reading the schedule (re)started at.
+  double startTime() const { return startTime_; }
+  /// The NIS of the recent periods (empty unless Options::nisWindow > 0 and the filter
+  /// predicts its measurement).
+  const NisWindow& nis() const { return nis_; }
+  /// Periods whose NIS could not be computed (innovation covariance not positive definite).
+  std::uint64_t nisFailures() const { return nisFailures_; }
+  std::uint64_t clockResets() const { return clockResets_; }
+  /// Forward gaps crossed with one estimate (advanceTo() or skipGap()), and the periods they
+  /// skipped without estimating.
+  std::uint64_t skippedGaps() const { return skippedGaps_; }
+  std::uint64_t skippedPeriods() const { return skippedPeriods_; }
+  /// Steps the estimator rejected (each period's estimate then is the last good one).
+  std::uint64_t estimationFailures() const { return estimationFailures_; }
+  /// Rejected steps since the last successful one.
+  std::uint64_t consecutiveFailures() const { return consecutiveFailures_; }
+  /// Restarts of the filter from its initial belief after Options::maxConsecutiveFailures
+  /// rejected steps in a row (not counting reset() and clock jumps backwards).
+  std::uint64_t filterResets() const { return filterResets_; }
+  /// Periods that have ended by `now` (minus the lag) and are not estimated yet: what
+  /// advanceTo(now) would estimate, or skip when more than maxCatchUpPeriods().
+  std::uint64_t periodsDue(double now) const;
+  const std::string& lastFailure() const { return lastFailure_; }
+  std::uint64_t controlNonFinite() const { return controlNonFinite_; }
+  double period() const { return options_.period; }
+  /// Periods a forward clock jump may span and still have each of them estimated.
+  std::uint64_t maxCatchUpPeriods() const { return options_.maxCatchUpPeriods; }
+  double maxMeasurementLag() const { return options_.maxMeasurementLag; }
+  /// Wall time spent in the estimator's steps, and their number (failed steps excluded).
+  double estimatorSeconds() const { return estimatorSeconds_; }
+  std::uint64_t estimateCount() const { return estimateCount_; }
+  /// The longest estimator step so far [s].
+  double maxStepSeconds() const { return maxStepSeconds_; }
+
+ protected:
+  /// `canPredict`: the filter gives its predicted measurement (gates and FILL possible).
+  FusionCoreBase(const FusionCoreOptions& options, Index inputs, Index controls, bool canPredict);
+  ~FusionCoreBase();
+  FusionCoreBase(const FusionCoreBase&) = delete;
+  FusionCoreBase& operator=(const FusionCoreBase&) = delete;
+
+  /// What the filter predicts for this period's measurement, asked for only when a gate, a
+  /// FILL substitute or the NIS needs it.
+  class Prediction {
+   public:
+    virtual ~Prediction() = default;
+    /// Squared Mahalanobis distance of `value` of input `input` alone (a per-input gate).
+    virtual double gateDistance(Index input, double value, std::optional<double> variance) = 0;
+    /// The predicted measurement of input `input`.
+    virtual double mean(Index input) = 0;
+  };
+
+  /// One input's value for the period being estimated.
+  struct PeriodEntry {
+    bool available = false;  ///< measured or substituted
+    bool measured = false;   ///< measured (not gated, not a substitute): counts for the NIS
+    double value = 0.0;
+    std::optional<double> variance;  ///< none: the filter's configured R
+  };
+
+  /// What advanceTo() must do after the clock reading `now`: nothing (Started), reset the
+  /// filter (JumpedBackwards: the schedule has restarted), estimate `due` periods (Normal), or
+  /// estimate one and then skipPeriods(due) (SkippedGap).
+  struct ClockStep {
+    ClockEvent event = ClockEvent::Normal;
+    std::uint64_t due = 0;
+  };
+  ClockStep readClock(double now);
+  bool scheduleStarted() const;
+  void setClock(double now) { clock_ = now; }
+  /// After the one estimate that crosses a gap of `due` periods to the clock's reading: the
+  /// schedule moves on by whole periods so that the reading lies in the current one.
+  void skipPeriods(std::uint64_t due);
+
+  /// Starts the current period: the controls received before its end come into force.
+  void beginPeriod();
+  /// Aligns every input for the current period (counted), asking `prediction` only when
+  /// needed; the results are in periodEntries(). May throw the prediction's
+  /// estimation::EstimationError (the caller counts it as a failed step).
+  void alignInputs(Prediction& prediction);
+  const std::vector<PeriodEntry>& periodEntries() const { return entries_; }
+  Index presentInputs() const { return present_; }
+  Index substitutedInputs() const { return substituted_; }
+  /// The controls in force for the current period.
+  const Eigen::VectorXd& controls() const { return control_; }
+  /// End of the current period.
+  double periodEnd() const;
+  /// Ends the current period: empties its slot and moves the schedule on.
+  void finishPeriod();
+
+  /// Statistics of the period's step.
+  void recordStep(double seconds);
+  /// Counts a rejected step; true when it is the maxConsecutiveFailures-th in a row, which
+  /// restarts the filter (counted as a filter reset).
+  bool recordFailure(const std::string& what);
+  void addNis(double nis, int degreesOfFreedom) { nis_.add(nis, degreesOfFreedom); }
+  void countNisFailure() { ++nisFailures_; }
+  bool nisWanted() const { return nis_.enabled() && present_ > 0; }
+
+  /// Discards pending values, the alignment histories, the controls and the NIS window.
+  void clearInputs();
+  /// The options as checked.
+  const FusionCoreOptions& options() const { return options_; }
+
+ private:
+  struct Ring;  ///< the open periods and the aligners (src/core/fusion_core_base.cpp)
+
+  static const FusionCoreOptions& checked(const FusionCoreOptions& o, Index inputs,
+                                          bool canPredict);
+  void restartSchedule(double now);
+  void openWindow();
+
+  FusionCoreOptions options_;
+  std::unique_ptr<Ring> ring_;
+  std::vector<InputCounters> counters_;
+  std::vector<PeriodEntry> entries_;
+  Eigen::VectorXd control_;  ///< the controls in force (of the last estimated period)
+  NisWindow nis_;
+  Index present_ = 0, substituted_ = 0;
+  double clock_ = 0.0;      ///< last reading passed to readClock
+  double startTime_ = 0.0;  ///< clock reading the schedule (re)started at
+  double maxStepSeconds_ = 0.0;
+  double estimatorSeconds_ = 0.0;
+  std::uint64_t estimateCount_ = 0;
+  std::uint64_t nisFailures_ = 0;
+  std::uint64_t clockResets_ = 0;
+  std::uint64_t skippedGaps_ = 0;
+  std::uint64_t skippedPeriods_ = 0;
+  std::uint64_t estimationFailures_ = 0;
+  std::uint64_t consecutiveFailures_ = 0;
+  std::uint64_t filterResets_ = 0;
+  std::uint64_t controlNonFinite_ = 0;
+  std::string lastFailure_;
+};
+
+}  // namespace sf_filter

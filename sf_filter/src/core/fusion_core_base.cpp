@@ -1,0 +1,353 @@
+#include "sf_filter/core/fusion_core_base.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+#include <sf_estimation/errors.hpp>
+
+#include "sf_filter/core/alignment/input_aligner.hpp"
+#include "sf_filter/core/alignment/input_period.hpp"
+#include "sf_filter/core/period_schedule.hpp"
+
+namespace sf_filter {
+
+/// The schedule, the open periods and the per-input aligners.
+struct FusionCoreBase::Ring {
+  /// What arrived for one not yet estimated period.
+  struct OpenPeriod {
+    std::uint64_t index = 0;  ///< the period the slot holds
+    std::vector<InputPeriod> inputs;
+    Eigen::VectorXd control;
+    Eigen::Array<bool, Eigen::Dynamic, 1> controlSet;  ///< controls received in the period
+
+    void clear() {
+      for (InputPeriod& in : inputs) in.clear();
+      controlSet.setConstant(false);
+    }
+  };
+
+  explicit Ring(double period) : schedule(period) {}
+
+  std::uint64_t newestOpenPeriod() const { return schedule.index() + open.size() - 1; }
+  OpenPeriod& slotOf(std::uint64_t k) { return open[k & (open.size() - 1)]; }
+
+  /// The open period time t belongs to. A time in a period already estimated gives the
+  /// current period and sets `estimated`; one beyond the newest open period gives that one
+  /// and sets `beyond`. Before the schedule starts every time gives the first period.
+  std::uint64_t openPeriodOf(double t, bool& estimated, bool& beyond) const {
+    const std::uint64_t current = schedule.index();
+    if (!schedule.started() || schedule.inCurrent(t)) return current;  // the usual case
+    const std::int64_t k = schedule.indexOf(t);
+    if (k < static_cast<std::int64_t>(current)) {
+      estimated = true;
+      return current;
+    }
+    if (k > static_cast<std::int64_t>(newestOpenPeriod())) {
+      beyond = true;
+      return newestOpenPeriod();
+    }
+    return static_cast<std::uint64_t>(k);
+  }
+
+  PeriodSchedule schedule;
+  std::vector<InputAligner> aligners;
+  std::vector<OpenPeriod> open;  ///< ring of the open periods, slot k % size for period k
+};
+
+namespace {
+const InputOptions kDefaultInput{};
+
+/// The controls of `slot` that were set replace those in force.
+template <class Slot>
+void takeControls(const Slot& slot, Eigen::VectorXd& control) {
+  for (Index j = 0; j < control.size(); ++j) {
+    if (slot.controlSet(j)) control(j) = slot.control(j);
+  }
+}
+}  // namespace
+
+FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, Index controls,
+                               bool canPredict)
+    : options_(checked(options, inputs, canPredict)),
+      ring_(std::make_unique<Ring>(options_.period)),
+      counters_(static_cast<std::size_t>(inputs)),
+      entries_(static_cast<std::size_t>(inputs)),
+      control_(Eigen::VectorXd::Zero(controls)),
+      nis_(canPredict ? options_.nisWindow : 0) {
+  for (Index i = 0; i < inputs; ++i) ring_->aligners.emplace_back(inputOptions(i).alignment);
+  // A power of two, so that the slot of a period is a bit mask away.
+  const auto needed = static_cast<std::size_t>(
+      std::floor(options_.maxMeasurementLag / options_.period + 1e-9) + 3);
+  std::size_t slots = 1;
+  while (slots < needed) slots *= 2;
+  Ring::OpenPeriod empty;
+  empty.control = Eigen::VectorXd::Zero(controls);
+  empty.controlSet = Eigen::Array<bool, Eigen::Dynamic, 1>::Constant(controls, false);
+  for (Index i = 0; i < inputs; ++i) {
+    empty.inputs.emplace_back(inputOptions(i).alignment.historyLength());
+  }
+  ring_->open.assign(slots, empty);
+  openWindow();
+}
+
+FusionCoreBase::~FusionCoreBase() = default;
+
+const InputOptions& FusionCoreBase::inputOptions(Index input) const {
+  return options_.inputs.empty() ? kDefaultInput
+                                 : options_.inputs[static_cast<std::size_t>(input)];
+}
+
+bool FusionCoreBase::timedOut(Index input, double t) const {
+  const InputOptions& o = inputOptions(input);
+  if (!o.hasTimeout() || !ring_->schedule.started()) return false;
+  const double last = counters(input).lastAccepted;
+  return t - (std::isnan(last) ? startTime_ : last) > o.timeout;
+}
+
+Rejection FusionCoreBase::addMeasurement(Index input, double now, double value,
+                                         std::optional<double> variance, double stamp) {
+  if (input < 0 || input >= inputCount()) return Rejection::UnknownInput;
+  InputCounters& c = counters_[static_cast<std::size_t>(input)];
+  const InputOptions& o = inputOptions(input);
+  ++c.received;
+  c.lastArrival = now;
+  if (!std::isfinite(value)) {
+    ++c.nonFinite;
+    return Rejection::NonFinite;
+  }
+  // Beyond kMaxVariance a variance says "no information" and the period's sum of variances
+  // could overflow: refused like a non-finite one.
+  if (variance && !(*variance > 0.0 && *variance <= kMaxVariance)) {
+    ++c.badVariance;
+    return Rejection::BadVariance;
+  }
+  if (!o.inRange(value)) {
+    ++c.outOfRange;
+    return Rejection::OutOfRange;
+  }
+  if (stamp == 0.0) stamp = std::numeric_limits<double>::quiet_NaN();  // ROS: not set
+  if (!std::isnan(stamp)) {
+    if (stamp < c.lastStamp) {
+      ++c.outOfOrder;
+      return Rejection::OutOfOrder;
+    }
+    if (stamp == c.lastStamp) {
+      ++c.duplicate;
+      return Rejection::DuplicateStamp;
+    }
+    if (stamp > now + options_.maxFutureStamp) {
+      ++c.future;
+      return Rejection::FutureStamp;
+    }
+    c.lastStamp = stamp;
+  }
+  const bool byStamp = o.alignByStamp && !std::isnan(stamp);
+  const double time = byStamp ? stamp : now;
+  bool estimated = false, beyond = false;
+  const std::uint64_t k = ring_->openPeriodOf(time, estimated, beyond);
+  if (byStamp && estimated) {
+    ++c.late;
+    return Rejection::TooLate;
+  }
+  if (byStamp && beyond) ++c.aheadOfClock;
+  ring_->slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time, now);
+  return Rejection::None;
+}
+
+Rejection FusionCoreBase::addControl(Index control, double value) {
+  if (control < 0 || control >= control_.size()) return Rejection::UnknownInput;
+  if (!std::isfinite(value)) {
+    ++controlNonFinite_;
+    return Rejection::NonFinite;
+  }
+  bool estimated = false, beyond = false;
+  Ring::OpenPeriod& slot = ring_->slotOf(ring_->openPeriodOf(clock_, estimated, beyond));
+  slot.control(control) = value;
+  slot.controlSet(control) = true;
+  return Rejection::None;
+}
+
+FusionCoreBase::ClockStep FusionCoreBase::readClock(double now) {
+  clock_ = now;
+  const double lag = options_.maxMeasurementLag;
+  PeriodSchedule& schedule = ring_->schedule;
+  if (!schedule.started()) {
+    restartSchedule(now);
+    return {ClockEvent::Started, 0};
+  }
+  if (schedule.before(now - lag)) {
+    restartSchedule(now);
+    ++clockResets_;
+    return {ClockEvent::JumpedBackwards, 0};
+  }
+  const std::uint64_t due = schedule.periodsDue(now - lag);
+  return {due > options_.maxCatchUpPeriods ? ClockEvent::SkippedGap : ClockEvent::Normal, due};
+}
+
+bool FusionCoreBase::scheduleStarted() const { return ring_->schedule.started(); }
+
+std::uint64_t FusionCoreBase::periodsDue(double now) const {
+  return ring_->schedule.periodsDue(now - options_.maxMeasurementLag);
+}
+
+void FusionCoreBase::skipPeriods(std::uint64_t due) {
+  skippedPeriods_ += due - 1;
+  ++skippedGaps_;
+  ring_->schedule.skipTo(clock_ - options_.maxMeasurementLag);
+  openWindow();
+}
+
+void FusionCoreBase::beginPeriod() {
+  takeControls(ring_->slotOf(ring_->schedule.index()), control_);
+}
+
+void FusionCoreBase::alignInputs(Prediction& prediction) {
+  const double end = periodEnd();
+  Ring::OpenPeriod& slot = ring_->slotOf(ring_->schedule.index());
+  present_ = substituted_ = 0;
+  for (PeriodEntry& e : entries_) e = PeriodEntry{};
+  for (Index i = 0; i < inputCount(); ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    const InputPeriod& in = slot.inputs[ii];
+    InputAligner& aligner = ring_->aligners[ii];
+    InputCounters& c = counters_[ii];
+    std::optional<AlignedValue> v = aligner.measured(in);
+    if (v && inputOptions(i).gated() &&
+        prediction.gateDistance(i, v->value, v->variance) > inputOptions(i).gateThreshold) {
+      c.gated += in.count();
+      v.reset();
+    }
+    PeriodEntry& entry = entries_[ii];
+    if (v) {
+      ++present_;
+      entry.measured = true;
+      const std::uint32_t superseded = aligner.superseded(in);
+      c.superseded += superseded;
+      c.used += in.count() - superseded;
+      aligner.accept(in);
+      // Only a value that reaches the filter keeps the input alive (not one that arrives
+      // late or fails the gate): a sensor publishing nothing usable times out.
+      if (!(in.newestArrival() <= c.lastAccepted)) c.lastAccepted = in.newestArrival();
+    } else if (timedOut(i, end)) {
+      ++c.timedOutPeriods;
+      aligner.reset();  // a returning sensor starts a fresh history
+    } else if (aligner.canSubstitute()) {
+      const double predicted = aligner.policy().needsPrediction() ? prediction.mean(i) : 0.0;
+      v = aligner.substitute(end, predicted);
+      ++substituted_;
+      ++c.substituted;
+    }
+    entry.available = v.has_value();
+    if (v) {
+      entry.value = v->value;
+      entry.variance = v->variance;
+    }
+  }
+}
+
+double FusionCoreBase::periodEnd() const { return ring_->schedule.currentEnd(); }
+
+void FusionCoreBase::finishPeriod() {
+  const std::uint64_t k = ring_->schedule.index();
+  Ring::OpenPeriod& slot = ring_->slotOf(k);
+  slot.clear();
+  slot.index = k + ring_->open.size();
+  ring_->schedule.advance();
+}
+
+void FusionCoreBase::recordStep(double seconds) {
+  estimatorSeconds_ += seconds;
+  if (seconds > maxStepSeconds_) maxStepSeconds_ = seconds;
+  ++estimateCount_;
+  consecutiveFailures_ = 0;
+}
+
+bool FusionCoreBase::recordFailure(const std::string& what) {
+  ++estimationFailures_;
+  lastFailure_ = what;
+  if (++consecutiveFailures_ < options_.maxConsecutiveFailures) return false;
+  ++filterResets_;
+  consecutiveFailures_ = 0;
+  return true;
+}
+
+void FusionCoreBase::clearInputs() {
+  for (Ring::OpenPeriod& slot : ring_->open) slot.clear();
+  for (InputAligner& aligner : ring_->aligners) aligner.reset();
+  for (InputCounters& c : counters_) {
+    c.lastStamp = -std::numeric_limits<double>::infinity();
+    c.lastAccepted = std::numeric_limits<double>::quiet_NaN();
+  }
+  control_.setZero();
+  nis_.clear();
+  present_ = substituted_ = 0;
+  consecutiveFailures_ = 0;
+}
+
+const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Index inputs,
+                                                 bool canPredict) {
+  if (!(o.period >= kMinPeriod && o.period <= kMaxPeriod)) {
+    throw estimation::ParameterError(
+        "estimation period must be from 0.1 ms to 1 h (1e-4 .. 3600 s), got " +
+        std::to_string(o.period) + " s");
+  }
+  if (o.maxCatchUpPeriods < 1 || o.maxCatchUpPeriods > kMaxCatchUpLimit) {
+    throw estimation::ParameterError("maximum catch-up periods must be from 1 to " +
+                                     std::to_string(kMaxCatchUpLimit) + ", got " +
+                                     std::to_string(o.maxCatchUpPeriods));
+  }
+  if (o.maxConsecutiveFailures < 1) {
+    throw estimation::ParameterError(
+        "maximum consecutive failures must be at least 1 (1: restart at the first failure)");
+  }
+  if (!(o.maxMeasurementLag >= 0.0) || !std::isfinite(o.maxMeasurementLag)) {
+    throw estimation::ParameterError("maximum measurement lag must be finite and >= 0");
+  }
+  if (!(o.maxFutureStamp >= 0.0)) {
+    throw estimation::ParameterError("maximum future stamp must be >= 0 (infinite: no check)");
+  }
+  if (o.nisWindow > 1000000) {
+    throw estimation::ParameterError("NIS window is longer than 1e6 periods");
+  }
+  if (o.maxMeasurementLag / o.period > 10000.0) {
+    throw estimation::ParameterError("maximum measurement lag is more than 10000 periods");
+  }
+  if (!o.inputs.empty() && static_cast<Index>(o.inputs.size()) != inputs) {
+    throw estimation::ParameterError("input options: expected " + std::to_string(inputs) +
+                                     " entries (one per input), found " +
+                                     std::to_string(o.inputs.size()));
+  }
+  for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+    const std::string problem = inputOptionsProblem(o.inputs[i]);
+    if (!problem.empty()) {
+      throw estimation::ParameterError("input " + std::to_string(i) + ": " + problem);
+    }
+    if (!canPredict && (o.inputs[i].gated() || o.inputs[i].alignment.needsPrediction())) {
+      throw estimation::ParameterError(
+          "input " + std::to_string(i) + ": " +
+          (o.inputs[i].gated() ? "a Mahalanobis gate" : "FILL") +
+          " needs the filter's predicted measurement, which this method does not give");
+    }
+  }
+  return o;
+}
+
+void FusionCoreBase::restartSchedule(double now) {
+  startTime_ = now;
+  ring_->schedule.start(now - options_.maxMeasurementLag);
+  openWindow();
+}
+
+/// Assigns the slots to the open periods from the current one on. A slot still holding an
+/// older period (skipped by a gap or a restart) is emptied; its controls are kept.
+void FusionCoreBase::openWindow() {
+  for (std::uint64_t k = ring_->schedule.index(); k <= ring_->newestOpenPeriod(); ++k) {
+    Ring::OpenPeriod& slot = ring_->slotOf(k);
+    if (slot.index == k) continue;
+    takeControls(slot, control_);
+    slot.clear();
+    slot.index = k;
+  }
+}
+
+}  // namespace sf_filter

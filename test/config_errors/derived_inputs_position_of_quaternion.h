@@ -1,0 +1,12 @@
+// EXPECT: DERIVED_INPUTS entry 0 ((0)(X)(DIFFERENTIAL)): the field of TOPICS_IN entry 0 is not a pose (members position and orientation)
+// Mistake: X needs a pose, the field is a quaternion
+#include "fake_msgs.h"
+
+#define METHOD EXTENDED_KALMAN_FILTER
+#define STATE_TRANSITION_MODEL (x[0] + x[1] * T)(x[1])
+#define OBSERVATION_MODEL (x[0])(x[1])
+#define PROCESS_NOISE_COVARIANCE ((0.01)(0))((0)(0.1))
+#define MEASUREMENT_NOISE_COVARIANCE ((0.5)(0))((0)(0.2))
+#define TOPICS_OUT ((heading)(0))
+#define TOPICS_IN ((odom)(nav_msgs::Odometry)(pose.pose.orientation))((imu)(sensor_msgs::Imu)(angular_velocity.z))
+#define DERIVED_INPUTS ((0)(X)(DIFFERENTIAL))

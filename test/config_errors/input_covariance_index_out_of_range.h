@@ -1,0 +1,13 @@
+// EXPECT: INPUT_COVARIANCE entry 0 ((5)(orientation_covariance)(8)): input index '5' is out of range
+// Mistake: there are two inputs
+#include "fake_msgs.h"
+
+#define METHOD EXTENDED_KALMAN_FILTER
+#define STATE_TRANSITION_MODEL (x[0] + x[1] * T)(x[1])
+#define OBSERVATION_MODEL (x[0])(x[1])
+#define PROCESS_NOISE_COVARIANCE ((0.01)(0))((0)(0.1))
+#define MEASUREMENT_NOISE_COVARIANCE ((0.5)(0))((0)(0.2))
+#define TOPICS_OUT ((heading)(0))
+#define TOPICS_IN ((imu)(sensor_msgs::Imu)(orientation))((imu)(sensor_msgs::Imu)(angular_velocity.z))
+#define DERIVED_INPUTS ((0)(YAW)(ABSOLUTE))
+#define INPUT_COVARIANCE ((5)(orientation_covariance)(8))

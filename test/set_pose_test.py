@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""set_pose and initialpose at run time (test/set_pose.test): a fusion node with POSE_OUT
+(test/configs/derived_inputs_ekf.h, state (x, y, yaw, v, omega), no sensor publishing) is sent
+a geometry_msgs/PoseWithCovarianceStamped on set_pose, then on /initialpose (rviz's 2D Pose
+Estimate). Each time the published nav_msgs/Odometry must hold the sent pose (v = 0, so the
+prediction keeps it) and, in its x, y, yaw slots, the sent covariance block plus at most the
+growth of the periods since (bound below).
+"""
+
+import math
+import sys
+import time
+import unittest
+
+import rospy
+import rostest
+from geometry_msgs.msg import PoseWithCovarianceStamped
+from nav_msgs.msg import Odometry
+
+
+def pose_message(x, y, yaw, covariance):
+    """covariance: {(row slot, column slot): value} of the 6 x 6 (x y z roll pitch yaw)."""
+    m = PoseWithCovarianceStamped()
+    m.header.stamp = rospy.Time.now()
+    m.header.frame_id = "odom"
+    m.pose.pose.position.x = x
+    m.pose.pose.position.y = y
+    m.pose.pose.orientation.z = math.sin(yaw / 2)
+    m.pose.pose.orientation.w = math.cos(yaw / 2)
+    c = [0.0] * 36
+    for (r, k), v in covariance.items():
+        c[r * 6 + k] = v
+        c[k * 6 + r] = v
+    m.pose.covariance = c
+    return m
+
+
+def yaw_of(q):
+    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+
+
+class SetPoseTest(unittest.TestCase):
+    def setUp(self):
+        self.odometry = []
+        rospy.Subscriber("/odometry/filtered", Odometry, self.odometry.append)
+
+    def wait_for(self, predicate, seconds):
+        deadline = time.monotonic() + seconds
+        while time.monotonic() < deadline:
+            if predicate():
+                return True
+            time.sleep(0.02)
+        return False
+
+    def check(self, topic, x, y, yaw, covariance):
+        publisher = rospy.Publisher(topic, PoseWithCovarianceStamped, queue_size=1, latch=True)
+        self.assertTrue(self.wait_for(lambda: publisher.get_num_connections() >= 1, 20.0),
+                        "the node did not subscribe to " + topic)
+        self.assertTrue(self.wait_for(lambda: self.odometry, 20.0), "no odometry/filtered")
+        sent = rospy.Time.now()
+        publisher.publish(pose_message(x, y, yaw, covariance))
+
+        def arrived():
+            return [m for m in self.odometry if m.header.stamp > sent + rospy.Duration(0.15)]
+        self.assertTrue(self.wait_for(lambda: len(arrived()) >= 1, 5.0),
+                        "no odometry after the pose was sent on " + topic)
+        odom = arrived()[0]
+        p = odom.pose.pose
+        self.assertAlmostEqual(p.position.x, x, places=6)
+        self.assertAlmostEqual(p.position.y, y, places=6)
+        self.assertAlmostEqual(yaw_of(p.orientation), yaw, places=6)
+        c = odom.pose.covariance
+        # k periods since the pose was set: Q adds k 1e-4, the speed and turn rate at most
+        # k^2 T^2 P(v) (P(omega)) through x, y and yaw and their growing correlations with v
+        # and omega (which set_pose made 0); P(v), P(omega) are the Odometry's twist variances
+        # (TWIST_OUT), which only grow while no sensor reports.
+        k = math.ceil((odom.header.stamp - sent).to_sec() / 0.1) + 1
+        rates = max(odom.twist.covariance[0], odom.twist.covariance[35])
+        growth = k * 1e-4 + k * k * 0.01 * rates
+        for (r, k), v in covariance.items():
+            if r == k:
+                self.assertGreaterEqual(c[r * 6 + k], v - 1e-12, (topic, r))
+                self.assertLessEqual(c[r * 6 + k], v + growth, (topic, r))
+            else:
+                self.assertAlmostEqual(c[r * 6 + k], v, delta=growth)
+        return odom
+
+    def test_set_pose_then_initialpose(self):
+        self.check("/set_pose", 3.0, -2.0, 1.0, {(0, 0): 0.25, (1, 1): 0.16, (5, 5): 0.04,
+                                                   (0, 1): 0.05})
+        # rviz's pose estimate, across the seam of the heading.
+        self.check("/initialpose", -1.0, 5.0, -3.1, {(0, 0): 0.5, (1, 1): 0.5, (5, 5): 0.07})
+
+
+if __name__ == "__main__":
+    rospy.init_node("set_pose_test")
+    rostest.rosrun("sf_pkg", "set_pose", SetPoseTest, sys.argv)
