@@ -37,7 +37,42 @@ CASES = [
      "parameter ~estimation_period: expected a number, found a string (\"fast\")"),
     ("estimation_period", [100],
      "parameter ~estimation_period: expected a number, found a list of 1"),
-    ("estimation_period", 0, "parameter ~estimation_period: must be a positive number of ms"),
+    # time parameters in seconds (REP-103), refused outside their plausible range with the
+    # unit named, and the old unit's hint where it fits
+    ("estimation_period", 0, "parameter ~estimation_period must be 0.0001 .. 10 s, found 0"),
+    ("estimation_period", 50, "parameter ~estimation_period must be 0.0001 .. 10 s, found 50 "
+     "(seconds, not milliseconds: 50 ms is 0.05 s)"),
+    ("estimation_period", 1.0e13, "parameter ~estimation_period must be 0.0001 .. 10 s, "
+     "found 1e+13"),
+    ("estimation_period", 1.0e-6, "parameter ~estimation_period must be 0.0001 .. 10 s, "
+     "found 1e-06"),
+    ("frequency", 0.01, "parameter ~frequency: must be 0.1 .. 10000 Hz, found 0.01"),
+    ({"frequency": 20, "estimation_period": 0.05}, None,
+     "parameters ~estimation_period and ~frequency are both set: give one of them"),
+    ("max_measurement_lag", 40, "parameter ~max_measurement_lag must be 0 (none) or 0 .. 10 s, "
+     "found 40 (seconds, not milliseconds: 40 ms is 0.04 s)"),
+    ("max_future_stamp", 500, "parameter ~max_future_stamp must be 0 (none) or 0 .. 60 s, "
+     "found 500 (seconds, not milliseconds: 500 ms is 0.5 s)"),
+    ("input_timeout", [0, 500], "parameter ~input_timeout entry 1: timeout must be 0 (none) or "
+     "0.0001 .. 60 s, found 500 (seconds, not milliseconds: 500 ms is 0.5 s)"),
+    # gates in standard deviations as an alternative to the chi-square threshold
+    ({"input_gate": [0, 9.0], "input_gate_sigma": [0, 3.0]}, None,
+     "parameters ~input_gate (chi-square) and ~input_gate_sigma (standard deviations) are "
+     "both set"),
+    ("input_gate_sigma", [0, -3.0], "parameter ~input_gate_sigma entry 1: expected a number of "
+     "standard deviations from 0 (no gate) to 1e6"),
+    # numbers at the edge and settings that would flood or freeze the node
+    ("process_noise_covariance", [1e308, 0.0, 0.0, 0.01],
+     "parameter ~process_noise_covariance row 0 column 0: 1e+308 is not a finite number of "
+     "magnitude at most 1e100"),
+    ("measurement_noise_covariance", [0.25, 0.0, 0.0, 1e101],
+     "parameter ~measurement_noise_covariance row 1 column 1: 1e+101 is not a finite number"),
+    ("initial_error_covariance", [[1e200, 0], [0, 1]],
+     "parameter ~initial_error_covariance row 0 column 0: 1e+200 is not a finite number"),
+    ("diagnostic_period", 1e-9, "parameter ~diagnostic_period: expected a number of seconds "
+     "from 0.01 to 3600"),
+    ("frame_id", "", "parameter ~frame_id: '' is not a tf2 frame name"),
+    ("child_frame_id", "", "parameter ~child_frame_id: '' is not a tf2 frame name"),
     ("random_seed", 1.5, "parameter ~random_seed: expected an integer, found a number"),
     ("random_seed", -3, "parameter ~random_seed: must not be negative"),
     ("input_gate", [1.0], "parameter ~input_gate: expected 2 entries (one per TOPICS_IN entry), "
@@ -74,9 +109,9 @@ class BadParametersTest(unittest.TestCase):
 
     def test_each_bad_parameter_is_refused_at_start(self):
         for k, (param, value, words) in enumerate(CASES):
-            with self.subTest(param=param, value=value):
+            with self.subTest(param=str(param), value=value):
                 name = "bad_%d" % k
-                proc = self.start(name, {param: value})
+                proc = self.start(name, param if isinstance(param, dict) else {param: value})
                 try:
                     out, err = proc.communicate(timeout=20)
                 except subprocess.TimeoutExpired:
@@ -92,7 +127,7 @@ class BadParametersTest(unittest.TestCase):
         proc = self.start("good", {
             "process_noise_covariance": [[0.001, 0], [0, 0.01]],
             "measurement_noise_covariance": [0.25, 0.0, 0.0, 0.04],
-            "initial_state": [0, 1], "estimation_period": 50, "random_seed": 3,
+            "initial_state": [0, 1], "estimation_period": 0.05, "random_seed": 3,
             "input_gate": [0, 9.0], "input_alignment": ["AVERAGE", "LAST"],
             "align_by_stamp": [False, True], "frame_id": "map", "publish_tf": False})
         time.sleep(5.0)

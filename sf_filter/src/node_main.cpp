@@ -2,12 +2,14 @@
 // ROS node, or with --replay the offline bag replay. Compiled once into the node library;
 // the translation unit of each configuration header only builds its NodeDefinition.
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -25,11 +27,19 @@
 #include "sf_filter/replay/contained_run.hpp"
 #include "sf_filter/replay/library_messages.hpp"
 #include "sf_filter/replay/replay_frame_aligner.hpp"
+#include "sf_filter/replay/yaml_parameters.hpp"
 
+#include <geometry_msgs/TransformStamped.h>
+#include <tf2/LinearMath/Quaternion.h>
 
 namespace {
 
 using sf_filter::NodeDefinition;
+
+/// A topic name without its leading '/': the configured and the remapped names compare so.
+std::string relativeName(const std::string& topic) {
+  return !topic.empty() && topic[0] == '/' ? topic.substr(1) : topic;
+}
 
 /// The input names with what FRAME_ALIGNED_INPUTS do to them, for the log and diagnostics.
 sf_filter::NodeDescription describe(const NodeDefinition& def, const std::string& baseFrame) {
@@ -115,10 +125,13 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   const std::string usage =
       "usage: " + program +
       " --replay INPUT.bag [--csv OUT.csv] [--bag OUT.bag] [--name NODE]\n"
-      "       [--estimation-period MS] [--scale-q FACTOR] [--scale-r FACTOR] [--seed N]\n"
+      "       [--estimation-period S | --estimation-period-ms MS] [--scale-q FACTOR]\n"
+      "       [--scale-r FACTOR] [--seed N] [--strict]\n"
       "       [--frame-id FRAME] [--child-frame-id FRAME] [--base-frame FRAME]\n"
       "       [--align INPUT=POLICY]... [--gate INPUT=THRESHOLD]... [--align-by-stamp INPUT]...\n"
-      "       [--align-by-arrival INPUT]... [--max-lag MS] [--allow-missing-topics]\n"
+      "       [--align-by-arrival INPUT]... [--max-lag S] [--allow-missing-topics]\n"
+      "       [--params FILE.yaml] [FROM:=TO]...\n"
+      "       [--static-transform X Y Z YAW PITCH ROLL PARENT CHILD]...\n"
       "Replays the bag through this node's filter without a ROS master, in recorded-time\n"
       "order, and writes the estimates. Without --csv and --bag only a summary is printed.\n"
       "--frame-id, --child-frame-id: frames of the output bag's odometry (default odom,\n"
@@ -126,23 +139,59 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       "FRAME_ALIGNED_INPUTS are rotated into (default BASE_FRAME, like ~base_frame), with\n"
       "the bag's /tf_static and /tf. --allow-missing-topics: a configured topic missing from\n"
       "the bag is a warning (its inputs are missing in every period), not an error.\n"
+      "Times in seconds like the node's parameters (--estimation-period 0.01: 10 ms;\n"
+      "--estimation-period-ms 10 is the same). --strict: exit status 1 if a step failed,\n"
+      "the filter was reset or a value was dropped. --params: the node's private parameters from a "
+      "YAML file\n"
+      "(as rosparam load takes it), parsed and checked as the node does; options given\n"
+      "here override it. FROM:=TO reads the configured topic FROM from the bag's topic TO.\n"
+      "--static-transform: a transform as static_transform_publisher takes it (metres,\n"
+      "radians), for a bag without /tf_static.\n"
       "POLICY: AVERAGE, LAST, SAMPLED, 'HOLD LAGRANGE|BEZIER|TAYLOR ORDER [VARIANCE]' or\n"
       "'FILL OMEGA N [VARIANCE]'; THRESHOLD 0 removes a gate (doc/alignment_policies.md).";
   sf_filter::ReplayOptions options;
   options.nodeName = program.substr(program.find_last_of('/') + 1);
   double periodMs = def.estimationPeriodMs, scaleQ = 1.0, scaleR = 1.0;
   double lagMs = def.maxMeasurementLagMs;
+  bool strict = false;
   std::optional<long> seed;
   std::string baseFrame = def.baseFrame;
   std::vector<sf_filter::InputOptions> inputs = def.inputOptions;
   const sf_filter::InputCapabilities& can = def.capabilities;
+  std::optional<sf_filter::YamlParameterSource> params;
+  std::optional<double> periodOverrideMs;
+  std::optional<sf_filter::FilterParameters> fileParameters;
+  double maxFutureStampMs = sf_filter::kDefaultMaxFutureStampMs;
+  std::map<std::string, std::string> remaps;
+  std::vector<geometry_msgs::TransformStamped> staticTransforms;
   try {
+    // --params first: the options override the file whatever their order.
+    for (int i = 1; i + 1 < argc; ++i) {
+      if (std::string(argv[i]) != "--params") continue;
+      if (params) throw std::invalid_argument("--params given twice");
+      params.emplace(argv[i + 1]);
+      for (const std::string& line : sf_filter::unknownParameterWarnings(*params)) {
+        std::cerr << program << ": warning: --params " << argv[i + 1] << ": " << line << std::endl;
+      }
+      periodMs = sf_filter::loadPeriodMs(*params, periodMs);
+      sf_filter::loadInputParameters(*params, inputs, lagMs, can);
+      maxFutureStampMs = sf_filter::loadFaultParameters(*params, inputs, can).maxFutureStampMs;
+      const sf_filter::OutputSettings out = sf_filter::loadOutputParameters(*params);
+      options.frameId = out.frameId;
+      options.childFrameId = out.childFrameId;
+      baseFrame = sf_filter::detail::frameParameter(*params, "base_frame", baseFrame);
+    }
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
       auto value = [&]() -> std::string {
         if (i + 1 >= argc) throw std::invalid_argument("option " + arg + " needs a value");
         return argv[++i];
       };
+      const std::size_t remap = arg.find(":=");
+      if (remap != std::string::npos && remap > 0 && arg[0] != '_') {
+        remaps[relativeName(arg.substr(0, remap))] = arg.substr(remap + 2);
+        continue;
+      }
       if (arg == "--help") {
         std::cout << usage << std::endl;
         return EXIT_SUCCESS;
@@ -152,10 +201,44 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
         options.csvPath = value();
       } else if (arg == "--bag") {
         options.outputBag = value();
+      } else if (arg == "--params") {
+        value();  // read above
+      } else if (arg == "--static-transform") {
+        if (i + 8 >= argc) {
+          throw std::invalid_argument("--static-transform needs X Y Z YAW PITCH ROLL PARENT CHILD");
+        }
+        double v[6];
+        for (double& x : v) {
+          x = std::stod(argv[++i]);
+          if (!std::isfinite(x)) throw std::invalid_argument("--static-transform: not finite");
+        }
+        geometry_msgs::TransformStamped t;
+        t.header.frame_id = argv[++i];
+        t.child_frame_id = argv[++i];
+        t.transform.translation.x = v[0];
+        t.transform.translation.y = v[1];
+        t.transform.translation.z = v[2];
+        tf2::Quaternion q;
+        q.setRPY(v[5], v[4], v[3]);
+        t.transform.rotation.x = q.x();
+        t.transform.rotation.y = q.y();
+        t.transform.rotation.z = q.z();
+        t.transform.rotation.w = q.w();
+        staticTransforms.push_back(t);
       } else if (arg == "--name") {
         options.nodeName = value();
       } else if (arg == "--estimation-period") {
-        periodMs = std::stod(value());
+        periodMs = sf_filter::secondsToMs("--estimation-period", std::stod(value()),
+                                          sf_filter::kMinPeriodSeconds,
+                                          sf_filter::kMaxPeriodSeconds, false);
+        periodOverrideMs = periodMs;
+      } else if (arg == "--estimation-period-ms") {
+        periodMs = sf_filter::secondsToMs("--estimation-period-ms", std::stod(value()) / 1000.0,
+                                          sf_filter::kMinPeriodSeconds,
+                                          sf_filter::kMaxPeriodSeconds, false);
+        periodOverrideMs = periodMs;
+      } else if (arg == "--strict") {
+        strict = true;
       } else if (arg == "--scale-q") {
         scaleQ = std::stod(value());
       } else if (arg == "--scale-r") {
@@ -196,15 +279,33 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       } else if (arg == "--allow-missing-topics") {
         options.allowMissingTopics = true;
       } else if (arg == "--max-lag") {
-        lagMs = sf_filter::checkedLagMs(std::stod(value()));
+        lagMs = sf_filter::checkedLagMs(sf_filter::secondsToMs("--max-lag", std::stod(value()), 0.0,
+                                                               sf_filter::kMaxLagSeconds, true));
       } else {
         throw std::invalid_argument("unknown option " + arg);
       }
     }
-    if (!(periodMs > 0.0)) throw std::invalid_argument("--estimation-period must be positive");
+
     if (!(scaleQ > 0.0) || !(scaleR > 0.0))
       throw std::invalid_argument("scale factors must be positive");
     if (seed && *seed < 0) throw std::invalid_argument("--seed must not be negative");
+    // With --params: the file's Q, R, x0, P0, ... through the node's own parsing, the
+    // header's entries evaluated for the final period (an option overrides the file's).
+    if (params) {
+      fileParameters = sf_filter::loadParameters<sf_filter::FilterParameters>(
+          *params, [&](double) { return def.defaultParameters(periodMs); },
+          periodOverrideMs.value_or(periodMs));
+    }
+    if (!staticTransforms.empty() && !def.frameAlignment) {
+      throw std::invalid_argument("--static-transform: this node has no FRAME_ALIGNED_INPUTS");
+    }
+    for (const auto& [from, to] : remaps) {
+      bool known = false;
+      for (const sf_filter::TopicReader& reader : def.topics) {
+        known = known || relativeName(reader.topic) == from;
+      }
+      if (!known) throw std::invalid_argument(from + ":=" + to + ": no configured topic " + from);
+    }
     if (def.frameAlignment && (baseFrame.empty() || baseFrame.front() == '/')) {
       throw std::invalid_argument("--base-frame '" + baseFrame +
                                   "' is not a tf2 frame name (not empty, no leading '/')");
@@ -220,23 +321,34 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
     console_bridge::useOutputHandler(&libraryMessages);
     try {
       ros::Time::init();
-      sf_filter::FilterParameters parameters = def.defaultParameters(periodMs);
+      sf_filter::FilterParameters parameters =
+          fileParameters ? *fileParameters : def.defaultParameters(periodMs);
       parameters.process_noise_covariance *= scaleQ;
       parameters.measurement_noise_covariance *= scaleR;
       if (seed) parameters.random_seed = static_cast<unsigned>(*seed);
       std::optional<sf_filter::ReplayFrameAligner> aligner;
       if (def.frameAlignment) aligner.emplace(baseFrame, def.description.inputs);
       std::optional<ReplayAlignerRotation> rotation;
-      sf_filter::BagReplay replay(def.makeEngine(parameters, coreOptions(periodMs, inputs, lagMs)),
-                                  describe(def, baseFrame), options);
+      sf_filter::BagReplay replay(
+          def.makeEngine(parameters, coreOptions(periodMs, inputs, lagMs, maxFutureStampMs)),
+          describe(def, baseFrame), options);
       if (aligner) {
         rotation.emplace(*aligner);
         replay.setRotation(&*rotation);
         replay.readTransforms([&aligner](const tf2_msgs::TFMessage& msg, bool isStatic) {
           aligner->addTransforms(msg, isStatic);
         });
+        if (!staticTransforms.empty()) {
+          tf2_msgs::TFMessage given;
+          given.transforms = staticTransforms;
+          aligner->addTransforms(given, true);
+        }
       }
-      for (const sf_filter::TopicReader& reader : def.topics) replay.subscribe(reader);
+      for (sf_filter::TopicReader reader : def.topics) {
+        const auto remapped = remaps.find(relativeName(reader.topic));
+        if (remapped != remaps.end()) reader.topic = remapped->second;
+        replay.subscribe(reader);
+      }
       const auto start = std::chrono::steady_clock::now();
       const sf_filter::ReplaySummary s = replay.run();
       const double wall =
@@ -247,9 +359,13 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
         late += replay.core().counters(i).late;
         substituted += replay.core().counters(i).substituted;
       }
+      const std::uint64_t failures = replay.core().estimationFailures();
+      const std::uint64_t resets = replay.core().filterResets();
+      const std::uint64_t unrotated = aligner ? aligner->droppedTotal() : 0;
       std::cout << options.nodeName << ": " << s.messages << " messages, " << s.estimates
-                << " estimates, " << s.dropped << " dropped values (" << late << " late), " << gated
-                << " gated, " << substituted << " substitutes, "
+                << " estimates, " << failures << " failed steps, " << resets << " filter resets, "
+                << s.skippedGaps << " gaps skipped, " << s.dropped << " dropped values (" << late
+                << " late), " << gated << " gated, " << substituted << " substitutes, "
                 << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
                 << " us per estimation step, " << wall << " s in all" << std::endl;
       printInputCounters(options.nodeName, replay.core());
@@ -259,6 +375,11 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                   << aligner->rejectedTransforms() << " refused by tf2), "
                   << aligner->droppedTotal() << " values dropped: not rotatable into '"
                   << aligner->baseFrame() << "'" << std::endl;
+      }
+      if (strict && (failures > 0 || resets > 0 || s.dropped > 0 || unrotated > 0)) {
+        std::cerr << program << ": --strict: " << failures << " failed steps, " << resets
+                  << " filter resets, " << s.dropped + unrotated << " dropped values" << std::endl;
+        return EXIT_FAILURE;
       }
     } catch (const std::exception& e) {
       std::cerr << program << ": " << e.what() << std::endl;
@@ -280,34 +401,42 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   });
 }
 
-/// The online node.
+/// The online node. Everything from reading the parameters to the first estimate's timer is
+/// start-up: any exception there is the one-line refusal of doc/filter_node.md, exit status 1.
 int nodeMain(int argc, char** argv, const NodeDefinition& def) {
   ros::init(argc, argv, "sf_filter");
-  ros::NodeHandle nh;
-  ros::NodeHandle pnh("~");
+  std::optional<ros::NodeHandle> nh, pnh;
   std::optional<sf_filter::FrameAligner> aligner;  // outlives the node's subscriptions
   std::optional<sf_filter::FusionNode> node;
   try {
-    if (def.frameAlignment) aligner.emplace(pnh, def.baseFrame, def.description.inputs);
-    const sf_filter::FilterParameters parameters = sf_filter::loadParameters<sf_filter::FilterParameters>(
-        pnh, def.defaultParameters, def.estimationPeriodMs);
+    nh.emplace();
+    pnh.emplace("~");
+    const sf_filter::RosParameterSource params(*pnh);
+    for (const std::string& line : sf_filter::unknownParameterWarnings(params)) {
+      ROS_WARN("%s", line.c_str());
+    }
+    if (def.frameAlignment) aligner.emplace(params, def.baseFrame, def.description.inputs);
+    const sf_filter::FilterParameters parameters =
+        sf_filter::loadParameters<sf_filter::FilterParameters>(params, def.defaultParameters,
+                                                               def.estimationPeriodMs);
     std::vector<sf_filter::InputOptions> inputs = def.inputOptions;
     double lagMs = def.maxMeasurementLagMs;
-    sf_filter::loadInputParameters(pnh, inputs, lagMs, def.capabilities);
+    sf_filter::loadInputParameters(params, inputs, lagMs, def.capabilities);
     const sf_filter::FaultSettings faults =
-        sf_filter::loadFaultParameters(pnh, inputs, def.capabilities);
+        sf_filter::loadFaultParameters(params, inputs, def.capabilities);
     auto options =
         coreOptions(parameters.estimation_period_ms, inputs, lagMs, faults.maxFutureStampMs);
     options.nisWindow = static_cast<std::size_t>(faults.nisWindow);
     const std::string baseFrame = aligner ? aligner->baseFrame() : def.baseFrame;
-    node.emplace(nh, pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
-                 aligner ? &*aligner : nullptr, faults.diagnosticPeriod);
+    node.emplace(*nh, *pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
+                 aligner ? &*aligner : nullptr, faults.diagnosticPeriod,
+                 sf_filter::loadOutputParameters(params));
+    for (const sf_filter::TopicReader& reader : def.topics) node->subscribe(reader);
+    node->start();
   } catch (const std::exception& e) {
     ROS_FATAL("%s: refusing to start: %s", ros::this_node::getName().c_str(), e.what());
     return EXIT_FAILURE;
   }
-  for (const sf_filter::TopicReader& reader : def.topics) node->subscribe(reader);
-  node->start();
   ros::spin();
   // On stdout: ros::shutdown() has ended rosconsole, so ROS_INFO would print nothing now.
   std::cout << ros::this_node::getName() << ": "

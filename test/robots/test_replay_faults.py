@@ -18,6 +18,7 @@ Run by hand:
 import os
 import resource
 import signal
+import stat
 import struct
 import subprocess
 import sys
@@ -43,11 +44,13 @@ def executable():
     return exe
 
 
-def write_small_bag(path, odom=True, imu_type="sensor_msgs/Imu", count=100, compression="none"):
+def write_small_bag(path, odom=True, imu_type="sensor_msgs/Imu", count=100, compression="none",
+                    early=None, odom_value=0.5):
     """A 2 s bag at 50 Hz in the node's topics: odom (nav_msgs/Odometry), imu/data as
     sensor_msgs/Imu, as another type (imu_type="geometry_msgs/Vector3Stamped"), as a
     sensor_msgs/Imu of another definition (imu_type="other md5sum"), or not at all
-    (imu_type=None), and the static transform base_link -> imu_link."""
+    (imu_type=None), and the static transform base_link -> imu_link. `early`: a time [s]
+    of one more odom message long before the others; `odom_value`: their linear.x."""
     import rospy  # noqa: F401  (rosbag needs genpy's time types)
     import rosbag
     from geometry_msgs.msg import TransformStamped, Vector3Stamped
@@ -68,13 +71,18 @@ def write_small_bag(path, odom=True, imu_type="sensor_msgs/Imu", count=100, comp
         static.child_frame_id = "imu_link"
         static.transform.rotation.w = 1.0
         bag.write("/tf_static", TFMessage(transforms=[static]), t0)
+        if early is not None:
+            o = Odometry()
+            o.header.stamp = genpy.Time.from_sec(early)
+            o.header.frame_id = "odom"
+            bag.write("odom", o, o.header.stamp)
         for k in range(count):
             t = t0 + genpy.Duration(0, 20000000 * (k + 1))
             if odom:
                 o = Odometry()
                 o.header.stamp = t
                 o.header.frame_id = "odom"
-                o.twist.twist.linear.x = 0.5
+                o.twist.twist.linear.x = odom_value
                 o.twist.twist.angular.z = 0.1
                 bag.write("odom", o, t)
             if imu_type in ("sensor_msgs/Imu", "other md5sum"):
@@ -246,6 +254,112 @@ class ReplayFaultTest(unittest.TestCase):
             # rosbag says "Error seeking" or "Error writing", not why
             self.assertFails(self.replay(SHIPPED, csv="", preexec_fn=limit),
                              "cannot write " + self.bag)
+
+    # -- outputs that would destroy the input or something that is not a file (issue 15 D1, D2)
+
+    def assertUnchanged(self, path, before):
+        with open(path, "rb") as f:
+            self.assertEqual(f.read(), before, path + " was changed")
+
+    def test_output_that_is_the_input_is_refused(self):
+        os.mkdir(self.path("sub"))
+        source = self.path("in.bag")
+        write_small_bag(source)
+        os.link(source, self.path("hardlink.bag"))
+        with open(source, "rb") as f:
+            before = f.read()
+        for option, target in (("--bag", source), ("--csv", source),
+                               ("--csv", os.path.join(self.dir, "sub", "..", "in.bag")),
+                               ("--bag", self.path("hardlink.bag"))):
+            with self.subTest(option=option, target=target):
+                proc = self.replay(source, csv=target if option == "--csv" else "",
+                                   out_bag=target if option == "--bag" else "")
+                self.assertFails(proc, option, "is the input bag", status=1,
+                                 outputs=[target + ".partial"])
+                self.assertUnchanged(source, before)
+
+    def test_non_regular_targets_are_refused(self):
+        fifo = self.path("fifo")
+        os.mkfifo(fifo)
+        directory = self.path("dir")
+        os.mkdir(directory)
+        cases = [(fifo, "a FIFO"), (directory, "a directory")]
+        device = self.path("null")  # a /dev/null of the test's own: a bug must not replace it
+        try:
+            os.mknod(device, 0o600 | stat.S_IFCHR, os.makedev(1, 3))
+            cases.append((device, "a device"))
+        except OSError:
+            pass  # not allowed to make device nodes here
+        for target, kind in cases:
+            with self.subTest(target=target):
+                proc = self.replay(SHIPPED, csv=target, out_bag="")
+                self.assertFails(proc, "--csv " + target, "it is " + kind,
+                                 outputs=[target + ".partial"])
+        self.assertTrue(stat.S_ISFIFO(os.lstat(fifo).st_mode))
+        if os.path.lexists(device):
+            self.assertTrue(stat.S_ISCHR(os.lstat(device).st_mode))
+
+    def test_same_path_for_csv_and_bag_is_refused(self):
+        for second in (self.csv, os.path.join(self.dir, ".", "out.csv")):
+            with self.subTest(second=second):
+                proc = self.replay(SHIPPED, csv=self.csv, out_bag=second)
+                self.assertFails(proc, "--csv and --bag name the same file")
+
+    # -- bounded work (D3) and the summary (D8)
+
+    def test_a_gap_longer_than_the_limit_is_skipped(self):
+        # one message at t = 1 s, the rest 1.7e9 s later: crossed like a clock jump online, in
+        # one estimate, not by 8.5e10 empty 20 ms periods
+        source = self.path("gap.bag")
+        write_small_bag(source, early=1.0)
+        proc = self.replay(source, out_bag="")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn(": 201 messages, ", proc.stdout)
+        self.assertIn(", 1 gaps skipped, ", proc.stdout)
+        with open(self.csv) as f:
+            rows = sum(1 for _ in f) - 1
+        # the bag's 2 s at a 20 ms period: 100 periods, plus the gap's one estimate
+        self.assertLessEqual(rows, 102)
+        self.assertGreaterEqual(rows, 99)
+
+    def test_period_and_lag_in_seconds_with_bounds(self):
+        for option, value, words in (
+                ("--estimation-period", "1e-6", "--estimation-period must be 0.0001 .. 10 s"),
+                ("--estimation-period", "50", "(seconds, not milliseconds: 50 ms is 0.05 s)"),
+                ("--estimation-period", "1e13", "--estimation-period must be 0.0001 .. 10 s"),
+                ("--estimation-period-ms", "1e-6", "--estimation-period-ms must be"),
+                ("--max-lag", "40", "(seconds, not milliseconds: 40 ms is 0.04 s)")):
+            with self.subTest(option=option, value=value):
+                proc = self.replay(SHIPPED, option, value)
+                self.assertEqual(proc.returncode, 2, proc.stderr)
+                self.assertIn(words, proc.stderr.splitlines()[0])
+                self.assertFalse(os.path.exists(self.csv))
+        # --estimation-period 0.04 and --estimation-period-ms 40: the same estimates
+        seconds = self.replay(SHIPPED, "--estimation-period", "0.04", out_bag="")
+        self.assertEqual(seconds.returncode, 0, seconds.stderr)
+        with open(self.csv) as f:
+            by_seconds = f.read()
+        ms = self.replay(SHIPPED, "--estimation-period-ms", "40", out_bag="")
+        self.assertEqual(ms.returncode, 0, ms.stderr)
+        with open(self.csv) as f:
+            self.assertEqual(f.read(), by_seconds)
+        first, second = [float(line.split(",")[0]) for line in by_seconds.splitlines()[1:3]]
+        # times near 1.7e9 s: a double resolves 2**-22 s (2.4e-7 s) there
+        self.assertAlmostEqual(second - first, 0.04, delta=2 * 2.0 ** -22)
+
+    def test_strict_fails_on_dropped_values(self):
+        source = self.path("nan.bag")
+        write_small_bag(source, odom_value=float("nan"))
+        lenient = self.replay(source, out_bag="")
+        self.assertEqual(lenient.returncode, 0, lenient.stderr)
+        self.assertIn(" 0 failed steps, 0 filter resets, ", lenient.stdout)
+        self.assertIn(", 100 dropped values ", lenient.stdout)
+        strict = self.replay(source, "--strict", csv="", out_bag="")
+        self.assertEqual(strict.returncode, 1, strict.stderr)
+        self.assertIn("--strict: 0 failed steps, 0 filter resets, 100 dropped values",
+                      strict.stderr)
+        clean = self.replay(SHIPPED, "--strict", csv="", out_bag="")
+        self.assertEqual(clean.returncode, 0, clean.stdout + clean.stderr)
 
     def test_interrupted_midway(self):
         proc = subprocess.Popen(

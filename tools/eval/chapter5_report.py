@@ -48,19 +48,19 @@ VARIANTS = collections.OrderedDict([
     # 5.2.5 on the nav3ctrl UKF: (2) R x 10, (3) R x 10 at 10 ms (Fig. 5.10), Q x 0.1 and
     # x 0.01 at 10 ms (Fig. 5.11), and the period alone (Fig. 5.14).
     ("nav3ctrl_ukf R*10", ("nav3ctrl_ukf", ["--scale-r", "10"])),
-    ("nav3ctrl_ukf R*10 10ms", ("nav3ctrl_ukf", ["--scale-r", "10", "--estimation-period", "10"])),
+    ("nav3ctrl_ukf R*10 10ms", ("nav3ctrl_ukf", ["--scale-r", "10", "--estimation-period", "0.01"])),
     ("nav3ctrl_ukf Q*0.1 10ms",
-     ("nav3ctrl_ukf", ["--scale-q", "0.1", "--estimation-period", "10"])),
+     ("nav3ctrl_ukf", ["--scale-q", "0.1", "--estimation-period", "0.01"])),
     ("nav3ctrl_ukf Q*0.01 10ms",
-     ("nav3ctrl_ukf", ["--scale-q", "0.01", "--estimation-period", "10"])),
-    ("nav3ctrl_ukf 200ms", ("nav3ctrl_ukf", ["--estimation-period", "200"])),
-    ("nav3ctrl_ukf 50ms", ("nav3ctrl_ukf", ["--estimation-period", "50"])),
-    ("nav3ctrl_ukf 20ms", ("nav3ctrl_ukf", ["--estimation-period", "20"])),
-    ("nav3ctrl_ukf 10ms", ("nav3ctrl_ukf", ["--estimation-period", "10"])),
+     ("nav3ctrl_ukf", ["--scale-q", "0.01", "--estimation-period", "0.01"])),
+    ("nav3ctrl_ukf 200ms", ("nav3ctrl_ukf", ["--estimation-period", "0.2"])),
+    ("nav3ctrl_ukf 50ms", ("nav3ctrl_ukf", ["--estimation-period", "0.05"])),
+    ("nav3ctrl_ukf 20ms", ("nav3ctrl_ukf", ["--estimation-period", "0.02"])),
+    ("nav3ctrl_ukf 10ms", ("nav3ctrl_ukf", ["--estimation-period", "0.01"])),
     # The same periods for nav3, whose model does not assume that cmd_vel is reached
     # within one period.
-    ("nav3_ukf 20ms", ("nav3_ukf", ["--estimation-period", "20"])),
-    ("nav3_ukf 10ms", ("nav3_ukf", ["--estimation-period", "10"])),
+    ("nav3_ukf 20ms", ("nav3_ukf", ["--estimation-period", "0.02"])),
+    ("nav3_ukf 10ms", ("nav3_ukf", ["--estimation-period", "0.01"])),
 ])
 
 # Thesis Table 5.3: the runs whose time per estimation step is compared. Their replays are

@@ -37,7 +37,7 @@ SENSORS = collections.OrderedDict([("gyroscope", [0]), ("accelerometer", [1]),
                                    ("wheels", [2, 3])])
 ALL_INPUTS = [0, 1, 2, 3]
 WHEEL_R = 2.0  # (mm/s)^2, R of the wheel speeds (config/pioneer/common.h)
-TEN_MS = ["--estimation-period", "10"]
+TEN_MS = ["--estimation-period", "0.01"]
 
 # One run: label, the sensor group it is about (None: all inputs), the policy, the node's
 # arguments.

@@ -43,7 +43,7 @@ DEFAULT_CONFIGS = ["nav3ctrl_ukf", "nav3ctrl_ekf", "nav3ctrl_pf", "nav3red_kf", 
 # (3) R x 10 and a 10 ms period; applied to TUNED_CONFIG.
 TUNED_CONFIG = "nav3ctrl_ukf"
 TUNING = [("R*10", ["--scale-r", "10"]),
-          ("R*10 10ms", ["--scale-r", "10", "--estimation-period", "10"])]
+          ("R*10 10ms", ["--scale-r", "10", "--estimation-period", "0.01"])]
 # Paths further than this beyond the truth are cut in the plots (nav1 runs away by tens of
 # metres; a particle filter's own pose wanders off).
 PLOT_LIMIT_M = 1.0

@@ -31,17 +31,15 @@ class FrameAligner {
   static constexpr double kWarningPeriod = 5.0;
 
   /// `inputs`: a name per measurement input ("topic field"), used in the log.
-  FrameAligner(const ros::NodeHandle& pnh, const std::string& defaultBaseFrame,
+  FrameAligner(const ParameterSource& pnh, const std::string& defaultBaseFrame,
                std::vector<std::string> inputs)
       : listener_(buffer_), names_(std::move(inputs)), states_(names_.size()) {
-    pnh.param<std::string>("base_frame", baseFrame_, defaultBaseFrame);
-    if (baseFrame_.empty() || baseFrame_.front() == '/') {
-      throw ParameterOverrideError("parameter ~base_frame: '" + baseFrame_ +
-                                   "' is not a tf2 frame name (not empty, no leading '/')");
-    }
+    baseFrame_ = detail::frameParameter(pnh, "base_frame", defaultBaseFrame);
     readScalarParameter(pnh, "transform_timeout", timeout_);
-    if (!(timeout_ >= 0.0) || !std::isfinite(timeout_)) {
-      throw ParameterOverrideError("parameter ~transform_timeout: expected seconds >= 0");
+    if (!(timeout_ >= 0.0 && timeout_ <= kMaxTransformTimeoutSeconds)) {
+      throw ParameterOverrideError(
+          "parameter ~transform_timeout: expected 0 .. 60 s (it blocks the node's callbacks "
+          "while it waits)");
     }
     ROS_INFO("spatial alignment: vectors rotated into frame '%s', transform timeout %.2f s",
              baseFrame_.c_str(), timeout_);
@@ -86,6 +84,13 @@ class FrameAligner {
 
   /// Values of `input` dropped because they could not be rotated.
   std::uint64_t dropped(std::size_t input) const { return states_.at(input).dropped; }
+  /// Why the last value of `input` was dropped (empty if none was).
+  std::string dropReason(std::size_t input) const {
+    const State& s = states_.at(input);
+    if (s.dropped == 0) return "";
+    return "no transform from frame '" + s.failedFrame + "' into '" + baseFrame_ +
+           "': " + s.lastError;
+  }
   const std::string& baseFrame() const { return baseFrame_; }
   double transformTimeout() const { return timeout_; }
 
@@ -95,6 +100,7 @@ class FrameAligner {
     bool failing = false;  ///< the last value was dropped
     std::string frame;     ///< frame of the last rotated value
     std::uint64_t dropped = 0;
+    std::string failedFrame, lastError;  ///< of the last dropped value
     ros::WallTime lastWarning;
   };
 
@@ -103,6 +109,8 @@ class FrameAligner {
     s.seen = true;
     s.failing = true;
     ++s.dropped;
+    s.failedFrame = frame;
+    s.lastError = error;
     const ros::WallTime now = ros::WallTime::now();
     if (s.dropped == 1 || (now - s.lastWarning).toSec() >= kWarningPeriod) {
       s.lastWarning = now;

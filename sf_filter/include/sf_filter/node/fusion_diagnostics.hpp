@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -19,6 +21,17 @@
 #include "sf_filter/core/health.hpp"
 
 namespace sf_filter {
+
+/// Values of the inputs lost before they reach the fusion core (FusionEngine counts only what
+/// it is given): a value that cannot be rotated into the base frame, a message of another
+/// type. `count(i)`: lost so far for input i; `reason(i)`: why, for the report.
+struct InputLossSource {
+  std::function<std::uint64_t(std::size_t)> count;
+  std::function<std::string(std::size_t)> reason;
+  /// ERROR whenever values were lost in the interval; otherwise ERROR only when none of the
+  /// input's values reached the core in it, WARN when some did.
+  bool alwaysError = false;
+};
 
 class FusionDiagnostics {
  public:
@@ -38,9 +51,20 @@ class FusionDiagnostics {
                                 [this](const ros::WallTimerEvent&) { update(); });
   }
 
+  /// Makes the input reports show the values `source` loses before the core.
+  void addLossSource(InputLossSource source) {
+    lossBefore_.emplace_back(before_.size(), 0);
+    lossSources_.push_back(std::move(source));
+  }
+
   /// Publishes one report now.
   void update() {
     updater_.force_update();
+    for (std::size_t j = 0; j < lossSources_.size(); ++j) {
+      for (std::size_t i = 0; i < before_.size(); ++i) {
+        lossBefore_[j][i] = lossSources_[j].count(i);
+      }
+    }
     // The intervals of the next report start here.
     for (std::size_t i = 0; i < before_.size(); ++i) {
       before_[i] = core_.counters(static_cast<Index>(i));
@@ -77,6 +101,19 @@ class FusionDiagnostics {
     in.sinceStart = core_.clock() - core_.startTime();
     in.timedOut = core_.timedOut(input);
     fill(inputHealth(core_.inputOptions(input), in), s);
+    for (std::size_t j = 0; j < lossSources_.size(); ++j) {
+      const InputLossSource& source = lossSources_[j];
+      const std::uint64_t total = source.count(i);
+      const std::uint64_t lost = total - lossBefore_[j][i];
+      if (lost == 0) continue;
+      const bool noneArrived = in.now.received == in.before.received;
+      s.mergeSummary(source.alwaysError || noneArrived ? diagnostic_msgs::DiagnosticStatus::ERROR
+                                                       : diagnostic_msgs::DiagnosticStatus::WARN,
+                     (noneArrived ? "every value dropped: " : "values dropped: ") +
+                         source.reason(i) + " (" + std::to_string(lost) +
+                         " since the last report)");
+      s.add("dropped before the filter", std::to_string(total));
+    }
   }
 
   EstimationTotals totals() const {
@@ -109,6 +146,8 @@ class FusionDiagnostics {
   const FusionEngine& core_;
   diagnostic_updater::Updater updater_;
   std::vector<InputCounters> before_;
+  std::vector<InputLossSource> lossSources_;
+  std::vector<std::vector<std::uint64_t>> lossBefore_;  ///< per source, per input
   EstimationTotals beforeEstimation_;
   double previousClock_ = std::numeric_limits<double>::quiet_NaN();  ///< NaN: no report yet
   double previousRosTime_ = std::numeric_limits<double>::quiet_NaN();

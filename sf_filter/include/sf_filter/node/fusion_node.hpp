@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -39,26 +40,23 @@ class FusionNode final : public MessageSink {
  public:
   /// `engine`: the header's filter in its fusion core (period, per-input alignment, gates,
   /// measurement lag, timeouts, ranges, NIS window); `aligner`: the spatial alignment of
-  /// FRAME_ALIGNED_INPUTS (nullptr without); a diagnostic report every `diagnosticPeriod` s.
+  /// FRAME_ALIGNED_INPUTS (nullptr without); a diagnostic report every `diagnosticPeriod` s;
+  /// `settings`: frames, tf, queue sizes (loadOutputParameters).
   FusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, std::unique_ptr<FusionEngine> engine,
-             NodeDescription description, FrameAligner* aligner, double diagnosticPeriod = 1.0)
+             NodeDescription description, FrameAligner* aligner, double diagnosticPeriod = 1.0,
+             const OutputSettings& settings = OutputSettings())
       : nh_(nh),
         pnh_(pnh),
         description_(std::move(description)),
         engine_(std::move(engine)),
         core_(*engine_),
         aligner_(aligner),
-        diagnostics_(nh_, pnh_, core_, description_.inputs, diagnosticPeriod) {
-    pnh_.param<std::string>("frame_id", frameId_, "odom");
-    pnh_.param<std::string>("child_frame_id", childFrameId_, "base_link");
-    pnh_.param("publish_tf", publishTf_, true);
-    // Room for a stall of the spinner thread: 1000 messages hold 1 s of a 1 kHz sensor (100
-    // lost values in a 160 ms stall of the soak test on a loaded machine).
-    pnh_.param("queue_size", queueSize_, 1000);
-    if (queueSize_ < 1 || queueSize_ > 1000000) {
-      throw ParameterOverrideError("parameter ~queue_size: expected 1 to 1000000 messages, found " +
-                                   std::to_string(queueSize_));
-    }
+        diagnostics_(nh_, pnh_, core_, description_.inputs, diagnosticPeriod),
+        diagnosticPeriod_(diagnosticPeriod),
+        frameId_(settings.frameId),
+        childFrameId_(settings.childFrameId),
+        publishTf_(settings.publishTf),
+        queueSize_(settings.queueSize) {
     for (const auto& out : description_.outputs) {
       outputs_.push_back(nh_.advertise<sf_pkg::OutputEntityStamped>(out.first, queueSize_));
     }
@@ -72,6 +70,23 @@ class FusionNode final : public MessageSink {
               onSetPose(topic, *m);
             }));
       }
+    }
+    // What is lost before the core sees it is in the input's diagnostics too: a message of
+    // another type on its topic, a value that cannot be rotated into the base frame.
+    InputLossSource wrongType;
+    wrongType.alwaysError = true;
+    wrongType.count = [this](std::size_t i) { return wrongTypeOf(i).count; };
+    wrongType.reason = [this](std::size_t i) {
+      const WrongType& w = wrongTypeOf(i);
+      return "topic " + w.topic + " receives " + w.received + ", the configuration reads " +
+             w.expected;
+    };
+    diagnostics_.addLossSource(wrongType);
+    if (aligner_) {
+      InputLossSource unrotated;
+      unrotated.count = [this](std::size_t i) { return aligner_->dropped(i); };
+      unrotated.reason = [this](std::size_t i) { return aligner_->dropReason(i); };
+      diagnostics_.addLossSource(unrotated);
     }
     logConfiguration();
   }
@@ -96,9 +111,38 @@ class FusionNode final : public MessageSink {
         }));
   }
 
-  /// Starts the fixed-rate schedule once the clock is valid (sim time waits for /clock).
+  /// Starts the fixed-rate schedule once the clock is valid (sim time waits for /clock, saying
+  /// so every 5 s of wall time).
   void start() {
-    ros::Time::waitForValid();
+    const ros::WallTime waiting = ros::WallTime::now();
+    ros::WallTime lastWarning, lastReport;
+    ros::Publisher waitingReport;  // /diagnostics while the updater cannot run yet
+    while (!ros::Time::isValid() && ros::ok()) {
+      const ros::WallTime now = ros::WallTime::now();
+      if (lastReport.isZero() || (now - lastReport).toSec() >= diagnosticPeriod_) {
+        lastReport = now;
+        if (!waitingReport) {
+          waitingReport = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
+        }
+        diagnostic_msgs::DiagnosticArray report;
+        diagnostic_msgs::DiagnosticStatus status;
+        status.level = diagnostic_msgs::DiagnosticStatus::WARN;
+        status.name = ros::this_node::getName().substr(1) + ": estimation";
+        status.message = "waiting for /clock (use_sim_time is true): no estimate yet";
+        status.hardware_id = "none";
+        report.status.push_back(status);
+        waitingReport.publish(report);
+      }
+      if (lastWarning.isZero() || (now - lastWarning).toSec() >= 5.0) {
+        lastWarning = now;
+        ROS_WARN(
+            "waiting for /clock (use_sim_time is true and no clock message arrived in %.0f "
+            "s): no estimate until a clock publisher (rosbag play --clock, a simulator) "
+            "runs",
+            (now - waiting).toSec());
+      }
+      ros::WallDuration(0.01).sleep();
+    }
     advance(ros::Time::now().toSec());
     timer_ = nh_.createTimer(ros::Duration(core_.period()),
                              [this](const ros::TimerEvent&) { advance(ros::Time::now().toSec()); });
@@ -139,13 +183,17 @@ class FusionNode final : public MessageSink {
         (msg.getMD5Sum() == reader.md5sum || msg.getMD5Sum() == "*")) {
       return true;
     }
-    ++wrongType_[reader.topic];
+    WrongType& w = wrongType_[nh_.resolveName(reader.topic)];
+    ++w.count;
+    w.topic = nh_.resolveName(reader.topic);
+    w.received = msg.getDataType();
+    w.expected = reader.datatype;
     ROS_ERROR_THROTTLE(5.0,
                        "topic %s: received %s (md5sum %s), the configuration reads %s (md5sum "
                        "%s): message dropped (%llu so far)",
                        reader.topic.c_str(), msg.getDataType().c_str(), msg.getMD5Sum().c_str(),
                        reader.datatype.c_str(), reader.md5sum.c_str(),
-                       static_cast<unsigned long long>(wrongType_[reader.topic]));
+                       static_cast<unsigned long long>(w.count));
     return false;
   }
 
@@ -154,9 +202,17 @@ class FusionNode final : public MessageSink {
     const ClockEvent event =
         core_.advanceTo(now, publishEstimate_);
     if (event == ClockEvent::JumpedBackwards) {
-      ROS_WARN("time jumped backwards to %.3f s (bag restarted?): filter reset", now);
+      measured_ = false;
+      ROS_WARN_THROTTLE(5.0,
+                        "time jumped backwards to %.3f s (bag restarted?): filter reset (%llu "
+                        "times so far)",
+                        now, static_cast<unsigned long long>(core_.clockResets()));
     } else if (event == ClockEvent::SkippedGap) {
-      ROS_WARN("time jumped forward to %.3f s: skipped the missed periods", now);
+      ++skippedGaps_;
+      ROS_WARN_THROTTLE(5.0,
+                        "time jumped forward to %.3f s: skipped the missed periods (%llu gaps "
+                        "so far)",
+                        now, static_cast<unsigned long long>(skippedGaps_));
     }
     if (core_.estimationFailures() != failures) {
       ROS_ERROR_THROTTLE(5.0,
@@ -213,6 +269,7 @@ class FusionNode final : public MessageSink {
       return;
     }
     ++setPoses_;
+    measured_ = true;  // a pose given by the user is a real pose: odometry and tf follow
     ROS_INFO("%s: pose set to x %.3f, y %.3f, yaw %.3f (variances %.3g, %.3g, %.3g); %llu so far",
              topic, pose[0], pose[1], pose[2], covariance(0, 0), covariance(1, 1), covariance(2, 2),
              static_cast<unsigned long long>(setPoses_));
@@ -237,11 +294,14 @@ class FusionNode final : public MessageSink {
   }
 
   void publish(const EstimateRef& e) {
+    // No pose before the first estimate from a real input: the filter's initial belief at
+    // the origin is not a position of the robot (doc/filter_node.md).
+    measured_ = measured_ || e.presentInputs > 0;
     for (std::size_t k = 0; k < outputs_.size(); ++k) {
       outputs_[k].publish(makeOutputEntity(e, description_.outputs[k].second, frameId_));
     }
     state_.publish(makeStateEstimate(e, description_.method, frameId_));
-    if (!description_.pose) return;
+    if (!description_.pose || !measured_) return;
     const nav_msgs::Odometry odom =
         makeOdometry(e, *description_.pose, frameId_, childFrameId_, description_.twist);
     odometry_.publish(odom);
@@ -311,11 +371,24 @@ class FusionNode final : public MessageSink {
   FusionEngine& core_;
   FrameAligner* aligner_;
   FusionDiagnostics diagnostics_;
+  double diagnosticPeriod_;  ///< [s] between diagnostic reports
   std::function<void(const EstimateRef&)> publishEstimate_ = [this](const EstimateRef& e) {
     publish(e);
   };
   std::vector<std::uint8_t> buffer_;  ///< the message being read, serialized
-  std::map<std::string, std::uint64_t> wrongType_;  ///< per topic: messages of another type
+  /// Messages of another type received on a topic.
+  struct WrongType {
+    std::uint64_t count = 0;
+    std::string topic, received, expected;
+  };
+  /// The wrong-type record of input i's topic (the first word of its "topic field" name).
+  const WrongType& wrongTypeOf(std::size_t i) const {
+    static const WrongType none;
+    const std::string& name = description_.inputs.at(i);
+    const auto it = wrongType_.find(nh_.resolveName(name.substr(0, name.find(' '))));
+    return it == wrongType_.end() ? none : it->second;
+  }
+  std::map<std::string, WrongType> wrongType_;  ///< by resolved topic name
   std::vector<ros::Subscriber> subscribers_;
   std::vector<ros::Subscriber> setPoseSubscribers_;
   std::uint64_t setPoses_ = 0;
@@ -326,6 +399,8 @@ class FusionNode final : public MessageSink {
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
   int queueSize_ = 1000;  ///< ~queue_size: of every subscription and publication
+  bool measured_ = false;  ///< an estimate used a measured value (since the last reset)
+  std::uint64_t skippedGaps_ = 0;
   std::uint64_t gatedReported_ = 0;
   std::uint64_t repairsReported_ = 0;
   std::vector<bool> timedOut_;  ///< per input: its timeout was logged

@@ -1,10 +1,19 @@
 // Run-time overrides of the configuration header's numeric settings through private ROS
 // parameters. The header's values are the defaults; a parameter of the wrong type or size
-// is refused at start with a message naming it.
+// is refused at start with a message naming it. Time parameters are in seconds (REP-103);
+// the header macros stay in milliseconds (doc/filter_node.md, "Units").
+//
+// The parameters are read through a ParameterSource (a ros::NodeHandle's private namespace
+// online), so that other sources share the same parsing and checks.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
+#include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,6 +31,41 @@ namespace sf_filter {
 class ParameterOverrideError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+/// Where the private parameters come from.
+class ParameterSource {
+ public:
+  virtual ~ParameterSource() = default;
+  /// The value of private parameter `name` if it is set.
+  virtual bool get(const std::string& name, XmlRpc::XmlRpcValue& value) const = 0;
+  /// The names of the private parameters that are set (first level below the namespace).
+  virtual std::vector<std::string> names() const = 0;
+};
+
+/// The private parameters of a node on the ROS parameter server.
+class RosParameterSource final : public ParameterSource {
+ public:
+  explicit RosParameterSource(ros::NodeHandle pnh) : pnh_(std::move(pnh)) {}
+  bool get(const std::string& name, XmlRpc::XmlRpcValue& value) const override {
+    return pnh_.getParam(name, value);
+  }
+  std::vector<std::string> names() const override {
+    std::vector<std::string> all, mine;
+    if (!ros::param::getParamNames(all)) return mine;
+    const std::string prefix = pnh_.getNamespace() + "/";
+    std::set<std::string> seen;
+    for (const std::string& n : all) {
+      if (n.compare(0, prefix.size(), prefix) != 0) continue;
+      const std::string rest = n.substr(prefix.size());
+      const std::string first = rest.substr(0, rest.find('/'));
+      if (!first.empty() && seen.insert(first).second) mine.push_back(first);
+    }
+    return mine;
+  }
+
+ private:
+  ros::NodeHandle pnh_;
 };
 
 namespace detail {
@@ -64,13 +108,17 @@ inline double numberEntry(const XmlRpc::XmlRpcValue& v, const char* expected) {
 
 }  // namespace detail
 
+/// The largest magnitude of a matrix parameter's entry (Q, R, x0, P0): beyond it sums and
+/// products of a period overflow (doc/filter_node.md).
+constexpr double kMaxParameterMagnitude = 1e100;
+
 /// Reads ~name into `out` (rows x cols) when it is set: a flat row-major list of rows*cols
 /// numbers, or a list of rows lists of cols numbers. Returns whether it was set.
 template <class Derived>
-bool readMatrixParameter(const ros::NodeHandle& pnh, const std::string& name,
+bool readMatrixParameter(const ParameterSource& pnh, const std::string& name,
                          Eigen::MatrixBase<Derived>& out) {
   XmlRpc::XmlRpcValue value;
-  if (!pnh.getParam(name, value)) return false;
+  if (!pnh.get(name, value)) return false;
   const Eigen::Index rows = out.rows(), cols = out.cols();
   const std::string expected = std::to_string(rows * cols) + " numbers (" + std::to_string(rows) +
                                "x" + std::to_string(cols) + ", row-major)";
@@ -106,6 +154,17 @@ bool readMatrixParameter(const ros::NodeHandle& pnh, const std::string& name,
           detail::toDouble(value[k], "parameter ~" + name + " entry " + std::to_string(k));
     }
   }
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    for (Eigen::Index c = 0; c < cols; ++c) {
+      if (!(std::abs(result(r, c)) <= kMaxParameterMagnitude)) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%g", result(r, c));
+        throw ParameterOverrideError("parameter ~" + name + " row " + std::to_string(r) +
+                                     " column " + std::to_string(c) + ": " + text +
+                                     " is not a finite number of magnitude at most 1e100");
+      }
+    }
+  }
   out = result;
   return true;
 }
@@ -113,9 +172,9 @@ bool readMatrixParameter(const ros::NodeHandle& pnh, const std::string& name,
 /// Reads a scalar ~name into `out` when set; the type must match (an int is accepted for a
 /// double).
 template <class T>
-bool readScalarParameter(const ros::NodeHandle& pnh, const std::string& name, T& out) {
+bool readScalarParameter(const ParameterSource& pnh, const std::string& name, T& out) {
   XmlRpc::XmlRpcValue value;
-  if (!pnh.getParam(name, value)) return false;
+  if (!pnh.get(name, value)) return false;
   if constexpr (std::is_floating_point_v<T>) {
     out = static_cast<T>(detail::toDouble(value, "parameter ~" + name));
   } else {
@@ -136,11 +195,11 @@ namespace detail {
 
 /// Calls apply(k, entry) for each entry of the list parameter ~name if it is set; it must have
 /// one entry per input. A std::invalid_argument of apply is reported with the entry named.
-inline void forEachInputEntry(const ros::NodeHandle& pnh, const std::string& name,
+inline void forEachInputEntry(const ParameterSource& pnh, const std::string& name,
                               std::size_t inputs,
                               const std::function<void(long, XmlRpc::XmlRpcValue&)>& apply) {
   XmlRpc::XmlRpcValue value;
-  if (!pnh.getParam(name, value)) return;
+  if (!pnh.get(name, value)) return;
   const std::string expected = std::to_string(inputs) + " entries (one per TOPICS_IN entry)";
   if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
     throw ParameterOverrideError("parameter ~" + name + ": expected a list of " + expected +
@@ -162,12 +221,73 @@ inline void forEachInputEntry(const ros::NodeHandle& pnh, const std::string& nam
 
 }  // namespace detail
 
+/// A time in seconds (REP-103) checked against the plausible range [minimum, maximum] of
+/// its parameter; 0 is also accepted if `zeroAllowed` (it then means "none"). A value above
+/// the range that would fit as milliseconds gets the hint of the old unit. Returns it in ms,
+/// the unit of the header macros and the core's override checks.
+inline double secondsToMs(const std::string& what, double seconds, double minimum, double maximum,
+                          bool zeroAllowed) {
+  if (std::isfinite(seconds) &&
+      ((seconds >= minimum && seconds <= maximum) || (zeroAllowed && seconds == 0.0))) {
+    return seconds * 1000.0;
+  }
+  char range[160];
+  std::snprintf(range, sizeof range, "%s must be %s%g .. %g s, found %g", what.c_str(),
+                zeroAllowed ? "0 (none) or " : "", minimum, maximum, seconds);
+  std::string message = range;
+  if (std::isfinite(seconds) && seconds > maximum && seconds / 1000.0 <= maximum) {
+    char hint[96];
+    std::snprintf(hint, sizeof hint, " (seconds, not milliseconds: %g ms is %g s)", seconds,
+                  seconds / 1000.0);
+    message += hint;
+  }
+  throw ParameterOverrideError(message);
+}
+
+/// The plausible ranges of the time parameters, in seconds (doc/filter_node.md, "Units").
+constexpr double kMinPeriodSeconds = 0.0001, kMaxPeriodSeconds = 10.0;
+constexpr double kMaxLagSeconds = 10.0;
+constexpr double kMinTimeoutSeconds = 0.0001, kMaxTimeoutSeconds = 60.0;
+constexpr double kMaxFutureStampSeconds = 60.0;
+constexpr double kMaxTransformTimeoutSeconds = 60.0;
+constexpr double kMinDiagnosticPeriodSeconds = 0.01, kMaxDiagnosticPeriodSeconds = 3600.0;
+/// A gate of k standard deviations on a scalar input is the chi-square threshold k^2.
+constexpr double kMaxGateSigma = 1e6;
+
+/// The estimation period in ms from ~estimation_period [s] or ~frequency [Hz] (not both),
+/// or the header's `headerPeriodMs`.
+inline double loadPeriodMs(const ParameterSource& pnh, double headerPeriodMs) {
+  double seconds = 0.0, hertz = 0.0;
+  const bool period = readScalarParameter(pnh, "estimation_period", seconds);
+  const bool frequency = readScalarParameter(pnh, "frequency", hertz);
+  if (period && frequency) {
+    throw ParameterOverrideError(
+        "parameters ~estimation_period and ~frequency are both set: give one of them");
+  }
+  if (frequency) {
+    if (!(hertz >= 1.0 / kMaxPeriodSeconds && hertz <= 1.0 / kMinPeriodSeconds)) {
+      char text[128];
+      std::snprintf(text, sizeof text, "parameter ~frequency: must be %g .. %g Hz, found %g",
+                    1.0 / kMaxPeriodSeconds, 1.0 / kMinPeriodSeconds, hertz);
+      throw ParameterOverrideError(text);
+    }
+    return 1000.0 / hertz;
+  }
+  if (period) {
+    return secondsToMs("parameter ~estimation_period", seconds, kMinPeriodSeconds,
+                       kMaxPeriodSeconds, false);
+  }
+  return headerPeriodMs;
+}
+
 /// The configuration header's per-input options and maximum measurement lag [ms] with the
 /// private parameters applied (doc/configuration.md):
-///   ~input_alignment      one policy per input, e.g. ["AVERAGE", "HOLD LAGRANGE 1", "FILL 0.001
-///   5"] ~input_gate           one chi-square threshold per input, 0 for no gate ~align_by_stamp
-///   one boolean per input ~max_measurement_lag  ms >= 0
-inline void loadInputParameters(const ros::NodeHandle& pnh, std::vector<InputOptions>& inputs,
+///   ~input_alignment      one policy per input, e.g. ["AVERAGE", "HOLD LAGRANGE 1"]
+///   ~input_gate           one chi-square threshold per input, 0 for no gate
+///   ~input_gate_sigma     or one threshold in standard deviations per input (k: k^2)
+///   ~align_by_stamp       one boolean per input
+///   ~max_measurement_lag  s, 0 .. 10
+inline void loadInputParameters(const ParameterSource& pnh, std::vector<InputOptions>& inputs,
                                 double& maxMeasurementLagMs, const InputCapabilities& can) {
   const std::size_t m = inputs.size();
   detail::forEachInputEntry(pnh, "input_alignment", m, [&](long k, XmlRpc::XmlRpcValue& v) {
@@ -176,8 +296,25 @@ inline void loadInputParameters(const ros::NodeHandle& pnh, std::vector<InputOpt
     }
     overrideAlignment(inputs, k, static_cast<std::string>(v), can);
   });
+  XmlRpc::XmlRpcValue unused;
+  if (pnh.get("input_gate", unused) && pnh.get("input_gate_sigma", unused)) {
+    throw ParameterOverrideError(
+        "parameters ~input_gate (chi-square) and ~input_gate_sigma (standard deviations) are "
+        "both set: give one of them");
+  }
   detail::forEachInputEntry(pnh, "input_gate", m, [&](long k, XmlRpc::XmlRpcValue& v) {
     overrideGate(inputs, k, detail::numberEntry(v, "expected a number (0: no gate)"), can);
+  });
+  detail::forEachInputEntry(pnh, "input_gate_sigma", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+    const double sigma =
+        detail::numberEntry(v, "expected a number of standard deviations (0: no gate)");
+    if (!(sigma >= 0.0 && sigma <= kMaxGateSigma)) {
+      throw std::invalid_argument(
+          "expected a number of standard deviations from 0 (no gate) to "
+          "1e6, found " +
+          std::to_string(sigma));
+    }
+    overrideGate(inputs, k, sigma * sigma, can);
   });
   detail::forEachInputEntry(pnh, "align_by_stamp", m, [&](long k, XmlRpc::XmlRpcValue& v) {
     if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
@@ -185,7 +322,10 @@ inline void loadInputParameters(const ros::NodeHandle& pnh, std::vector<InputOpt
     }
     overrideAlignByStamp(inputs, k, static_cast<bool>(v), can);
   });
-  if (readScalarParameter(pnh, "max_measurement_lag", maxMeasurementLagMs)) {
+  double lagSeconds = 0.0;
+  if (readScalarParameter(pnh, "max_measurement_lag", lagSeconds)) {
+    maxMeasurementLagMs =
+        secondsToMs("parameter ~max_measurement_lag", lagSeconds, 0.0, kMaxLagSeconds, true);
     try {
       checkedLagMs(maxMeasurementLagMs);
     } catch (const std::invalid_argument& e) {
@@ -196,24 +336,30 @@ inline void loadInputParameters(const ros::NodeHandle& pnh, std::vector<InputOpt
 
 /// The node's settings for faults and diagnostics beyond the per-input options.
 struct FaultSettings {
-  double maxFutureStampMs = kDefaultMaxFutureStampMs;  ///< ~max_future_stamp
+  double maxFutureStampMs = kDefaultMaxFutureStampMs;  ///< ~max_future_stamp [s] in ms
   int nisWindow = 100;                                 ///< ~nis_window [periods], 0: off
   double diagnosticPeriod = 1.0;                       ///< ~diagnostic_period [s]
 };
 
 /// Applies the fault parameters (doc/filter_node.md, "Diagnostics"):
-///   ~input_timeout      one timeout per input in ms, 0 for none
+///   ~input_timeout      one timeout per input in s, 0 for none
 ///   ~input_range        one [minimum, maximum] per input, [] for none
-///   ~max_future_stamp   ms >= 0 a stamp may be ahead of the clock
+///   ~max_future_stamp   s, 0 .. 60, a stamp may be ahead of the clock (.inf: no check)
 ///   ~nis_window         periods >= 0 the NIS is averaged over (0: not computed)
-///   ~diagnostic_period  s > 0 between diagnostic messages
-inline FaultSettings loadFaultParameters(const ros::NodeHandle& pnh,
+///   ~diagnostic_period  s, 0.01 .. 3600, between diagnostic messages
+inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
                                          std::vector<InputOptions>& inputs,
                                          const InputCapabilities& can) {
   const std::size_t m = inputs.size();
   detail::forEachInputEntry(pnh, "input_timeout", m, [&](long k, XmlRpc::XmlRpcValue& v) {
-    overrideTimeout(inputs, k, detail::numberEntry(v, "expected a number of ms (0: no timeout)"),
-                    can);
+    const double seconds = detail::numberEntry(v, "expected a number of s (0: no timeout)");
+    double ms = 0.0;
+    try {
+      ms = secondsToMs("timeout", seconds, kMinTimeoutSeconds, kMaxTimeoutSeconds, true);
+    } catch (const ParameterOverrideError& e) {
+      throw std::invalid_argument(e.what());
+    }
+    overrideTimeout(inputs, k, ms, can);
   });
   detail::forEachInputEntry(pnh, "input_range", m, [&](long k, XmlRpc::XmlRpcValue& v) {
     const char* expected = "expected [minimum, maximum] or [] for no range";
@@ -232,7 +378,12 @@ inline FaultSettings loadFaultParameters(const ros::NodeHandle& pnh,
   const auto refuse = [](const std::string& name, const std::string& why) {
     throw ParameterOverrideError("parameter ~" + name + ": " + why);
   };
-  if (readScalarParameter(pnh, "max_future_stamp", settings.maxFutureStampMs)) {
+  double futureSeconds = 0.0;
+  if (readScalarParameter(pnh, "max_future_stamp", futureSeconds)) {
+    settings.maxFutureStampMs = std::isinf(futureSeconds) && futureSeconds > 0.0
+                                    ? futureSeconds
+                                    : secondsToMs("parameter ~max_future_stamp", futureSeconds, 0.0,
+                                                  kMaxFutureStampSeconds, true);
     try {
       checkedFutureStampMs(settings.maxFutureStampMs);
     } catch (const std::invalid_argument& e) {
@@ -244,43 +395,165 @@ inline FaultSettings loadFaultParameters(const ros::NodeHandle& pnh,
     refuse("nis_window", "expected a number of periods from 0 (off) to 1000000");
   }
   if (readScalarParameter(pnh, "diagnostic_period", settings.diagnosticPeriod) &&
-      !(settings.diagnosticPeriod > 0.0 && settings.diagnosticPeriod <= 3600.0)) {
-    refuse("diagnostic_period", "expected a number of seconds > 0 (at most 3600)");
+      !(settings.diagnosticPeriod >= kMinDiagnosticPeriodSeconds &&
+        settings.diagnosticPeriod <= kMaxDiagnosticPeriodSeconds)) {
+    refuse("diagnostic_period", "expected a number of seconds from 0.01 to 3600");
   }
   return settings;
 }
 
+/// The node's output settings (doc/filter_node.md, "Private parameters").
+struct OutputSettings {
+  std::string frameId = "odom";            ///< ~frame_id
+  std::string childFrameId = "base_link";  ///< ~child_frame_id
+  bool publishTf = true;                   ///< ~publish_tf
+  /// ~queue_size: of every subscription and publication. Room for a stall of the spinner
+  /// thread: 1000 messages hold 1 s of a 1 kHz sensor (100 lost values in a 160 ms stall of
+  /// the soak test on a loaded machine).
+  int queueSize = 1000;
+};
+
 namespace detail {
 
-/// ~name, if set, must be of `type`. For the parameters FusionNode reads with
-/// NodeHandle::param(), which would silently use the default for a value of another type.
-inline void requireType(const ros::NodeHandle& pnh, const std::string& name,
+/// ~name, if set, must be of `type`.
+inline void requireType(const ParameterSource& pnh, const std::string& name,
                         XmlRpc::XmlRpcValue::Type type, const char* expected) {
   XmlRpc::XmlRpcValue value;
-  if (pnh.getParam(name, value) && value.getType() != type) {
+  if (pnh.get(name, value) && value.getType() != type) {
     throw ParameterOverrideError("parameter ~" + name + ": expected " + expected + ", found " +
                                  describe(value));
   }
 }
 
+/// ~name as a tf2 frame name (not empty, no leading '/'), or `fallback` if it is not set.
+inline std::string frameParameter(const ParameterSource& pnh, const std::string& name,
+                                  const std::string& fallback) {
+  requireType(pnh, name, XmlRpc::XmlRpcValue::TypeString, "a string");
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.get(name, value)) return fallback;
+  const std::string frame = static_cast<std::string>(value);
+  if (frame.empty() || frame.front() == '/') {
+    throw ParameterOverrideError("parameter ~" + name + ": '" + frame +
+                                 "' is not a tf2 frame name (not empty, no leading '/')");
+  }
+  return frame;
+}
+
 }  // namespace detail
+
+/// ~frame_id, ~child_frame_id, ~publish_tf, ~queue_size.
+inline OutputSettings loadOutputParameters(const ParameterSource& pnh) {
+  OutputSettings s;
+  s.frameId = detail::frameParameter(pnh, "frame_id", s.frameId);
+  s.childFrameId = detail::frameParameter(pnh, "child_frame_id", s.childFrameId);
+  detail::requireType(pnh, "publish_tf", XmlRpc::XmlRpcValue::TypeBoolean, "a boolean");
+  detail::requireType(pnh, "queue_size", XmlRpc::XmlRpcValue::TypeInt, "an integer");
+  XmlRpc::XmlRpcValue value;
+  if (pnh.get("publish_tf", value)) s.publishTf = static_cast<bool>(value);
+  if (pnh.get("queue_size", value)) s.queueSize = static_cast<int>(value);
+  if (s.queueSize < 1 || s.queueSize > 1000000) {
+    throw ParameterOverrideError("parameter ~queue_size: expected 1 to 1000000 messages, found " +
+                                 std::to_string(s.queueSize));
+  }
+  return s;
+}
+
+/// Every private parameter the node reads (doc/filter_node.md, "Private parameters").
+inline const std::vector<std::string>& knownParameters() {
+  static const std::vector<std::string> names = {"estimation_period",
+                                                 "frequency",
+                                                 "process_noise_covariance",
+                                                 "measurement_noise_covariance",
+                                                 "initial_state",
+                                                 "initial_error_covariance",
+                                                 "number_of_particles",
+                                                 "random_seed",
+                                                 "resampling_threshold",
+                                                 "ukf_alpha",
+                                                 "ukf_beta",
+                                                 "ukf_kappa",
+                                                 "window_size",
+                                                 "weighting_coefficients",
+                                                 "input_alignment",
+                                                 "input_gate",
+                                                 "input_gate_sigma",
+                                                 "align_by_stamp",
+                                                 "max_measurement_lag",
+                                                 "input_timeout",
+                                                 "input_range",
+                                                 "max_future_stamp",
+                                                 "nis_window",
+                                                 "diagnostic_period",
+                                                 "frame_id",
+                                                 "child_frame_id",
+                                                 "publish_tf",
+                                                 "queue_size",
+                                                 "base_frame",
+                                                 "transform_timeout"};
+  return names;
+}
+
+/// One warning line per private parameter the node does not read (a typo, or a name of
+/// robot_localization's), with a hint for robot_localization's names; empty if none.
+inline std::vector<std::string> unknownParameterWarnings(const ParameterSource& pnh) {
+  static const std::vector<std::string> robotLocalization = {"two_d_mode",
+                                                             "world_frame",
+                                                             "map_frame",
+                                                             "odom_frame",
+                                                             "base_link_frame",
+                                                             "sensor_timeout",
+                                                             "initial_estimate_covariance",
+                                                             "print_diagnostics",
+                                                             "transform_time_offset",
+                                                             "publish_acceleration",
+                                                             "use_control",
+                                                             "control_config",
+                                                             "smooth_lagged_data",
+                                                             "history_length",
+                                                             "dynamic_process_noise_covariance",
+                                                             "predict_to_current_time",
+                                                             "permit_corrected_publication",
+                                                             "reset_on_time_jump"};
+  const auto isRobotLocalization = [&](const std::string& n) {
+    if (std::find(robotLocalization.begin(), robotLocalization.end(), n) !=
+        robotLocalization.end()) {
+      return true;
+    }
+    for (const char* prefix : {"odom", "imu", "pose", "twist"}) {
+      const std::string p = prefix;
+      if (n.size() > p.size() && n.compare(0, p.size(), p) == 0 &&
+          std::isdigit(static_cast<unsigned char>(n[p.size()]))) {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::string known;
+  for (const std::string& k : knownParameters()) known += (known.empty() ? "" : ", ") + k;
+  std::vector<std::string> lines;
+  for (const std::string& n : pnh.names()) {
+    const auto& k = knownParameters();
+    if (std::find(k.begin(), k.end(), n) != k.end()) continue;
+    std::string line = "unknown private parameter ~" + n + " ignored";
+    if (isRobotLocalization(n)) {
+      line +=
+          " (a robot_localization parameter: this node's topics, fields and model are "
+          "compiled in from its configuration header; doc/filter_node.md maps "
+          "robot_localization's settings)";
+    }
+    lines.push_back(line + "; known: " + known);
+  }
+  return lines;
+}
 
 /// The header's parameters with the private ROS parameters applied. `Parameters` is the
 /// generated sf_config::Parameters; `makeDefaults(period_ms)` evaluates the header's entries
 /// for a period (they may use T).
 template <class Parameters, class MakeDefaults>
-Parameters loadParameters(const ros::NodeHandle& pnh, MakeDefaults makeDefaults,
+Parameters loadParameters(const ParameterSource& pnh, MakeDefaults makeDefaults,
                           double headerPeriodMs) {
-  detail::requireType(pnh, "frame_id", XmlRpc::XmlRpcValue::TypeString, "a string");
-  detail::requireType(pnh, "child_frame_id", XmlRpc::XmlRpcValue::TypeString, "a string");
-  detail::requireType(pnh, "publish_tf", XmlRpc::XmlRpcValue::TypeBoolean, "a boolean");
-  detail::requireType(pnh, "queue_size", XmlRpc::XmlRpcValue::TypeInt, "an integer");
-  double period = headerPeriodMs;
-  readScalarParameter(pnh, "estimation_period", period);
-  if (!(period > 0.0)) {
-    throw ParameterOverrideError("parameter ~estimation_period: must be a positive number of ms");
-  }
-  Parameters p = makeDefaults(period);
+  loadOutputParameters(pnh);
+  Parameters p = makeDefaults(loadPeriodMs(pnh, headerPeriodMs));
   readMatrixParameter(pnh, "process_noise_covariance", p.process_noise_covariance);
   readMatrixParameter(pnh, "measurement_noise_covariance", p.measurement_noise_covariance);
   readMatrixParameter(pnh, "initial_state", p.initial_state);
@@ -292,9 +565,8 @@ Parameters loadParameters(const ros::NodeHandle& pnh, MakeDefaults makeDefaults,
   readScalarParameter(pnh, "ukf_beta", p.ukf_beta);
   readScalarParameter(pnh, "ukf_kappa", p.ukf_kappa);
   readScalarParameter(pnh, "window_size", p.window_size);
-  if (pnh.hasParam("weighting_coefficients")) {
-    XmlRpc::XmlRpcValue value;
-    pnh.getParam("weighting_coefficients", value);
+  XmlRpc::XmlRpcValue value;
+  if (pnh.get("weighting_coefficients", value)) {
     if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
       throw ParameterOverrideError(
           "parameter ~weighting_coefficients: expected a list of numbers, found " +

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace sf_filter {
 
@@ -23,15 +24,87 @@ class ReplayError : public std::runtime_error {
 /// The temporary name under which `path` is written until the replay has succeeded.
 inline std::string partialPath(const std::string& path) { return path + ".partial"; }
 
+namespace atomic_output_detail {
+
+/// What a file of type `mode` is, for the messages.
+inline const char* kind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  if (S_ISLNK(mode)) return "a symbolic link";
+  return "not a regular file";
+}
+
+/// Refuses `path` as an output if something other than a regular file is there (lstat: a
+/// symbolic link is not followed, the rename would replace the link itself).
+inline void requireRegularOrNew(const std::string& path, const std::string& what) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    throw ReplayError("cannot write " + what + " " + path + ": it is " + kind(st.st_mode) +
+                      ", not a regular file (the output is written beside it and renamed "
+                      "onto it)");
+  }
+}
+
+/// The directory part and the file name of `path`.
+inline std::pair<std::string, std::string> split(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return {".", path};
+  return {slash == 0 ? "/" : path.substr(0, slash), path.substr(slash + 1)};
+}
+
+}  // namespace atomic_output_detail
+
+/// Whether `a` and `b` name the same file: the same device and inode if both exist,
+/// otherwise the same file name in the same directory (device and inode of the directories).
+inline bool sameFile(const std::string& a, const std::string& b) {
+  struct stat sa {
+  }, sb{};
+  const bool ea = ::stat(a.c_str(), &sa) == 0, eb = ::stat(b.c_str(), &sb) == 0;
+  if (ea && eb) return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  if (ea || eb) return false;
+  const auto [da, na] = atomic_output_detail::split(a);
+  const auto [db, nb] = atomic_output_detail::split(b);
+  if (na != nb) return false;
+  return ::stat(da.c_str(), &sa) == 0 && ::stat(db.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+         sa.st_ino == sb.st_ino;
+}
+
+/// Refuses outputs that would destroy the input or each other, before anything is read: an
+/// output (or its temporary name) that is the input bag, the same file for two outputs, an
+/// existing target or temporary name that is not a regular file.
+inline void checkOutputs(const std::string& input,
+                         const std::vector<std::pair<std::string, std::string>>& outputs) {
+  for (std::size_t k = 0; k < outputs.size(); ++k) {
+    const auto& [option, path] = outputs[k];
+    if (path.empty()) continue;
+    for (const std::string& p : {path, partialPath(path)}) {
+      if (sameFile(p, input)) {
+        throw ReplayError(option + " " + path + " is the input bag " + input +
+                          ": refusing to overwrite the input");
+      }
+    }
+    atomic_output_detail::requireRegularOrNew(path, option);
+    atomic_output_detail::requireRegularOrNew(partialPath(path), option);
+    for (std::size_t j = 0; j < k; ++j) {
+      if (!outputs[j].second.empty() && sameFile(outputs[j].second, path)) {
+        throw ReplayError(outputs[j].first + " and " + option + " name the same file " + path);
+      }
+    }
+  }
+}
+
 class AtomicOutput {
  public:
-  /// `path` empty: no output. Refuses a target that is a directory up front: the rename at the
-  /// end would fail after all the work, with the other output already in place.
+  /// `path` empty: no output. Refuses a target that is not a regular file up front (a
+  /// directory, a device, a FIFO): the rename at the end would replace it, or fail after all
+  /// the work with the other output already in place.
   explicit AtomicOutput(std::string path)
       : path_(std::move(path)), temporary_(path_.empty() ? "" : partialPath(path_)) {
-    struct stat st {};
-    if (enabled() && ::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-      throw ReplayError("cannot write " + path_ + ": it is a directory");
+    if (enabled()) {
+      atomic_output_detail::requireRegularOrNew(path_, "output");
+      atomic_output_detail::requireRegularOrNew(temporary_, "output");
     }
   }
   AtomicOutput(const AtomicOutput&) = delete;
@@ -42,8 +115,11 @@ class AtomicOutput {
   bool enabled() const { return !path_.empty(); }
   const std::string& path() const { return path_; }
   const std::string& temporary() const { return temporary_; }
+  /// Renames the temporary file onto the target, which must still be a regular file or
+  /// absent.
   void commit() {
     if (!enabled()) return;
+    atomic_output_detail::requireRegularOrNew(path_, "output");
     if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
       throw ReplayError("cannot move " + temporary_ + " to " + path_ + ": " + std::strerror(errno));
     }

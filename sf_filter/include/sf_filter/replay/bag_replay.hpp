@@ -56,6 +56,7 @@ struct ReplaySummary {
   std::uint64_t messages = 0;
   std::uint64_t estimates = 0;
   std::uint64_t dropped = 0;
+  std::uint64_t skippedGaps = 0;  ///< gaps longer than kMaxGapPeriods, skipped as online
   double estimatorSeconds = 0.0;
 };
 
@@ -116,6 +117,7 @@ class BagReplay final : public MessageSink {
   /// Replays the whole bag. Throws ReplayError with a one-line reason on failure; outputs are
   /// then not created. The bag's topics and types are checked before any output is opened.
   ReplaySummary run() {
+    checkOutputs(options_.inputBag, {{"--csv", options_.csvPath}, {"--bag", options_.outputBag}});
     rosbag::Bag input;
     openInput(input);
     const std::map<std::string, Recorded> recorded = readInput([&] { return connections(input); });
@@ -187,17 +189,30 @@ class BagReplay final : public MessageSink {
   /// would: the timer estimates every period while rosbag play's clock runs through a gap
   /// between messages, so a gap longer than Options::maxCatchUpPeriods periods (which the
   /// core would skip with one estimate) is crossed in steps of one period less than that,
-  /// each estimating every period it ends. Shorter gaps take one step, as before.
+  /// each estimating every period it ends. Shorter gaps take one step, as before. A gap of
+  /// more than kMaxGapPeriods periods (a recording paused or two recordings in one bag) is
+  /// crossed as the online node crosses a clock jump: one estimate, the missed periods
+  /// skipped (counted in the summary), never millions of empty periods.
   template <class Write>
   void advanceClock(double now, Write& write) {
-    if (clockStarted_) {
+    if (clockStarted_ && now - core_.clock() <= kMaxGapPeriods * core_.period()) {
       const std::uint64_t periods = core_.maxCatchUpPeriods();
       const double step = static_cast<double>(periods > 1 ? periods - 1 : 1) * core_.period();
       while (now - core_.clock() > step) core_.advanceTo(core_.clock() + step, write);
     }
-    core_.advanceTo(now, write);
+    if (core_.advanceTo(now, write) == ClockEvent::SkippedGap) {
+      if (summary_.skippedGaps++ == 0 || summary_.skippedGaps % 1000 == 0) {
+        std::cerr << "warning: a gap of more than " << kMaxGapPeriods
+                  << " periods in the bag before " << std::fixed << std::setprecision(3) << now
+                  << " s: skipped as the online node skips a clock jump (" << summary_.skippedGaps
+                  << " so far)" << std::defaultfloat << std::endl;
+      }
+    }
     clockStarted_ = true;
   }
+
+  /// The longest gap between messages estimated period by period.
+  static constexpr double kMaxGapPeriods = 10000.0;
 
   static constexpr const char* kTf = "/tf";
   static constexpr const char* kTfStatic = "/tf_static";
