@@ -340,7 +340,9 @@ class BagReplay final : public MessageSink {
       const auto it = recorded.find(topic);
       if (it == recorded.end()) continue;
       for (const auto& [datatype, md5sum] : it->second.types) {
-        if (datatype != type.datatype) {
+        // Another name with the same definition (md5sum) is the same message: tf/tfMessage of
+        // a tf1-era recording is tf2_msgs/TFMessage.
+        if (datatype != type.datatype && md5sum != type.md5sum) {
           throw ReplayError("bag " + options_.inputBag + ": topic " + topic + " holds " + datatype +
                             ", the configuration reads " + type.datatype);
         }
