@@ -171,7 +171,7 @@ class FusionCoreBase {
     Ring& operator*() const { return *ring_; }
 
    private:
-    RingPtr ring_;
+    std::unique_ptr<Ring> ring_;
   };
 
   static const FusionCoreOptions& checked(const FusionCoreOptions& o, Index inputs,
