@@ -6,6 +6,7 @@ Run by `catkin_make run_tests` (root CMakeLists.txt) with SF_BUILD_DIR (the work
 build directory) and SF_INSTALL_PREFIX (its install prefix) in the environment.
 """
 
+import json
 import os
 import shutil
 import subprocess
@@ -77,8 +78,17 @@ class InstallSpaceTest(unittest.TestCase):
                         os.path.join(src, "config", "my_train_kf.h"))
             build = os.path.join(tmp, "build")
             devel = os.path.join(tmp, "devel")
-            run(["cmake", "-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
+            # No CMAKE_BUILD_TYPE, as a plain catkin_make of the user's workspace: the node must
+            # still be optimised (sf_add_filter's -O2 -DNDEBUG), never built with no -O at all.
+            run(["cmake", "-S", src, "-B", build, "-DCMAKE_EXPORT_COMPILE_COMMANDS=ON",
                  "-DCATKIN_DEVEL_PREFIX=" + devel], self.env)
+            with open(os.path.join(build, "compile_commands.json")) as f:
+                commands = [e["command"] for e in json.load(f)
+                            if e["file"].endswith("fusion_node_main.cpp")]
+            self.assertEqual(len(commands), 1, commands)
+            flags = commands[0].split()
+            self.assertIn("-O2", flags)
+            self.assertIn("-DNDEBUG", flags)
             run(["cmake", "--build", build, "--target", "my_train_kf", "--", "-j1"], self.env)
             node = os.path.join(devel, "lib", "my_robot_fusion", "my_train_kf")
             self.assertTrue(os.access(node, os.X_OK), node)
