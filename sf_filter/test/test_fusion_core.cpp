@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sf_filter/core/period_schedule.hpp"
 #include "train_core.hpp"
 
 namespace {
