@@ -42,7 +42,11 @@ def yaw_of(q):
 class SetPoseTest(unittest.TestCase):
     def setUp(self):
         self.odometry = []
+        self.states = []
         rospy.Subscriber("/odometry/filtered", Odometry, self.odometry.append)
+        # The node publishes its state every period from the start; odometry only once a
+        # period had a measured value or a pose was set (no pose at the origin before).
+        rospy.Subscriber("/derived_inputs/state", rospy.AnyMsg, self.states.append)
 
     def wait_for(self, predicate, seconds):
         deadline = time.monotonic() + seconds
@@ -56,7 +60,7 @@ class SetPoseTest(unittest.TestCase):
         publisher = rospy.Publisher(topic, PoseWithCovarianceStamped, queue_size=1, latch=True)
         self.assertTrue(self.wait_for(lambda: publisher.get_num_connections() >= 1, 20.0),
                         "the node did not subscribe to " + topic)
-        self.assertTrue(self.wait_for(lambda: self.odometry, 20.0), "no odometry/filtered")
+        self.assertTrue(self.wait_for(lambda: self.states, 20.0), "no ~state from the node")
         sent = rospy.Time.now()
         publisher.publish(pose_message(x, y, yaw, covariance))
 
