@@ -39,8 +39,10 @@ function(sf_add_filter name header)
     target_include_directories(${name} PRIVATE
       "${CMAKE_CURRENT_SOURCE_DIR}/sf_filter/include" "${CMAKE_CURRENT_SOURCE_DIR}/sf_estimation/include")
   endif()
-  if(TARGET sf_pkg_generate_messages_cpp)
-    add_dependencies(${name} sf_pkg_generate_messages_cpp)
+  # The message headers (sf_msgs) are generated before the node compiles when sf_msgs is in
+  # the same workspace (catkin defines empty targets for installed packages).
+  if(catkin_EXPORTED_TARGETS)
+    add_dependencies(${name} ${catkin_EXPORTED_TARGETS})
   endif()
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY
     "${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}")

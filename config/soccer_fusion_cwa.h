@@ -3,7 +3,7 @@
 // fusion of the per-sensor estimates, its section 4.3): confidence-weighted averaging of
 // the position of one field axis from the vision filter (config/soccer_vision_kf.h) and the
 // encoder filter (config/soccer_encoder_kf.h), each weighted by the inverse of the variance
-// it publishes with its value (sf_pkg/OutputEntityStamped.variance):
+// it publishes with its value (sf_msgs/OutputEntityStamped.variance):
 //   p = (p_v / var_v + p_e / var_e) / (1 / var_v + 1 / var_e),  var = 1 / (1/var_v + 1/var_e).
 // This is the optimal linear combination of two independent unbiased estimates; the two
 // filters see different sensors, so their errors are independent.
@@ -23,7 +23,7 @@
 // filter's median position variance between frames on soccer_seed1.bag (4.7e-5 m^2) and
 // the encoder filter's after some 15 s of drift (1e-2 m^2). The core cannot pass a held
 // value's own variance on (doc/fusion_block.md).
-#include <sf_pkg/OutputEntityStamped.h>
+#include <sf_msgs/OutputEntityStamped.h>
 #include <sf_filter/config/diagonal.hpp>
 
 #ifndef SOCCER_CWA_AXIS
@@ -34,8 +34,8 @@
 #define ESTIMATION_PERIOD 1
 #define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((5e-5)(1e-2))
 #define TOPICS_IN \
-  ((vision_kf/position/SOCCER_CWA_AXIS)(sf_pkg::OutputEntityStamped)(value)(variance)) \
-  ((encoder_kf/position/SOCCER_CWA_AXIS)(sf_pkg::OutputEntityStamped)(value)(variance))
+  ((vision_kf/position/SOCCER_CWA_AXIS)(sf_msgs::OutputEntityStamped)(value)(variance)) \
+  ((encoder_kf/position/SOCCER_CWA_AXIS)(sf_msgs::OutputEntityStamped)(value)(variance))
 #define INPUT_ALIGNMENT ((0)(HOLD)(LAGRANGE)(0))((1)(HOLD)(LAGRANGE)(0))
 #define ALIGN_BY_STAMP (0)(1)
 #define MAX_MEASUREMENT_LAG 1.5

@@ -4,7 +4,8 @@
 #
 # Environment:
 #   SF_WS       catkin workspace to build in (default: $HOME/.cache/sf_pkg_ws).
-#               Created if missing; $SF_WS/src/sf_pkg is a symlink to this repo.
+#               Created if missing; $SF_WS/src/sf_pkg is a symlink to this repo,
+#               $SF_WS/src/sf_msgs one to its sf_msgs/ folder (the message package).
 #   SF_JOBS     parallel build jobs (default: 2)
 #   SF_VERBOSE  1 = stream the full build output (default: log file only)
 #   SF_CMAKE_ARGS  (array, set by the calling script) extra CMake arguments of the build
@@ -64,7 +65,23 @@ sf_ensure_packages() {
   fi
 }
 
-# (b) Workspace with src/sf_pkg -> repository root.
+# (b) Workspace with src/sf_pkg -> repository root and src/sf_msgs -> its sf_msgs/ folder:
+# sf_msgs is a catkin package of its own, and catkin does not look for packages below a
+# folder that has a package.xml (the repository root's).
+sf_link_into_workspace() {
+  local target="$1" link="$2"
+  if [[ -L "$link" ]]; then
+    if [[ "$(readlink -f "$link")" != "$target" ]]; then
+      sf_log "re-pointing ${link} -> ${target}"
+      ln -sfn "$target" "$link"
+    fi
+  elif [[ -e "$link" ]]; then
+    sf_die "${link} exists and is not a symlink; set SF_WS to another workspace"
+  else
+    ln -s "$target" "$link"
+  fi
+}
+
 sf_setup_workspace() {
   SF_WS="$(realpath -m "${SF_WS}")"
   case "$SF_WS/" in
@@ -72,17 +89,8 @@ sf_setup_workspace() {
   esac
   mkdir -p "${SF_WS}/src"
   SF_WS="$(cd "${SF_WS}" && pwd -P)"
-  local link="${SF_WS}/src/${SF_PACKAGE}"
-  if [[ -L "$link" ]]; then
-    if [[ "$(readlink -f "$link")" != "$SF_REPO_ROOT" ]]; then
-      sf_log "re-pointing ${link} -> ${SF_REPO_ROOT}"
-      ln -sfn "$SF_REPO_ROOT" "$link"
-    fi
-  elif [[ -e "$link" ]]; then
-    sf_die "${link} exists and is not a symlink; set SF_WS to another workspace"
-  else
-    ln -s "$SF_REPO_ROOT" "$link"
-  fi
+  sf_link_into_workspace "$SF_REPO_ROOT" "${SF_WS}/src/${SF_PACKAGE}"
+  sf_link_into_workspace "$SF_REPO_ROOT/sf_msgs" "${SF_WS}/src/sf_msgs"
 }
 
 # Run catkin_make in the workspace. The output goes to $SF_WS/<logname>;

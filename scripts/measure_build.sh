@@ -33,12 +33,19 @@ trap 'rm -rf "$work"' EXIT
 
 # configure <source tree> <workspace>: a workspace without tests, compile commands exported,
 # the messages generated (every node's unit includes them).
+# A tree with the message package sf_msgs/ gets its second link (scripts/common.sh); an older
+# tree generated the messages in sf_pkg.
 configure() {
   mkdir -p "$2/src"
   ln -s "$1" "$2/src/sf_pkg"
+  local messages=sf_pkg_generate_messages_cpp
+  if [[ -f "$1/sf_msgs/package.xml" ]]; then
+    ln -s "$1/sf_msgs" "$2/src/sf_msgs"
+    messages=sf_msgs_generate_messages_cpp
+  fi
   catkin_make -C "$2" -j"$jobs" -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 \
     -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCATKIN_ENABLE_TESTING=OFF \
-    sf_pkg_generate_messages_cpp >"$2/configure.log" 2>&1
+    "$messages" >"$2/configure.log" 2>&1
 }
 
 # unit_cost <workspace> <header>: "cpu_s peak_MB" of compiling the header's node unit.

@@ -24,7 +24,7 @@
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 
-#include <sf_pkg/OutputEntityStamped.h>
+#include <sf_msgs/OutputEntityStamped.h>
 
 namespace {
 
@@ -164,13 +164,13 @@ class Harness {
   }
 
   std::size_t estimates() const { return estimateCount_; }
-  const sf_pkg::OutputEntityStamped& lastEstimate() const { return last_; }
+  const sf_msgs::OutputEntityStamped& lastEstimate() const { return last_; }
 
  private:
   void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& a) {
     for (const auto& s : a->status) history_.push_back(s);
   }
-  void onEstimate(const sf_pkg::OutputEntityStamped::ConstPtr& e) {
+  void onEstimate(const sf_msgs::OutputEntityStamped::ConstPtr& e) {
     ++estimateCount_;
     last_ = *e;
   }
@@ -181,7 +181,7 @@ class Harness {
   std::vector<DiagnosticStatus> history_;
   std::size_t mark_ = 0;
   std::size_t estimateCount_ = 0;
-  sf_pkg::OutputEntityStamped last_;
+  sf_msgs::OutputEntityStamped last_;
   double now_ = 10.0;
 };
 

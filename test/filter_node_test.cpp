@@ -16,8 +16,8 @@
 #include <std_msgs/Float64.h>
 
 #include <sf_estimation/kalman_filter.hpp>
-#include <sf_pkg/OutputEntityStamped.h>
-#include <sf_pkg/StateEstimateStamped.h>
+#include <sf_msgs/OutputEntityStamped.h>
+#include <sf_msgs/StateEstimateStamped.h>
 
 namespace {
 
@@ -56,13 +56,13 @@ class FilterNodeTest : public ::testing::Test {
     command_ = nh_.advertise<std_msgs::Float64>("/train/command", 10);
     setClock(kStart);
     estimate_ = nh_.subscribe("/train/estimate/velocity", 100,
-                              &Latest<sf_pkg::OutputEntityStamped>::callback, &speed_);
+                              &Latest<sf_msgs::OutputEntityStamped>::callback, &speed_);
     override_ = nh_.subscribe("/override/train/estimate/velocity", 100,
-                              &Latest<sf_pkg::OutputEntityStamped>::callback, &overrideSpeed_);
+                              &Latest<sf_msgs::OutputEntityStamped>::callback, &overrideSpeed_);
     policies_ = nh_.subscribe("/policies/train/estimate/velocity", 100,
-                              &Latest<sf_pkg::OutputEntityStamped>::callback, &policiesSpeed_);
+                              &Latest<sf_msgs::OutputEntityStamped>::callback, &policiesSpeed_);
     state_ = nh_.subscribe("/train_kf/state", 100,
-                           &Latest<sf_pkg::StateEstimateStamped>::callback, &state_msg_);
+                           &Latest<sf_msgs::StateEstimateStamped>::callback, &state_msg_);
     // Wait until both nodes are connected to every topic of the test.
     const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(30.0);
     while (ros::ok() && ros::WallTime::now() < deadline &&
@@ -103,8 +103,8 @@ class FilterNodeTest : public ::testing::Test {
   ros::NodeHandle nh_;
   ros::Publisher clock_, velocity_, acceleration_, command_;
   ros::Subscriber estimate_, override_, policies_, state_;
-  Latest<sf_pkg::OutputEntityStamped> speed_, overrideSpeed_, policiesSpeed_;
-  Latest<sf_pkg::StateEstimateStamped> state_msg_;
+  Latest<sf_msgs::OutputEntityStamped> speed_, overrideSpeed_, policiesSpeed_;
+  Latest<sf_msgs::StateEstimateStamped> state_msg_;
 };
 
 TEST_F(FilterNodeTest, EstimatesMatchTheLibraryOnTheAlignedInputs) {

@@ -28,7 +28,7 @@ from std_msgs.msg import Float64
 PKG_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(PKG_DIR, "tools", "eval"))
 sys.dont_write_bytecode = True
-import fusion_block  # noqa: E402  (sf_pkg/OutputEntityStamped without generated Python)
+import fusion_block  # noqa: E402  (sf_msgs/OutputEntityStamped without generated Python)
 from any_message import AnyMessageDecoder  # noqa: E402
 
 START = 100.0  # s of simulated time

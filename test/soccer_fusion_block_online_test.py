@@ -27,7 +27,7 @@ PKG_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(PKG_DIR, "tools", "eval"))
 sys.dont_write_bytecode = True
 import evaluate  # noqa: E402
-import fusion_block  # noqa: E402  (sf_pkg/OutputEntityStamped without generated Python)
+import fusion_block  # noqa: E402  (sf_msgs/OutputEntityStamped without generated Python)
 from any_message import AnyMessageDecoder  # noqa: E402
 
 NODES = ["vision_kf", "encoder_kf", "cwa_x", "cwa_y"]

@@ -34,7 +34,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <sf_estimation/extended_kalman_filter.hpp>
-#include <sf_pkg/StateEstimateStamped.h>
+#include <sf_msgs/StateEstimateStamped.h>
 
 #include "sf_filter/node/vector_rotation.hpp"
 
@@ -181,7 +181,7 @@ class SpatialAlignmentTest : public ::testing::Test {
     gyro_ = nh_.advertise<geometry_msgs::Vector3Stamped>("/gyro", 10);
     cmdVel_ = nh_.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
     state_ = nh_.subscribe("/imu_heading/state", 100,
-                           &Latest<sf_pkg::StateEstimateStamped>::callback, &stateMsg_);
+                           &Latest<sf_msgs::StateEstimateStamped>::callback, &stateMsg_);
     odometry_ = nh_.subscribe("/odometry/filtered", 100, &Latest<nav_msgs::Odometry>::callback,
                               &odometryMsg_);
     rosout_ = nh_.subscribe("/rosout", 100, &SpatialAlignmentTest::onLog, this);
@@ -257,7 +257,7 @@ class SpatialAlignmentTest : public ::testing::Test {
   tf2_ros::TransformListener tfListener_{tfBuffer_};
   ros::Publisher clock_, imu_, unmounted_, gyro_, cmdVel_;
   ros::Subscriber state_, odometry_, rosout_;
-  Latest<sf_pkg::StateEstimateStamped> stateMsg_;
+  Latest<sf_msgs::StateEstimateStamped> stateMsg_;
   Latest<nav_msgs::Odometry> odometryMsg_;
   std::vector<std::string> warnings_;
 };

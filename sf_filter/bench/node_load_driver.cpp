@@ -15,8 +15,8 @@
 // Private parameters:
 //   ~duration      measurement window [s] (60)
 //   ~warmup        publishing before the window starts [s] (5)
-//   ~output_topic  sf_pkg/OutputEntityStamped output (/pose/x)
-//   ~state_topic   sf_pkg/StateEstimateStamped output, "" for none (/sf_nav3ctrl_ukf/state)
+//   ~output_topic  sf_msgs/OutputEntityStamped output (/pose/x)
+//   ~state_topic   sf_msgs/StateEstimateStamped output, "" for none (/sf_nav3ctrl_ukf/state)
 //   ~node_pid      pid of the fusion node, 0 for no CPU reading (0)
 //   ~period        estimation period of the node [s] (0.1), for the per-period figures
 //   ~tcp_nodelay   subscribe to the outputs with TCP_NODELAY (false, as most subscribers do)
@@ -39,8 +39,8 @@
 #include <ros/ros.h>
 #include <std_msgs/Float32.h>
 
-#include <sf_pkg/OutputEntityStamped.h>
-#include <sf_pkg/StateEstimateStamped.h>
+#include <sf_msgs/OutputEntityStamped.h>
+#include <sf_msgs/StateEstimateStamped.h>
 
 #include "process_stats.hpp"
 #include "tick_clock.hpp"
@@ -140,15 +140,17 @@ int main(int argc, char** argv) {
   DelayRecorder outputDelays("output"), stateDelays("state");
   outputDelays.setPeriod(period);
   stateDelays.setPeriod(period);
-  auto outputSub = nh.subscribe<sf_pkg::OutputEntityStamped>(
+  auto outputSub = nh.subscribe<sf_msgs::OutputEntityStamped>(
       outputTopic, 100,
-      [&](const sf_pkg::OutputEntityStamped::ConstPtr& m) { outputDelays.record(m->header.stamp); },
+      [&](const sf_msgs::OutputEntityStamped::ConstPtr& m) {
+        outputDelays.record(m->header.stamp);
+      },
       ros::VoidConstPtr(), hints);
   ros::Subscriber stateSub;
   if (!stateTopic.empty()) {
-    stateSub = nh.subscribe<sf_pkg::StateEstimateStamped>(
+    stateSub = nh.subscribe<sf_msgs::StateEstimateStamped>(
         stateTopic, 100,
-        [&](const sf_pkg::StateEstimateStamped::ConstPtr& m) {
+        [&](const sf_msgs::StateEstimateStamped::ConstPtr& m) {
           stateDelays.record(m->header.stamp);
         },
         ros::VoidConstPtr(), hints);

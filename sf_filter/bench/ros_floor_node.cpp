@@ -1,9 +1,9 @@
 // Reference for measure_node_overhead.sh --node sf_ros_floor_node: the ROS side of the nav3ctrl
 // fusion node without FusionCore and without an estimator. Same subscriptions (queue 100),
 // same callback pattern (ros::Time::now() and reading the used fields), same 100 ms
-// ros::Timer and the same publications per period (5 x sf_pkg/OutputEntityStamped on
+// ros::Timer and the same publications per period (5 x sf_msgs/OutputEntityStamped on
 // pose/x, pose/y, pose/theta, velocity/linear, velocity/angular; ~state
-// sf_pkg/StateEstimateStamped with 7 states and a 7x7 covariance; odometry/filtered; one tf),
+// sf_msgs/StateEstimateStamped with 7 states and a 7x7 covariance; odometry/filtered; one tf),
 // with constant values. Its CPU use is what roscpp costs for this traffic, so
 // (fusion node CPU) - (this node's CPU) is what the fusion node's own code adds.
 #include <array>
@@ -18,8 +18,8 @@
 #include <std_msgs/Float32.h>
 #include <tf2_ros/transform_broadcaster.h>
 
-#include <sf_pkg/OutputEntityStamped.h>
-#include <sf_pkg/StateEstimateStamped.h>
+#include <sf_msgs/OutputEntityStamped.h>
+#include <sf_msgs/StateEstimateStamped.h>
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "sf_ros_floor_node");
@@ -60,9 +60,9 @@ int main(int argc, char** argv) {
   std::vector<ros::Publisher> outputs;
   for (const char* topic :
        {"pose/x", "pose/y", "pose/theta", "velocity/linear", "velocity/angular"}) {
-    outputs.push_back(nh.advertise<sf_pkg::OutputEntityStamped>(topic, 10));
+    outputs.push_back(nh.advertise<sf_msgs::OutputEntityStamped>(topic, 10));
   }
-  ros::Publisher state = pnh.advertise<sf_pkg::StateEstimateStamped>("state", 10);
+  ros::Publisher state = pnh.advertise<sf_msgs::StateEstimateStamped>("state", 10);
   ros::Publisher odometry = nh.advertise<nav_msgs::Odometry>("odometry/filtered", 10);
   tf2_ros::TransformBroadcaster broadcaster;
 
@@ -77,14 +77,14 @@ int main(int argc, char** argv) {
       const ros::Time stamp(start + static_cast<double>(index) * period);
       ++index;
       for (auto& p : outputs) {
-        sf_pkg::OutputEntityStamped msg;
+        sf_msgs::OutputEntityStamped msg;
         msg.header.stamp = stamp;
         msg.header.frame_id = "odom";
         msg.value = sum[0];
         msg.variance = 1.0;
         p.publish(msg);
       }
-      sf_pkg::StateEstimateStamped s;
+      sf_msgs::StateEstimateStamped s;
       s.header.stamp = stamp;
       s.header.frame_id = "odom";
       s.method = "UnscentedKalmanFilter";

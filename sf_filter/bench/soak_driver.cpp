@@ -24,7 +24,7 @@
 //   ~start_time    first simulated time [s] (1000)
 //   ~node_pid      pid of the fusion node, 0 for no CPU and memory readings (0)
 //   ~rss_interval  wall seconds between memory samples (0.5)
-//   ~state_topic   the node's sf_pkg/StateEstimateStamped (/sf_test_soak/state)
+//   ~state_topic   the node's sf_msgs/StateEstimateStamped (/sf_test_soak/state)
 //   ~report        file to write the results to as key=value lines ("" for none)
 //   ~rss_csv       file for the memory samples: wall_s,sim_s,vmrss_kib ("" for none)
 //   ~wall_clock    publish in wall time at the input rate instead (false): no /clock, no
@@ -48,7 +48,7 @@
 #include <rosgraph_msgs/Clock.h>
 #include <std_msgs/Float64.h>
 
-#include <sf_pkg/StateEstimateStamped.h>
+#include <sf_msgs/StateEstimateStamped.h>
 
 #include "process_stats.hpp"
 #include "tick_clock.hpp"
@@ -230,9 +230,9 @@ int main(int argc, char** argv) {
   auto velocityB = nh.advertise<std_msgs::Float64>("soak/velocity_b", 1000);
   auto command = nh.advertise<std_msgs::Float64>("soak/command", 1000);
   EstimateRecorder estimates(startTime, period, periods, wallClock);
-  auto stateSub = nh.subscribe<sf_pkg::StateEstimateStamped>(
+  auto stateSub = nh.subscribe<sf_msgs::StateEstimateStamped>(
       stateTopic, 1000,
-      [&](const sf_pkg::StateEstimateStamped::ConstPtr& m) { estimates.record(m->header.stamp); });
+      [&](const sf_msgs::StateEstimateStamped::ConstPtr& m) { estimates.record(m->header.stamp); });
   ros::AsyncSpinner spinner(1);
   spinner.start();
 

@@ -12,7 +12,8 @@ there:
   - no command starts with a bare node name (`sf_nav3ctrl_ukf --replay ...` is "command not
     found" in a shell: `rosrun sf_pkg sf_nav3ctrl_ukf --replay ...`);
   - no command uses roslaunch's `$(find sf_pkg)` substitution, which a shell hands to GNU find;
-  - every repository path the docs name (bags/..., config/..., tools/..., links) exists;
+  - every repository path the docs name (bags/..., config/..., tools/..., links) exists, and
+    every sf_msgs/Name type has its sf_msgs/msg/Name.msg (or srv/Name.srv);
   - no document cites ../shared/..., which is not part of a user's clone.
 The CMake reading is a small interpreter of the commands CMakeLists.txt uses to name its
 executables (set, list, foreach, file(GLOB), get_filename_component), not CMake itself: a
@@ -480,6 +481,14 @@ def workspace_relative(word):
     return None
 
 
+def is_message_type(word, repo=REPO):
+    """sf_msgs/Name is the message or service type of sf_msgs/msg/Name.msg (srv/Name.srv)."""
+    parts = word.split("/")
+    return len(parts) == 2 and parts[0] == "sf_msgs" and any(
+        os.path.isfile(os.path.join(repo, "sf_msgs", kind, parts[1] + "." + kind))
+        for kind in ("msg", "srv"))
+
+
 def path_problems(doc_path, text, repo=REPO):
     problems = []
     name = os.path.relpath(doc_path, repo)
@@ -489,7 +498,8 @@ def path_problems(doc_path, text, repo=REPO):
         if any(c in path for c in "*?"):
             if not glob.glob(os.path.join(repo, path)):
                 problems.append("%s: %s matches no file" % (name, path))
-        elif not os.path.exists(os.path.join(repo, path)) and not is_header_name(path, repo):
+        elif not os.path.exists(os.path.join(repo, path)) and not is_header_name(path, repo) \
+                and not is_message_type(path, repo):
             problems.append("%s: %s does not exist" % (name, path))
     base = os.path.dirname(doc_path)
     for link in markdown_links(text):
@@ -561,6 +571,11 @@ class ShellWordsTest(unittest.TestCase):
         self.assertEqual(repository_paths("see `config/train_kf.h`, tools/eval/*.py and "
                                           "config/[config].h, #include <sf_filter/core/x.hpp>"),
                          ["config/train_kf.h", "tools/eval/*.py"])
+        self.assertTrue(is_message_type("sf_msgs/OutputEntityStamped"))
+        self.assertFalse(is_message_type("sf_msgs/NoSuchMessage"))
+        self.assertEqual(path_problems(os.path.join(REPO, "doc", "x.md"),
+                                       "sf_msgs/StateEstimateStamped and sf_msgs/Nothing"),
+                         ["doc/x.md: sf_msgs/Nothing does not exist"])
 
 
 class DocsCommandsTest(unittest.TestCase):

@@ -62,7 +62,7 @@ class InstallSpaceTest(unittest.TestCase):
             self.assertTrue(os.path.isfile(os.path.join(share, rel)), rel)
         include = os.path.join(PREFIX, "include")
         for rel in ["sf_filter/config/configuration.hpp", "sf_filter/core/fusion_core.hpp",
-                    "sf_estimation/estimator.hpp", "sf_pkg/OutputEntityStamped.h"]:
+                    "sf_estimation/estimator.hpp", "sf_msgs/OutputEntityStamped.h"]:
             self.assertTrue(os.path.isfile(os.path.join(include, rel)), rel)
         self.assertTrue(os.path.isfile(os.path.join(PREFIX, "lib", "sf_pkg", "sf_train_kf")))
 

@@ -153,7 +153,7 @@ def run_chain(bag, lib_dir, work_dir, timeout=120, log=print, record=False):
 
 
 def output_entity_class():
-    """sf_pkg/OutputEntityStamped as a rospy message class, generated from
+    """sf_msgs/OutputEntityStamped as a rospy message class, generated from
     sf_msgs/msg/OutputEntityStamped.msg (no devel space needed: for writing test bags)."""
     import genpy.dynamic
     from std_msgs.msg import Header
@@ -161,7 +161,7 @@ def output_entity_class():
     with open(os.path.join(REPO, "sf_msgs", "msg", "OutputEntityStamped.msg")) as f:
         text = f.read()
     full = text + "\n" + "=" * 80 + "\nMSG: std_msgs/Header\n" + Header._full_text
-    name = "sf_pkg/OutputEntityStamped"
+    name = "sf_msgs/OutputEntityStamped"
     return genpy.dynamic.generate_dynamic(name, full)[name]
 
 

@@ -10,15 +10,15 @@
 #include <tf2/LinearMath/Quaternion.h>
 #include <Eigen/Core>
 
-#include <sf_pkg/OutputEntityStamped.h>
-#include <sf_pkg/StateEstimateStamped.h>
+#include <sf_msgs/OutputEntityStamped.h>
+#include <sf_msgs/StateEstimateStamped.h>
 
 namespace sf_filter {
 
 template <class Estimate>
-sf_pkg::OutputEntityStamped makeOutputEntity(const Estimate& e, int index,
-                                             const std::string& frame) {
-  sf_pkg::OutputEntityStamped msg;
+sf_msgs::OutputEntityStamped makeOutputEntity(const Estimate& e, int index,
+                                              const std::string& frame) {
+  sf_msgs::OutputEntityStamped msg;
   msg.header.stamp = ros::Time(e.time);
   msg.header.frame_id = frame;
   msg.value = e.state(index);
@@ -27,10 +27,10 @@ sf_pkg::OutputEntityStamped makeOutputEntity(const Estimate& e, int index,
 }
 
 template <class Estimate>
-sf_pkg::StateEstimateStamped makeStateEstimate(const Estimate& e, const std::string& method,
-                                               const std::string& frame) {
+sf_msgs::StateEstimateStamped makeStateEstimate(const Estimate& e, const std::string& method,
+                                                const std::string& frame) {
   const Eigen::Index n = e.state.size();
-  sf_pkg::StateEstimateStamped msg;
+  sf_msgs::StateEstimateStamped msg;
   msg.header.stamp = ros::Time(e.time);
   msg.header.frame_id = frame;
   msg.method = method;

@@ -58,9 +58,9 @@ class FusionNode final : public MessageSink {
         publishTf_(settings.publishTf),
         queueSize_(settings.queueSize) {
     for (const auto& out : description_.outputs) {
-      outputs_.push_back(nh_.advertise<sf_pkg::OutputEntityStamped>(out.first, queueSize_));
+      outputs_.push_back(nh_.advertise<sf_msgs::OutputEntityStamped>(out.first, queueSize_));
     }
-    state_ = pnh_.advertise<sf_pkg::StateEstimateStamped>("state", queueSize_);
+    state_ = pnh_.advertise<sf_msgs::StateEstimateStamped>("state", queueSize_);
     if (description_.pose) {
       odometry_ = nh_.advertise<nav_msgs::Odometry>("odometry/filtered", queueSize_);
       // robot_localization's set_pose topic and rviz's 2D Pose Estimate (/initialpose).
