@@ -1,8 +1,9 @@
-# sf_add_filter(<node name> <configuration header>)
+# sf_add_filter(<node name> <configuration header> [NO_INSTALL])
 #
-# Builds a fusion node executable from one configuration header (see doc/configuration.md).
-# Exported through catkin: a package that find_package()s sf_pkg can call it with its own
-# headers. The header path is relative to the calling CMakeLists.txt or absolute.
+# Builds a fusion node executable from one configuration header (see doc/configuration.md)
+# and installs it into the package's lib/ folder (rosrun), unless NO_INSTALL is given (a node
+# only for tests). Exported through catkin: a package that find_package()s sf_pkg can call it
+# with its own headers. The header path is relative to the calling CMakeLists.txt or absolute.
 if(NOT DEFINED SF_PKG_FILTER_MAIN)
   # Inside sf_pkg itself, or installed (share/sf_pkg mirrors the source tree): the main is
   # beside this file's directory.
@@ -15,7 +16,22 @@ if(NOT DEFINED SF_PKG_FILTER_MAIN)
   set(SF_PKG_FILTER_MAIN "${_sf_pkg_root}/sf_filter/src/fusion_node_main.cpp")
 endif()
 
+# Installed, the headers (sf_filter/, sf_estimation/) are in the package's own include folder,
+# <prefix>/include/sf_pkg, and keep their #include <sf_filter/...> names: that folder is added
+# to sf_pkg's include directories (catkin exports only <prefix>/include). Devel space and
+# in-tree builds use the source folders (catkin_package(INCLUDE_DIRS)).
+get_filename_component(_sf_pkg_installed_include "${CMAKE_CURRENT_LIST_DIR}/../../../include/sf_pkg"
+  ABSOLUTE)
+if(CMAKE_CURRENT_LIST_DIR MATCHES "/share/sf_pkg/cmake$"
+   AND EXISTS "${_sf_pkg_installed_include}/sf_filter")
+  list(APPEND sf_pkg_INCLUDE_DIRS "${_sf_pkg_installed_include}")
+endif()
+
 function(sf_add_filter name header)
+  cmake_parse_arguments(_sf "NO_INSTALL" "" "" ${ARGN})
+  if(_sf_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "sf_add_filter(${name}): unknown arguments ${_sf_UNPARSED_ARGUMENTS}")
+  endif()
   get_filename_component(_header "${header}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
   if(NOT EXISTS "${_header}")
     message(FATAL_ERROR "sf_add_filter(${name}): configuration header ${_header} not found")
@@ -46,5 +62,7 @@ function(sf_add_filter name header)
   endif()
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY
     "${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}")
-  install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+  if(NOT _sf_NO_INSTALL)
+    install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+  endif()
 endfunction()

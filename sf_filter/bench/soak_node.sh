@@ -4,13 +4,13 @@
 #
 # Starts a private roscore on a free port, sets use_sim_time, then sf_test_soak (built from
 # test/configs/soak_four_inputs_kf.h: KF, 10 ms period, four inputs, one control) and
-# sf_soak_driver (sf_filter/bench/soak_driver.cpp), which owns /clock, publishes the inputs
+# sf_test_soak_driver (sf_filter/bench/soak_driver.cpp), which owns /clock, publishes the inputs
 # in simulated time, waits for the node's estimates so that it never runs more than --window
 # periods ahead, and measures the estimates' spacing and delay, the node's CPU and its VmRSS.
 # At the end the node is stopped with SIGINT and logs its per-input counters; the script
 # compares the values received per input with the messages published.
 #
-# Usage (in a sourced catkin workspace that built sf_test_soak and sf_soak_driver):
+# Usage (in a sourced catkin workspace that built sf_test_soak and sf_test_soak_driver):
 #   sf_filter/bench/soak_node.sh [--sim-duration 600] [--warmup S] [--window 1] [--port P]
 #     [--out DIR] [--wall-clock]
 # --wall-clock: no simulated time; the driver publishes at 1 kHz in wall time for
@@ -43,7 +43,7 @@ done
 [[ -n "$WARMUP" ]] || WARMUP=$(awk -v d="$SIM_DURATION" 'BEGIN {print d / 10}')
 
 if ! command -v catkin_find >/dev/null || ! catkin_find --first-only --libexec sf_pkg sf_test_soak >/dev/null 2>&1; then
-  echo "source the catkin workspace first (devel/setup.bash) and build sf_test_soak, sf_soak_driver" >&2
+  echo "source the catkin workspace first (devel/setup.bash) and build sf_test_soak, sf_test_soak_driver" >&2
   exit 1
 fi
 [[ -n "$OUT" ]] || OUT=$(mktemp -d /tmp/sf_soak.XXXXXX)
@@ -51,7 +51,7 @@ mkdir -p "$OUT"
 # shellcheck source=ros_bench_lib.sh
 source "$HERE/ros_bench_lib.sh"
 NODE_EXE=$(bench_exe sf_test_soak)
-DRIVER_EXE=$(bench_exe sf_soak_driver)
+DRIVER_EXE=$(bench_exe sf_test_soak_driver)
 [[ -n "$PORT" ]] || PORT=$(bench_free_port)
 
 ROSCORE_PID="" NODE_PID="" DRIVER_PID=""

@@ -4,8 +4,9 @@ Reads README.md and doc/*.md (and the usage comments of launch/*.launch), takes 
 commands out of their code blocks and checks, without running them, that what they call is
 there:
   - `rosrun sf_pkg X`: X is an executable that CMakeLists.txt builds (sf_add_filter,
-    add_executable, also in add_subdirectory()'d CMakeLists) or a script of the tree with
-    mode 755 that the install rules install;
+    add_executable, also in add_subdirectory()'d CMakeLists) and installs (install(TARGETS),
+    sf_add_filter without NO_INSTALL), or a script of the tree with mode 755 that the install
+    rules install;
   - `roslaunch sf_pkg X`: launch/X exists;
   - `bash scripts/...`, `python3 tools/...` and the like: the file exists; a script called
     directly (`tools/eval/evaluate.py ...`) is also executable (mode 755 in git);
@@ -217,6 +218,7 @@ class CMakeTargets:
     def __init__(self, repo=REPO):
         self.repo = repo
         self.executables = set()
+        self.installed = set()         # executables installed (install(TARGETS), sf_add_filter)
         self.programs = set()          # repository-relative paths of installed programs
         self.program_dirs = []         # (repository-relative dir, keeps source permissions)
         self.unresolved = []
@@ -318,6 +320,13 @@ class CMakeTargets:
             if "IMPORTED" in values or "ALIAS" in values:
                 return
             self._target(values[0])
+            if name == "sf_add_filter" and "NO_INSTALL" not in values:
+                self.installed.add(values[0])
+        elif name == "install" and values and values[0] == "TARGETS":
+            for v in values[1:]:
+                if v.isupper():  # EXPORT, RUNTIME, LIBRARY, DESTINATION, ...
+                    break
+                self.installed.add(v)
         elif name in ("catkin_install_python", "install") and values and values[0] == "PROGRAMS":
             for v in values[1:]:
                 if v == "DESTINATION":
@@ -431,6 +440,9 @@ def command_problems(where, words, targets, modes, repo=REPO):
     if first == "rosrun" and len(words) >= 3 and words[1] == PACKAGE:
         name = words[2]
         if name in targets.executables:
+            if name not in targets.installed:
+                problems.append("%s: rosrun %s %s: built by CMakeLists.txt but not installed "
+                                "(install(TARGETS ...))" % (where, PACKAGE, name))
             return problems
         found = scripts_named(name, repo)
         runnable = [p for p in found if is_executable(p, modes, repo)]
@@ -521,6 +533,7 @@ class CMakeReadingTest(unittest.TestCase):
                 f.write('set(CONFIGS a b) # comment (with parentheses)\n'
                         'set(MORE c)\nlist(TRANSFORM MORE PREPEND sf_)\n'
                         'foreach(config ${CONFIGS})\n  sf_add_filter(sf_${config} x.h)\nendforeach()\n'
+                        'sf_add_filter(sf_only_tested t.h NO_INSTALL)\n'
                         'function(helper name)\n  add_executable(${name} y.cpp)\nendfunction()\n'
                         'if(FOO)\n  add_executable(node_${MORE} "z.cpp")\nendif()\n'
                         'catkin_install_python(PROGRAMS tools/a.py tools/b.py\n'
@@ -530,9 +543,13 @@ class CMakeReadingTest(unittest.TestCase):
             with open(os.path.join(tmp, "sub", "CMakeLists.txt"), "w") as f:
                 f.write('file(GLOB EX CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/examples/*.cpp")\n'
                         'foreach(ex ${EX})\n  get_filename_component(n "${ex}" NAME_WE)\n'
-                        '  set(t "sf_${n}")\n  add_executable(${t} "${ex}")\nendforeach()\n')
+                        '  set(t "sf_${n}")\n  add_executable(${t} "${ex}")\n'
+                        '  list(APPEND EXES ${t})\nendforeach()\n'
+                        'install(TARGETS ${EXES} RUNTIME DESTINATION bin)\n')
             targets = CMakeTargets(tmp)
-        self.assertEqual(targets.executables, {"sf_a", "sf_b", "node_sf_c", "sf_demo"})
+        self.assertEqual(targets.executables,
+                         {"sf_a", "sf_b", "sf_only_tested", "node_sf_c", "sf_demo"})
+        self.assertEqual(targets.installed, {"sf_a", "sf_b", "sf_demo"})
         self.assertEqual(targets.unresolved, [])
         self.assertEqual(targets.programs, {"tools/a.py", "tools/b.py"})
         self.assertTrue(targets.installs_program("tools/sub/c.py"))
@@ -543,8 +560,14 @@ class CMakeReadingTest(unittest.TestCase):
         self.assertEqual(targets.unresolved, [], "target names CMakeLists.txt gives that this "
                          "test cannot work out")
         for name in ("sf_train_kf", "sf_nav3ctrl_ukf", "sf_diff_drive_odom_imu", "sf_soccer_cwa_x",
-                     "sf_moving_train", "sf_wang_table2"):
+                     "sf_moving_train", "sf_wang_table2", "sf_fusion_core_benchmark",
+                     "sf_estimation_benchmark"):
             self.assertIn(name, targets.executables)
+            self.assertIn(name, targets.installed)
+        # nodes and drivers only for tests are not installed (issue 17, item 8)
+        for name in ("sf_test_imu_heading", "sf_test_faults_kf", "sf_test_soak_driver"):
+            self.assertIn(name, targets.executables)
+            self.assertNotIn(name, targets.installed)
 
 
 class ShellWordsTest(unittest.TestCase):

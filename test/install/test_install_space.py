@@ -1,6 +1,9 @@
 """The install space serves a downstream package: `cmake --install` of the workspace build,
 then a throw-away catkin package that find_package()s only the installed sf_pkg builds a
-fusion node from its own copy of a shipped header with sf_add_filter() and runs it.
+fusion node from its own copy of a shipped header with sf_add_filter() and runs it, and one
+that depends on the installed sf_msgs alone builds a program with its messages. The layout:
+headers in the package's own include/sf_pkg/, the documented benchmarks installed, the
+test-only nodes not, `rosmsg show sf_msgs/OutputEntityStamped` in the sourced install space.
 
 Run by `catkin_make run_tests` (root CMakeLists.txt) with SF_BUILD_DIR (the workspace's
 build directory) and SF_INSTALL_PREFIX (its install prefix) in the environment.
@@ -33,6 +36,42 @@ project(my_robot_fusion CXX)
 find_package(catkin REQUIRED COMPONENTS sf_pkg)
 catkin_package()
 sf_add_filter(my_train_kf config/my_train_kf.h)
+"""
+
+
+MESSAGES_PACKAGE_XML = """<?xml version="1.0"?>
+<package format="3">
+  <name>my_fusion_monitor</name>
+  <version>0.0.1</version>
+  <description>Reads a fusion node's output: the messages only.</description>
+  <maintainer email="nobody@example.com">nobody</maintainer>
+  <license>BSD</license>
+  <buildtool_depend>catkin</buildtool_depend>
+  <depend>sf_msgs</depend>
+</package>
+"""
+
+MESSAGES_CMAKELISTS = """cmake_minimum_required(VERSION 3.16)
+project(my_fusion_monitor CXX)
+find_package(catkin REQUIRED COMPONENTS sf_msgs)
+if(sf_pkg_FOUND OR DEFINED sf_pkg_DIR)
+  message(FATAL_ERROR "sf_msgs pulled in sf_pkg")
+endif()
+catkin_package()
+add_executable(monitor monitor.cpp)
+target_include_directories(monitor PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(monitor ${catkin_LIBRARIES})
+"""
+
+MONITOR_CPP = """#include <iostream>
+#include <sf_msgs/OutputEntityStamped.h>
+#include <sf_msgs/StateEstimateStamped.h>
+int main() {
+  sf_msgs::OutputEntityStamped m;
+  m.value = 1.5;
+  std::cout << ros::message_traits::DataType<sf_msgs::StateEstimateStamped>::value() << ' '
+            << m.value << std::endl;
+}
 """
 
 
