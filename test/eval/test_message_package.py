@@ -37,7 +37,8 @@ def fields(msg_text):
 class DevelSpaceMessagesTest(unittest.TestCase):
     def test_rospack_finds_the_package_of_this_repository(self):
         found = run("/usr/bin/rospack", "find", "sf_msgs").strip()
-        self.assertEqual(os.path.realpath(found), os.path.realpath(os.path.join(REPO, "sf_msgs")))
+        self.assertEqual(os.path.realpath(found),
+                         os.path.realpath(os.path.join(REPO, "sf_msgs")))
 
     def test_rosmsg_shows_each_message_as_defined(self):
         for name in MESSAGES:
