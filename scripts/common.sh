@@ -26,7 +26,8 @@ SF_PACKAGE=sf_pkg
 # sf_estimation's sanitizer and libFuzzer checks (sf_estimation/scripts/sanitizer_checks.py).
 # python3-diagnostic-msgs: the Python messages of /diagnostics, for `rostopic echo
 # /diagnostics`, tools/diagnostics_monitor.py and its test (ros-diagnostic-msgs has only the
-# .msg files).
+# .msg files). tf2-tools: tf2_ros's executables, `rosrun tf2_ros static_transform_publisher`
+# (launch/diff_drive_odom_imu.launch's imu_mount, doc/spatial_alignment.md).
 SF_DEB_PACKAGES=(
   ros-core-dev catkin libroscpp-dev librosbag-dev python3-rostest rosbash
   libtf2-ros-dev libtf2-geometry-msgs-dev
@@ -34,7 +35,7 @@ SF_DEB_PACKAGES=(
   libdiagnostic-updater-dev libtopic-tools-dev ros-message-generation ros-message-runtime
   libeigen3-dev libboost-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
-  python3-diagnostic-msgs
+  python3-diagnostic-msgs tf2-tools
   cmake g++
   clang libclang-rt-14-dev
 )
