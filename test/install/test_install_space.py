@@ -100,10 +100,50 @@ class InstallSpaceTest(unittest.TestCase):
                     "tools/eval/evaluate.py"]:
             self.assertTrue(os.path.isfile(os.path.join(share, rel)), rel)
         include = os.path.join(PREFIX, "include")
-        for rel in ["sf_filter/config/configuration.hpp", "sf_filter/core/fusion_core.hpp",
-                    "sf_estimation/estimator.hpp", "sf_msgs/OutputEntityStamped.h"]:
+        # the package's headers in its own include folder, the messages in sf_msgs'
+        for rel in ["sf_pkg/sf_filter/config/configuration.hpp",
+                    "sf_pkg/sf_filter/core/fusion_core.hpp", "sf_pkg/sf_estimation/estimator.hpp",
+                    "sf_msgs/OutputEntityStamped.h", "sf_msgs/StateEstimateStamped.h"]:
             self.assertTrue(os.path.isfile(os.path.join(include, rel)), rel)
-        self.assertTrue(os.path.isfile(os.path.join(PREFIX, "lib", "sf_pkg", "sf_train_kf")))
+        for rel in ["sf_filter", "sf_estimation", "sf_pkg/OutputEntityStamped.h"]:
+            self.assertFalse(os.path.exists(os.path.join(include, rel)), rel)
+        self.assertTrue(os.path.isfile(os.path.join(PREFIX, "share", "sf_msgs", "msg",
+                                                    "OutputEntityStamped.msg")))
+        lib = os.path.join(PREFIX, "lib", "sf_pkg")
+        # nodes, and the benchmarks the docs run with rosrun (doc/node_benchmarks.md)
+        for name in ["sf_train_kf", "sf_diff_drive_odom_imu", "sf_fusion_core_benchmark",
+                     "sf_estimation_benchmark", "sf_node_load_driver", "sf_ros_floor_node",
+                     "measure_node_overhead.sh", "sf_wang_table2"]:
+            self.assertTrue(os.access(os.path.join(lib, name), os.X_OK), name)
+        self.assertTrue(os.path.isfile(os.path.join(lib, "ros_bench_lib.sh")))
+        # nodes and drivers only for tests are not installed
+        test_only = sorted(n for n in os.listdir(lib) if n.startswith("sf_test_"))
+        self.assertEqual(test_only, [])
+
+    def test_rosmsg_finds_the_messages(self):
+        setup = os.path.join(PREFIX, "setup.bash")
+        self.assertTrue(os.path.isfile(setup), setup)
+        out = run(["bash", "-c", "set +u; source %s && rosmsg show sf_msgs/OutputEntityStamped"
+                   % setup], self.env)
+        self.assertIn("float64 value", out)
+        self.assertIn("float64 variance", out)
+        self.assertIn("std_msgs/Header header", out)
+
+    def test_downstream_package_uses_the_messages_alone(self):
+        with tempfile.TemporaryDirectory(prefix="sf_install_msgs_") as tmp:
+            src = os.path.join(tmp, "my_fusion_monitor")
+            os.makedirs(src)
+            for name, text in [("package.xml", MESSAGES_PACKAGE_XML),
+                               ("CMakeLists.txt", MESSAGES_CMAKELISTS),
+                               ("monitor.cpp", MONITOR_CPP)]:
+                with open(os.path.join(src, name), "w") as f:
+                    f.write(text)
+            build = os.path.join(tmp, "build")
+            devel = os.path.join(tmp, "devel")
+            run(["cmake", "-S", src, "-B", build, "-DCATKIN_DEVEL_PREFIX=" + devel], self.env)
+            run(["cmake", "--build", build, "--", "-j1"], self.env)
+            out = run([os.path.join(devel, "lib", "my_fusion_monitor", "monitor")], self.env)
+            self.assertEqual(out.split(), ["sf_msgs/StateEstimateStamped", "1.5"])
 
     def test_downstream_package_builds_a_node(self):
         with tempfile.TemporaryDirectory(prefix="sf_install_test_") as tmp:
