@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+"""Simulator with exactly known noise for the noise identification (doc/tuning.md): a cart on
+a line, x = (position p, speed v), that moves as the discrete nearly-constant-velocity model
+of test/configs/tune_cart_kf.h,
+
+    p_k = p_{k-1} + T v_{k-1} + w_p,   v_k = v_{k-1} + w_v,   w ~ N(0, diag(q_p, q_v)),
+
+with one position and one speed reading per period T,
+
+    cart/position  geometry_msgs/PointStamped    point.x  = p_k + r_p,  r_p ~ N(0, r_p var)
+    cart/speed     geometry_msgs/Vector3Stamped  vector.x = v_k + r_v,  r_v ~ N(0, r_v var)
+
+the position at k T, the speed at k T + 0.4 T, so each estimation period of the offline
+replay (its schedule starts at the first message) holds exactly one of each. The online node
+starts its schedule at the first /clock it sees instead, a few milliseconds off, so readings
+on the period ends would fall on either side; --mid-period places them at k T + 0.3 T and
+k T + 0.7 T and repeats the first speed reading at 0, which starts both schedules there and
+keeps every reading 30 ms or more from a period end (test/tuned_params_online.test). Q and R of the model are
+then the simulator's own numbers (--q-position, --q-speed, --r-position, --r-speed; variances
+per period), the reference the identified values are checked against
+(test/robots/test_noise_tuning.py). Seeded (simbag.py): the same command gives the same bag.
+
+  cart_sim.py --seed 1 --periods 3000 --out /tmp/cart.bag
+"""
+
+import argparse
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from geometry_msgs.msg import PointStamped, Vector3Stamped  # noqa: E402
+
+import simbag  # noqa: E402
+
+PERIOD_NS = 100000000  # T = 0.1 s, ESTIMATION_PERIOD of test/configs/tune_cart_kf.h
+Q_POSITION = 4e-4      # m^2 per period
+Q_SPEED = 1e-3         # (m/s)^2 per period
+R_POSITION = 2.5e-3    # m^2
+R_SPEED = 2.5e-3       # (m/s)^2
+
+
+def simulate(seed, periods, q=(Q_POSITION, Q_SPEED), r=(R_POSITION, R_SPEED)):
+    """[(k, p_k, v_k, z_position, z_speed)] for k = 0 .. periods - 1, from p = v = 0."""
+    process = simbag.rng("cart", seed, "process")
+    sensors = simbag.rng("cart", seed, "sensors")
+    t = PERIOD_NS / 1e9
+    p = v = 0.0
+    out = []
+    for k in range(periods):
+        if k > 0:
+            p, v = p + t * v + process.gauss(0.0, math.sqrt(q[0])), v + process.gauss(
+                0.0, math.sqrt(q[1]))
+        out.append((k, p, v, p + sensors.gauss(0.0, math.sqrt(r[0])),
+                    v + sensors.gauss(0.0, math.sqrt(r[1]))))
+    return out
+
+
+def write_bag(path, samples, mid_period=False):
+    bag = simbag.BagBuilder()
+    phase_p, phase_v = (3, 7) if mid_period else (0, 4)  # tenths of a period
+    for k, _, _, z_p, z_v in samples:
+        t_p = k * PERIOD_NS + phase_p * PERIOD_NS // 10
+        t_v = k * PERIOD_NS + phase_v * PERIOD_NS // 10
+        if mid_period and k == 0:
+            first = Vector3Stamped()
+            first.header.seq = bag.next_seq("cart/speed")
+            first.header.stamp = bag.stamp(0)
+            first.header.frame_id = "base_link"
+            first.vector.x = z_v
+            bag.add("cart/speed", first, 0)
+        pos = PointStamped()
+        pos.header.seq = bag.next_seq("cart/position")
+        pos.header.stamp = bag.stamp(t_p)
+        pos.header.frame_id = "odom"
+        pos.point.x = z_p
+        bag.add("cart/position", pos, t_p)
+        speed = Vector3Stamped()
+        speed.header.seq = bag.next_seq("cart/speed")
+        speed.header.stamp = bag.stamp(t_v)
+        speed.header.frame_id = "base_link"
+        speed.vector.x = z_v
+        bag.add("cart/speed", speed, t_v)
+    bag.write(path, compression="none")
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--periods", type=int, default=3000)
+    parser.add_argument("--q-position", type=float, default=Q_POSITION)
+    parser.add_argument("--q-speed", type=float, default=Q_SPEED)
+    parser.add_argument("--r-position", type=float, default=R_POSITION)
+    parser.add_argument("--r-speed", type=float, default=R_SPEED)
+    parser.add_argument("--mid-period", action="store_true",
+                        help="readings 0.3 and 0.7 periods after the period starts (online runs)")
+    parser.add_argument("--out", required=True)
+    args = parser.parse_args(argv)
+    if args.periods < 1 or min(args.q_position, args.q_speed, args.r_position, args.r_speed) < 0:
+        parser.error("--periods must be >= 1 and the variances >= 0")
+    samples = simulate(args.seed, args.periods, (args.q_position, args.q_speed),
+                       (args.r_position, args.r_speed))
+    write_bag(args.out, samples, args.mid_period)
+    simbag.log("wrote %s: %d periods of %.1f s, Q = diag(%g, %g), R = diag(%g, %g)" % (
+        args.out, args.periods, PERIOD_NS / 1e9, args.q_position, args.q_speed,
+        args.r_position, args.r_speed))
+
+
+if __name__ == "__main__":
+    main()
