@@ -534,6 +534,28 @@ TEST(NisSeries, JudgesEveryPeriodOfAFullWindowAndKeepsTheRunsTotals) {
   EXPECT_EQ(series.periods(), 120u);
 }
 
+TEST(NisSeries, JudgesAsTheDiagnosticsWindowWhenTheDegreesOfFreedomVary) {
+  // A sensor slower than the period: 2 or 3 measured entries per period, the window's
+  // degrees of freedom change from period to period. Every period's verdict must be the
+  // diagnostics' (NisWindow::inconsistent), whatever the cached bounds.
+  sf_filter::NisSeries series(20, 3);
+  sf_filter::NisWindow reference(20);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> nis(0.0, 6.0);
+  std::uint64_t inconsistent = 0;
+  for (int k = 0; k < 500; ++k) {
+    const int dof = random() % 3 == 0 ? 3 : 2;
+    const double e = nis(random);
+    series.add(e, dof);
+    reference.add(e, dof);
+    inconsistent += reference.inconsistent() ? 1 : 0;
+  }
+  EXPECT_EQ(series.judgedPeriods(), 481u);
+  EXPECT_EQ(series.inconsistentPeriods(), inconsistent);
+  EXPECT_GT(inconsistent, 0u);
+  EXPECT_LT(inconsistent, 481u);
+}
+
 TEST(FusionCoreNis, TheCheckLeavesTheEstimatesUnchanged) {
   const TrainRun run(100, 9);
   Core without = makeCore(std::vector<InputOptions>(2)),

@@ -23,7 +23,9 @@ namespace sf_filter {
 /// inconsistent, and the totals of the run.
 class NisSeries {
  public:
-  explicit NisSeries(std::size_t window = 0) : window_(window) {}
+  /// `window`: periods of the sliding window (0: off); `maxDofPerPeriod`: the most measured
+  /// entries a period can have (the inputs it covers).
+  explicit NisSeries(std::size_t window = 0, int maxDofPerPeriod = 1);
 
   bool enabled() const { return window_.enabled(); }
   /// The NIS of one period with `dof` > 0 measured entries; once the window is full, the
@@ -51,17 +53,23 @@ class NisSeries {
   double sum_ = 0.0;
   long dof_ = 0;
   std::uint64_t periods_ = 0, judged_ = 0, inconsistent_ = 0;
-  // The window's bounds for its last degrees of freedom: Boost's chi-square quantiles cost
-  // microseconds, the degrees of freedom of a full window rarely change.
-  long cachedDof_ = -1;
-  NisBounds cachedBounds_;
+  /// The window's bounds for `dof` degrees of freedom, computed once per value. Boost's
+  /// chi-square quantiles cost microseconds, and a full window's degrees of freedom change
+  /// whenever an input is missing in a period (a sensor slower than the period): every
+  /// possible value has its slot, allocated here at construction so that the node's periods
+  /// stay free of allocations (above kMaxCachedBounds slots only the last value is kept).
+  const NisBounds& windowBounds(long dof);
+  static constexpr std::size_t kMaxCachedBounds = 1 << 16;
+  std::vector<NisBounds> boundsByDof_;  ///< index dof; lower < 0: not computed yet
+  long lastDof_ = -1;
+  NisBounds lastBounds_;
 };
 
 class InnovationRecord {
  public:
   /// `window`: the periods of the sliding window (0: nothing is recorded).
   InnovationRecord(std::size_t window, std::size_t inputs)
-      : overall_(window), inputs_(inputs, NisSeries(window)) {}
+      : overall_(window, static_cast<int>(inputs)), inputs_(inputs, NisSeries(window, 1)) {}
 
   bool enabled() const { return overall_.enabled(); }
   /// The period's innovation over its measured entries: NIS, its degrees of freedom, log det S.
