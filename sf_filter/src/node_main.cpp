@@ -177,8 +177,9 @@ int tuneFromEvents(const std::string& name, const NodeDefinition& def,
     std::string command;
     for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
     char costs[160];
-    std::snprintf(costs, sizeof costs, "sum(log det S + NIS): start %.10g, tuned %.10g (%d replays)",
-                  r.startCost, r.cost, r.evaluations);
+    std::snprintf(costs, sizeof costs,
+                  "sum(log det S + NIS): start %.10g, tuned %.10g (%d replays)", r.startCost,
+                  r.cost, r.evaluations);
     sf_filter::writeTunedParameters(
         out,
         {"Noise identified by the prediction-error method (doc/tuning.md):", command, costs,
