@@ -114,6 +114,21 @@ long inputIndex(const std::string& text) {
   return index;
 }
 
+/// The number of option `option`, all of `text`; a clear error otherwise.
+double numberOption(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::logic_error&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value)) {
+    throw std::invalid_argument(option + " '" + text + "' is not a finite number");
+  }
+  return value;
+}
+
 /// The replay summary's line per input: what it received, used, dropped (by reason), gated.
 void printInputCounters(const std::string& name, const sf_filter::FusionEngine& core) {
   for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
@@ -295,9 +310,13 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       } else if (arg == "--out") {
         tunedPath = value();
       } else if (arg == "--tune-range") {
-        tuning.range = std::stod(value());
+        tuning.range = numberOption(arg, value());
       } else if (arg == "--max-evaluations") {
-        tuning.maxEvaluations = std::stoi(value());
+        const double n = numberOption(arg, value());
+        if (n != std::floor(n) || n < 1 || n > 1e9) {
+          throw std::invalid_argument("--max-evaluations must be a whole number from 1 to 1e9");
+        }
+        tuning.maxEvaluations = static_cast<int>(n);
       } else if (arg == "--csv") {
         options.csvPath = value();
       } else if (arg == "--bag") {

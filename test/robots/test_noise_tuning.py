@@ -194,6 +194,16 @@ class NoiseTuningTest(unittest.TestCase):
         proc = self.run_node("sf_test_tune_cart_kf", "--tune", self.bag, "--csv", "x.csv")
         self.assertEqual(proc.returncode, 2)
         self.assertIn("--tune writes no estimates", proc.stderr)
+        for option, value, message in (
+                ("--tune-range", "1", "--tune-range must be a finite factor above 1"),
+                ("--tune-range", "ten", "--tune-range 'ten' is not a finite number"),
+                ("--max-evaluations", "2.5", "--max-evaluations must be a whole number")):
+            proc = self.run_node("sf_test_tune_cart_kf", "--tune", self.bag, option, value)
+            self.assertEqual(proc.returncode, 2, proc.stdout + proc.stderr)
+            self.assertIn(message, proc.stderr)
+        proc = self.run_node("sf_test_tune_cart_kf", "--replay", self.bag, "--free", "Q")
+        self.assertEqual(proc.returncode, 2)
+        self.assertIn("--free and --out belong to --tune", proc.stderr)
 
 
 if __name__ == "__main__":
