@@ -33,21 +33,13 @@ PKG_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(PKG_DIR, "tools", "sim"))
 sys.dont_write_bytecode = True
 import cart_sim  # noqa: E402
+from nav3ctrl_online_test import find_executable  # noqa: E402  (the workspace lookup)
 
 NODE = "sf_test_tune_cart_kf"
 NAME = "cart_kf"
 PERIOD = 0.1
 ONLINE_PERIODS = 300
 WALL_TIMEOUT = 120.0
-
-
-def find_executable(name):
-    from catkin.find_in_workspaces import find_in_workspaces
-
-    found = find_in_workspaces(["libexec"], project="sf_pkg", path=name)
-    if not found:
-        raise RuntimeError("%s not found in the catkin workspaces" % name)
-    return found[0]
 
 
 def read_states(csv_path):

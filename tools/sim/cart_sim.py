@@ -57,31 +57,29 @@ def simulate(seed, periods, q=(Q_POSITION, Q_SPEED), r=(R_POSITION, R_SPEED)):
     return out
 
 
+def add_reading(bag, topic, t_ns, value):
+    """One reading of `topic` (cart/position or cart/speed) at t_ns into `bag`."""
+    if topic == "cart/position":
+        msg = PointStamped()
+        msg.header.frame_id = "odom"
+        msg.point.x = value
+    else:
+        msg = Vector3Stamped()
+        msg.header.frame_id = "base_link"
+        msg.vector.x = value
+    msg.header.seq = bag.next_seq(topic)
+    msg.header.stamp = bag.stamp(t_ns)
+    bag.add(topic, msg, t_ns)
+
+
 def write_bag(path, samples, mid_period=False):
     bag = simbag.BagBuilder()
     phase_p, phase_v = (3, 7) if mid_period else (0, 4)  # tenths of a period
     for k, _, _, z_p, z_v in samples:
-        t_p = k * PERIOD_NS + phase_p * PERIOD_NS // 10
-        t_v = k * PERIOD_NS + phase_v * PERIOD_NS // 10
         if mid_period and k == 0:
-            first = Vector3Stamped()
-            first.header.seq = bag.next_seq("cart/speed")
-            first.header.stamp = bag.stamp(0)
-            first.header.frame_id = "base_link"
-            first.vector.x = z_v
-            bag.add("cart/speed", first, 0)
-        pos = PointStamped()
-        pos.header.seq = bag.next_seq("cart/position")
-        pos.header.stamp = bag.stamp(t_p)
-        pos.header.frame_id = "odom"
-        pos.point.x = z_p
-        bag.add("cart/position", pos, t_p)
-        speed = Vector3Stamped()
-        speed.header.seq = bag.next_seq("cart/speed")
-        speed.header.stamp = bag.stamp(t_v)
-        speed.header.frame_id = "base_link"
-        speed.vector.x = z_v
-        bag.add("cart/speed", speed, t_v)
+            add_reading(bag, "cart/speed", 0, z_v)
+        add_reading(bag, "cart/position", k * PERIOD_NS + phase_p * PERIOD_NS // 10, z_p)
+        add_reading(bag, "cart/speed", k * PERIOD_NS + phase_v * PERIOD_NS // 10, z_v)
     bag.write(path, compression="none")
 
 
