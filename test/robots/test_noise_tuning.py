@@ -29,6 +29,7 @@ sys.path.insert(0, os.path.join(REPO, "tools", "sim"))
 sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
 sys.dont_write_bytecode = True
 import cart_sim  # noqa: E402
+import evaluate  # noqa: E402  (the tools' parser of the replay summary)
 import pioneer_nodes  # noqa: E402  (devel-space lookup)
 
 TRUE_Q = (cart_sim.Q_POSITION, cart_sim.Q_SPEED)
@@ -156,6 +157,18 @@ class NoiseTuningTest(unittest.TestCase):
         self.assertEqual(before["all inputs"][1], "inconsistent", header.stdout)
         # expected means: 2 per period for both inputs, 1 for each alone
         self.assertAlmostEqual(got["all inputs"][0], 2.0, delta=0.15)
+
+    def test_the_nis_lines_leave_the_summary_parseable(self):
+        # tools/eval parse the summary line (the one with " estimates, ") and its timing; the
+        # NIS lines come after the per-input counter lines and must not be taken for it
+        proc = self.run_node("sf_test_tune_cart_kf", "--replay", self.bag)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        lines = proc.stdout.splitlines()
+        self.assertEqual(evaluate.summary_line(proc.stdout), lines[0])
+        self.assertIsNotNone(evaluate.parse_summary_timing(lines[0]))
+        self.assertTrue(lines[1].startswith("sf_test_tune_cart_kf: input 0: 3000 received"))
+        self.assertTrue(lines[3].startswith("sf_test_tune_cart_kf: NIS all inputs: mean "))
+        self.assertEqual(len(lines), 6)
 
     def test_yaml_changes_the_replay_and_equals_the_same_values_given_otherwise(self):
         params, path = self.check_recovers_the_simulators_noise("sf_test_tune_cart_kf")
