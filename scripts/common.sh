@@ -34,6 +34,7 @@ SF_DEB_PACKAGES=(
   ros-std-msgs ros-geometry-msgs ros-nav-msgs ros-sensor-msgs ros-diagnostic-msgs
   libdiagnostic-updater-dev libtopic-tools-dev ros-message-generation ros-message-runtime
   libeigen3-dev libboost-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libnlopt-dev libnlopt-cxx-dev
   python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
   python3-diagnostic-msgs tf2-tools
   cmake g++

@@ -106,6 +106,29 @@ TEST(MeasurementPrediction, KalmanFilterTwoDimensionsByHand) {
   EXPECT_LT(sftest::maxAbsDiff(kf.covariance(), p.covariance), 1e-15);
 }
 
+// The likelihood terms of the same prediction (S = [3 0.1; 0.1 3]): log det S = log 8.99 with
+// both entries, log 3 with the first alone, log 2.5 with the second and its own variance; the
+// distance is squaredMahalanobisDistance's.
+TEST(MeasurementPrediction, InnovationLikelihoodByHand) {
+  KalmanFilter<2, 2, 0> kf = trainKalmanFilter();
+  MeasurementPrediction<2> p;
+  kf.predictMeasurement(p);
+  Measurement<2> z = Measurement<2>::complete(Vector<2>(1.5, 1.0));
+  estimation::InnovationLikelihood l = estimation::innovationLikelihood(p, z);
+  EXPECT_NEAR(l.squaredDistance, 3.33 / 8.99, 1e-15);
+  EXPECT_NEAR(l.logDeterminant, std::log(8.99), 1e-14);
+  z.available << true, false;
+  l = estimation::innovationLikelihood(p, z);
+  EXPECT_NEAR(l.squaredDistance, 0.03, 1e-15);
+  EXPECT_NEAR(l.logDeterminant, std::log(3.0), 1e-14);
+  z.available << false, true;
+  z.varianceGiven << false, true;
+  z.variance << 0.0, 0.5;
+  l = estimation::innovationLikelihood(p, z);
+  EXPECT_NEAR(l.logDeterminant, std::log(2.5), 1e-14);
+  EXPECT_EQ(estimation::innovationLikelihood(p, Measurement<2>::missing()).logDeterminant, 0.0);
+}
+
 TEST(MeasurementPrediction, RefusesAnInnovationCovarianceThatIsNotPositiveDefinite) {
   MeasurementPrediction<2> p;
   p.covariance << 1, 2, 2, 1;  // eigenvalues 3 and -1

@@ -1,6 +1,7 @@
 // The prebuilt main of every fusion node (runFusionNode, node_definition.hpp): the online
 // ROS node, or with --replay the offline bag replay. Compiled once into the node library;
 // the translation unit of each configuration header only builds its NodeDefinition.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -26,8 +27,12 @@
 #include "sf_filter/replay/bag_replay.hpp"
 #include "sf_filter/replay/contained_run.hpp"
 #include "sf_filter/replay/library_messages.hpp"
+#include "sf_filter/replay/nis_report.hpp"
 #include "sf_filter/replay/replay_frame_aligner.hpp"
 #include "sf_filter/replay/yaml_parameters.hpp"
+#include "sf_filter/tuning/event_log.hpp"
+#include "sf_filter/tuning/noise_tuning.hpp"
+#include "sf_filter/tuning/tuned_parameters_file.hpp"
 
 #include <geometry_msgs/TransformStamped.h>
 #include <tf2/LinearMath/Quaternion.h>
@@ -109,6 +114,21 @@ long inputIndex(const std::string& text) {
   return index;
 }
 
+/// The number of option `option`, all of `text`; a clear error otherwise.
+double numberOption(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::logic_error&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value)) {
+    throw std::invalid_argument(option + " '" + text + "' is not a finite number");
+  }
+  return value;
+}
+
 /// The replay summary's line per input: what it received, used, dropped (by reason), gated.
 void printInputCounters(const std::string& name, const sf_filter::FusionEngine& core) {
   for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
@@ -117,6 +137,72 @@ void printInputCounters(const std::string& name, const sf_filter::FusionEngine& 
               << " used, dropped: " << sf_filter::dropReasons(c) << ", " << c.gated << " gated, "
               << c.timedOutPeriods << " periods timed out" << std::endl;
   }
+}
+
+/// The replay's NIS lines: all inputs together, then each input (nis_report.hpp).
+void printNis(const std::string& name, const sf_filter::FusionEngine& core,
+              const std::vector<std::string>& inputs) {
+  const sf_filter::InnovationRecord& r = core.innovations();
+  sf_filter::printNisLine(std::cout, name, "all inputs", r.overall());
+  for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
+    sf_filter::printNisLine(
+        std::cout, name,
+        "input " + std::to_string(i) + " (" + inputs.at(static_cast<std::size_t>(i)) + ")",
+        r.input(static_cast<std::size_t>(i)));
+  }
+  std::cout << std::flush;
+}
+
+/// --tune after the first replay of the bag (recorded in `events`): the prediction-error
+/// identification of the free entries, its report, the tuned replay's NIS and the YAML file.
+int tuneFromEvents(const std::string& name, const NodeDefinition& def,
+                   const sf_filter::EventLog& events, const sf_filter::EngineMaker& makeEngine,
+                   const sf_filter::FilterParameters& start,
+                   const std::vector<sf_filter::FreeEntry>& free,
+                   const sf_filter::TuningOptions& tuning, const std::string& out,
+                   const std::string& baseParams, double periodMs, int argc, char** argv) {
+  const auto begin = std::chrono::steady_clock::now();
+  const sf_filter::TuningResult r = sf_filter::tuneNoise(events, makeEngine, start, free, tuning);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  std::printf(
+      "%s: --tune: %d replays of %zu recorded events in %.3g s (%.3g ms each); stopped: "
+      "%s\n",
+      name.c_str(), r.evaluations, events.size(), wall, 1e3 * wall / std::max(1, r.evaluations),
+      r.stop.c_str());
+  std::printf("%s: --tune: prediction-error cost sum(log det S + NIS): start %.10g, tuned %.10g\n",
+              name.c_str(), r.startCost, r.cost);
+  auto entry = [](const sf_filter::FilterParameters& p, const sf_filter::FreeEntry& e) {
+    const Eigen::MatrixXd& m = e.matrix == "Q"   ? p.process_noise_covariance
+                               : e.matrix == "R" ? p.measurement_noise_covariance
+                                                 : p.initial_error_covariance;
+    return m(e.index, e.index);
+  };
+  for (std::size_t k = 0; k < free.size(); ++k) {
+    std::printf("%s: --tune: %-6s start %-12.6g tuned %-12.6g (x %.4g)%s\n", name.c_str(),
+                free[k].name().c_str(), entry(start, free[k]), entry(r.tuned, free[k]),
+                r.factors[k],
+                r.atBound[k] ? "  at the bound of --tune-range: not identified by this bag" : "");
+  }
+  std::unique_ptr<sf_filter::FusionEngine> tuned = makeEngine(r.tuned);
+  auto ignore = [](const sf_filter::EstimateRef&) {};
+  events.replay(*tuned, ignore);
+  printNis(name + " (tuned)", *tuned, def.description.inputs);
+  if (!out.empty()) {
+    std::string command;
+    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+    char costs[160];
+    std::snprintf(costs, sizeof costs,
+                  "sum(log det S + NIS): start %.10g, tuned %.10g (%d replays)", r.startCost,
+                  r.cost, r.evaluations);
+    sf_filter::writeTunedParameters(
+        out,
+        {"Noise identified by the prediction-error method (doc/tuning.md):", command, costs,
+         "Load it into the node (rosparam load, filter.launch params:=) or the replay (--params)."},
+        r.tuned, free, periodMs / 1000.0, baseParams);
+    std::printf("%s: --tune: wrote %s\n", name.c_str(), out.c_str());
+  }
+  return EXIT_SUCCESS;
 }
 
 /// Offline replay: `<node> --replay in.bag [--csv out.csv] [--bag out.bag] [options]`.
@@ -132,6 +218,10 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       "       [--align-by-arrival INPUT]... [--max-lag S] [--allow-missing-topics]\n"
       "       [--params FILE.yaml] [FROM:=TO]...\n"
       "       [--static-transform X Y Z YAW PITCH ROLL PARENT CHILD]...\n"
+      "   or: " +
+      program +
+      " --tune INPUT.bag [--free LIST] [--out TUNED.yaml]\n"
+      "       [--tune-range F] [--max-evaluations N] [the replay's options but --csv, --bag]\n"
       "Replays the bag through this node's filter without a ROS master, in recorded-time\n"
       "order, and writes the estimates. Without --csv and --bag only a summary is printed.\n"
       "--frame-id, --child-frame-id: frames of the output bag's odometry (default odom,\n"
@@ -148,7 +238,13 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       "--static-transform: a transform as static_transform_publisher takes it (metres,\n"
       "radians), for a bag without /tf_static.\n"
       "POLICY: AVERAGE, LAST, SAMPLED, 'HOLD LAGRANGE|BEZIER|TAYLOR ORDER [VARIANCE]' or\n"
-      "'FILL OMEGA N [VARIANCE]'; THRESHOLD 0 removes a gate (doc/alignment_policies.md).";
+      "'FILL OMEGA N [VARIANCE]'; THRESHOLD 0 removes a gate (doc/alignment_policies.md).\n"
+      "--tune: identifies the free noise entries from the bag by the prediction-error method\n"
+      "(minimum of sum(log det S + NIS) over in-memory replays; KF, EKF, UKF) and writes them\n"
+      "with --out as a YAML file of private parameters for the node and --params\n"
+      "(doc/tuning.md). LIST: comma-separated Q, R, P0 (their non-zero diagonal entries) or\n"
+      "Q.i, R.i, P0.i; default Q,R. --tune-range F: each variance within a factor F of its\n"
+      "start (default 1000); --max-evaluations N: replays at most (default 2000).";
   sf_filter::ReplayOptions options;
   options.nodeName = program.substr(program.find_last_of('/') + 1);
   double periodMs = def.estimationPeriodMs, scaleQ = 1.0, scaleR = 1.0;
@@ -159,23 +255,32 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   std::vector<sf_filter::InputOptions> inputs = def.inputOptions;
   const sf_filter::InputCapabilities& can = def.capabilities;
   std::optional<sf_filter::YamlParameterSource> params;
+  std::string paramsPath;
   std::optional<double> periodOverrideMs;
   std::optional<sf_filter::FilterParameters> fileParameters;
   double maxFutureStampMs = sf_filter::kDefaultMaxFutureStampMs;
+  int nisWindow = sf_filter::FaultSettings{}.nisWindow;  // ~nis_window, as the node's
   std::map<std::string, std::string> remaps;
   std::vector<geometry_msgs::TransformStamped> staticTransforms;
+  bool tune = false;
+  std::string freeList = "Q,R", tunedPath;
+  sf_filter::TuningOptions tuning;
+  std::vector<sf_filter::FreeEntry> freeEntries;
   try {
     // --params first: the options override the file whatever their order.
     for (int i = 1; i + 1 < argc; ++i) {
       if (std::string(argv[i]) != "--params") continue;
       if (params) throw std::invalid_argument("--params given twice");
       params.emplace(argv[i + 1]);
+      paramsPath = argv[i + 1];
       for (const std::string& line : sf_filter::unknownParameterWarnings(*params)) {
         std::cerr << program << ": warning: --params " << argv[i + 1] << ": " << line << std::endl;
       }
       periodMs = sf_filter::loadPeriodMs(*params, periodMs);
       sf_filter::loadInputParameters(*params, inputs, lagMs, can);
-      maxFutureStampMs = sf_filter::loadFaultParameters(*params, inputs, can).maxFutureStampMs;
+      const sf_filter::FaultSettings faults = sf_filter::loadFaultParameters(*params, inputs, can);
+      maxFutureStampMs = faults.maxFutureStampMs;
+      nisWindow = faults.nisWindow;
       const sf_filter::OutputSettings out = sf_filter::loadOutputParameters(*params);
       options.frameId = out.frameId;
       options.childFrameId = out.childFrameId;
@@ -197,6 +302,21 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
         return EXIT_SUCCESS;
       } else if (arg == "--replay") {
         options.inputBag = value();
+      } else if (arg == "--tune") {
+        options.inputBag = value();
+        tune = true;
+      } else if (arg == "--free") {
+        freeList = value();
+      } else if (arg == "--out") {
+        tunedPath = value();
+      } else if (arg == "--tune-range") {
+        tuning.range = numberOption(arg, value());
+      } else if (arg == "--max-evaluations") {
+        const double n = numberOption(arg, value());
+        if (n != std::floor(n) || n < 1 || n > 1e9) {
+          throw std::invalid_argument("--max-evaluations must be a whole number from 1 to 1e9");
+        }
+        tuning.maxEvaluations = static_cast<int>(n);
       } else if (arg == "--csv") {
         options.csvPath = value();
       } else if (arg == "--bag") {
@@ -296,6 +416,23 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
           *params, [&](double) { return def.defaultParameters(periodMs); },
           periodOverrideMs.value_or(periodMs));
     }
+    if (tune) {
+      const std::string refusal = sf_filter::tuningRefusal(def.description.method);
+      if (!refusal.empty()) throw std::invalid_argument("--tune: " + refusal);
+      if (!options.csvPath.empty() || !options.outputBag.empty()) {
+        throw std::invalid_argument(
+            "--tune writes no estimates (--csv, --bag): replay with --params TUNED.yaml for them");
+      }
+      if (!(tuning.range > 1.0) || !std::isfinite(tuning.range)) {
+        throw std::invalid_argument("--tune-range must be a finite factor above 1");
+      }
+      if (tuning.maxEvaluations < 1) throw std::invalid_argument("--max-evaluations must be >= 1");
+      sf_filter::FilterParameters start =
+          fileParameters ? *fileParameters : def.defaultParameters(periodMs);
+      freeEntries = sf_filter::parseFreeEntries(freeList, start);
+    } else if (freeList != "Q,R" || !tunedPath.empty()) {
+      throw std::invalid_argument("--free and --out belong to --tune");
+    }
     if (!staticTransforms.empty() && !def.frameAlignment) {
       throw std::invalid_argument("--static-transform: this node has no FRAME_ALIGNED_INPUTS");
     }
@@ -329,9 +466,31 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       std::optional<sf_filter::ReplayFrameAligner> aligner;
       if (def.frameAlignment) aligner.emplace(baseFrame, def.description.inputs);
       std::optional<ReplayAlignerRotation> rotation;
-      sf_filter::BagReplay replay(
-          def.makeEngine(parameters, coreOptions(periodMs, inputs, lagMs, maxFutureStampMs)),
-          describe(def, baseFrame), options);
+      sf_filter::FusionCoreOptions engineOptions =
+          coreOptions(periodMs, inputs, lagMs, maxFutureStampMs);
+      engineOptions.nisWindow = static_cast<std::size_t>(nisWindow);
+      sf_filter::EventLog events;
+      if (tune) {
+        // The cost sums over the values that reach the filter: a gate would let the optimiser
+        // lower it by gating values away, so the identification runs without gates; the NIS
+        // needs its window on.
+        std::size_t gates = 0;
+        for (sf_filter::InputOptions& in : engineOptions.inputs) {
+          gates += in.gated() ? 1 : 0;
+          in.gateThreshold = std::numeric_limits<double>::infinity();
+        }
+        if (gates > 0) {
+          std::cout << options.nodeName << ": --tune: the Mahalanobis gates of " << gates
+                    << " inputs are off while identifying (a gate would remove values from "
+                       "the likelihood); the YAML file leaves them as configured"
+                    << std::endl;
+        }
+        if (engineOptions.nisWindow == 0)
+          engineOptions.nisWindow = sf_filter::FaultSettings{}.nisWindow;
+      }
+      sf_filter::BagReplay replay(def.makeEngine(parameters, engineOptions),
+                                  describe(def, baseFrame), options);
+      if (tune) replay.recordEvents(&events);
       if (aligner) {
         rotation.emplace(*aligner);
         replay.setRotation(&*rotation);
@@ -369,12 +528,20 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                 << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
                 << " us per estimation step, " << wall << " s in all" << std::endl;
       printInputCounters(options.nodeName, replay.core());
+      printNis(options.nodeName, replay.core(), def.description.inputs);
       if (aligner) {
         std::cout << options.nodeName << ": " << aligner->transforms()
                   << " transforms read from the bag's /tf_static and /tf ("
                   << aligner->rejectedTransforms() << " refused by tf2), "
                   << aligner->droppedTotal() << " values dropped: not rotatable into '"
                   << aligner->baseFrame() << "'" << std::endl;
+      }
+      if (tune) {
+        const auto maker = [&](const sf_filter::FilterParameters& p) {
+          return def.makeEngine(p, engineOptions);
+        };
+        return tuneFromEvents(options.nodeName, def, events, maker, parameters, freeEntries, tuning,
+                              tunedPath, paramsPath, periodMs, argc, argv);
       }
       if (strict && (failures > 0 || resets > 0 || s.dropped > 0 || unrotated > 0)) {
         std::cerr << program << ": --strict: " << failures << " failed steps, " << resets
@@ -448,7 +615,8 @@ int nodeMain(int argc, char** argv, const NodeDefinition& def) {
 
 int sf_filter::runFusionNode(int argc, char** argv, const NodeDefinition& def) {
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--replay" || std::string(argv[i]) == "--help") {
+    if (std::string(argv[i]) == "--replay" || std::string(argv[i]) == "--tune" ||
+        std::string(argv[i]) == "--help") {
       return replayMain(argc, argv, def);
     }
   }

@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+#include "sf_filter/core/innovation_record.hpp"
 #include "sf_filter/core/nis_window.hpp"
 #include "train_core.hpp"
 
@@ -502,6 +503,57 @@ TEST(FusionCoreNis, TheNisOfAPeriodIsTheInnovationsMahalanobisDistance) {
   // A period without a measured value adds nothing.
   core.advanceTo(0.2, out);
   EXPECT_EQ(core.nis().size(), 1u);
+  // The run's record: the same NIS, the prediction-error cost log det S + NIS, and each
+  // input's own y_i^2 / S_ii with one degree of freedom.
+  const sf_filter::InnovationRecord& r = core.innovations();
+  EXPECT_EQ(r.overall().periods(), 1u);
+  EXPECT_NEAR(r.overall().mean(), nis, 1e-12);
+  EXPECT_NEAR(r.predictionErrorCost(), std::log(det) + nis, 1e-12);
+  EXPECT_EQ(r.input(0).degreesOfFreedom(), 1);
+  EXPECT_NEAR(r.input(0).mean(), 2.0 * 2.0 / s00, 1e-12);
+  EXPECT_NEAR(r.input(1).mean(), 1.0 * 1.0 / s11, 1e-12);
+}
+
+TEST(NisSeries, JudgesEveryPeriodOfAFullWindowAndKeepsTheRunsTotals) {
+  sf_filter::NisSeries series(50);
+  for (int k = 0; k < 120; ++k) series.add(k < 70 ? 100.0 : 2.0, 2);
+  // Judged from the 50th period on (71 periods); inconsistent while a value 100 is in the
+  // window (periods 50 .. 119 hold one: mean >= (49 * 2 + 100) / 50 = 3.96 > 2.59), so only the
+  // last, with 50 values of 2, is consistent.
+  EXPECT_EQ(series.judgedPeriods(), 71u);
+  EXPECT_EQ(series.inconsistentPeriods(), 70u);
+  EXPECT_EQ(series.periods(), 120u);
+  EXPECT_EQ(series.degreesOfFreedom(), 240);
+  EXPECT_NEAR(series.mean(), (70 * 100.0 + 50 * 2.0) / 120, 1e-12);
+  // The run's bounds: chi2^-1(0.025; 240) / 120 = 198.984 / 120, chi2^-1(0.975; 240) =
+  // 284.802 (tables; Wilson-Hilferty gives the same to 0.01).
+  EXPECT_NEAR(series.bounds().lower, 198.984 / 120, 1e-3);
+  EXPECT_NEAR(series.bounds().upper, 284.802 / 120, 1e-3);
+  series.restartWindow();
+  EXPECT_EQ(series.window().size(), 0u);
+  EXPECT_EQ(series.periods(), 120u);
+}
+
+TEST(NisSeries, JudgesAsTheDiagnosticsWindowWhenTheDegreesOfFreedomVary) {
+  // A sensor slower than the period: 2 or 3 measured entries per period, the window's
+  // degrees of freedom change from period to period. Every period's verdict must be the
+  // diagnostics' (NisWindow::inconsistent), whatever the cached bounds.
+  sf_filter::NisSeries series(20, 3);
+  sf_filter::NisWindow reference(20);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> nis(0.0, 6.0);
+  std::uint64_t inconsistent = 0;
+  for (int k = 0; k < 500; ++k) {
+    const int dof = random() % 3 == 0 ? 3 : 2;
+    const double e = nis(random);
+    series.add(e, dof);
+    reference.add(e, dof);
+    inconsistent += reference.inconsistent() ? 1 : 0;
+  }
+  EXPECT_EQ(series.judgedPeriods(), 481u);
+  EXPECT_EQ(series.inconsistentPeriods(), inconsistent);
+  EXPECT_GT(inconsistent, 0u);
+  EXPECT_LT(inconsistent, 481u);
 }
 
 TEST(FusionCoreNis, TheCheckLeavesTheEstimatesUnchanged) {

@@ -9,6 +9,7 @@
 // which leaves the filter unchanged. The averaging methods have no model and do not.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -59,22 +60,43 @@ struct MeasurementPrediction {
   }
 };
 
-/// y^T S^-1 y with y = z - z^ (wrapped for angles) over the present entries of z (the missing ones
-/// take no part): chi-square distributed with as many degrees of freedom as entries are present, if
-/// the filter's model is right. Throws NumericalError when S is not positive definite.
+/// The innovation y = z - z^ (wrapped for angles) of the present entries of z judged by its
+/// covariance S (the missing entries take no part): its squared Mahalanobis distance
+/// y^T S^-1 y, the normalised innovation squared, chi-square distributed with as many degrees
+/// of freedom as entries are present if the filter's model is right; and log det S. Both come
+/// from one Cholesky factor of S; together they are the period's term of the innovations'
+/// negative log-likelihood, -2 log p(z) = log det S + y^T S^-1 y + m log(2 pi), which the
+/// prediction-error method minimises to identify Q and R.
+struct InnovationLikelihood {
+  double squaredDistance = 0.0;  ///< y^T S^-1 y
+  double logDeterminant = 0.0;   ///< log det S over the present entries
+};
+
+/// Throws NumericalError when S is not positive definite.
 template <int M>
-double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction,
-                                  const Measurement<M>& z) {
+InnovationLikelihood innovationLikelihood(const MeasurementPrediction<M>& prediction,
+                                          const Measurement<M>& z) {
   const Index m = prediction.size();
   Matrix<M, M> S(m, m);
-  prediction.innovationCovariance(z, S);
+  prediction.innovationCovariance(z, S);  // missing entries: identity, log det 0
   Vector<M> y(m);
   for (Index i = 0; i < m; ++i) y(i) = z.available(i) ? prediction.innovation(i, z.value(i)) : 0.0;
   const Eigen::LLT<Matrix<M, M>> factor(S);
   if (factor.info() != Eigen::Success) {
     throw NumericalError("innovation covariance is not positive definite; no Mahalanobis distance");
   }
-  return factor.matrixL().solve(y).squaredNorm();
+  InnovationLikelihood result;
+  result.squaredDistance = factor.matrixL().solve(y).squaredNorm();
+  for (Index i = 0; i < m; ++i) result.logDeterminant += 2.0 * std::log(factor.matrixLLT()(i, i));
+  return result;
+}
+
+/// y^T S^-1 y alone (innovationLikelihood). Throws NumericalError when S is not positive
+/// definite.
+template <int M>
+double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction,
+                                  const Measurement<M>& z) {
+  return innovationLikelihood(prediction, z).squaredDistance;
 }
 
 /// (value - z^_i)^2 / S_ii for entry i alone, with S_ii = covariance(i, i) + `variance`
@@ -92,21 +114,21 @@ double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction, In
   return y * y / s;
 }
 
-// The NIS of a whole measurement vector is compiled once in the library for the measurement
-// sizes 1..6 (src/mahalanobis_distances.cpp); other sizes are instantiated where used.
+// The likelihood terms of a whole measurement vector are compiled once in the library for the
+// measurement sizes 1..6 (src/mahalanobis_distances.cpp); other sizes are instantiated where used.
 #ifndef SF_ESTIMATION_INSTANTIATING_MAHALANOBIS
-extern template double squaredMahalanobisDistance<1>(const MeasurementPrediction<1>&,
-                                                     const Measurement<1>&);
-extern template double squaredMahalanobisDistance<2>(const MeasurementPrediction<2>&,
-                                                     const Measurement<2>&);
-extern template double squaredMahalanobisDistance<3>(const MeasurementPrediction<3>&,
-                                                     const Measurement<3>&);
-extern template double squaredMahalanobisDistance<4>(const MeasurementPrediction<4>&,
-                                                     const Measurement<4>&);
-extern template double squaredMahalanobisDistance<5>(const MeasurementPrediction<5>&,
-                                                     const Measurement<5>&);
-extern template double squaredMahalanobisDistance<6>(const MeasurementPrediction<6>&,
-                                                     const Measurement<6>&);
+extern template InnovationLikelihood innovationLikelihood<1>(const MeasurementPrediction<1>&,
+                                                             const Measurement<1>&);
+extern template InnovationLikelihood innovationLikelihood<2>(const MeasurementPrediction<2>&,
+                                                             const Measurement<2>&);
+extern template InnovationLikelihood innovationLikelihood<3>(const MeasurementPrediction<3>&,
+                                                             const Measurement<3>&);
+extern template InnovationLikelihood innovationLikelihood<4>(const MeasurementPrediction<4>&,
+                                                             const Measurement<4>&);
+extern template InnovationLikelihood innovationLikelihood<5>(const MeasurementPrediction<5>&,
+                                                             const Measurement<5>&);
+extern template InnovationLikelihood innovationLikelihood<6>(const MeasurementPrediction<6>&,
+                                                             const Measurement<6>&);
 #endif
 
 /// True if Filter has predictMeasurement(MeasurementPrediction<MeasurementSize>&) const.

@@ -73,7 +73,7 @@ FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, I
       counters_(static_cast<std::size_t>(inputs)),
       entries_(static_cast<std::size_t>(inputs)),
       control_(Eigen::VectorXd::Zero(controls)),
-      nis_(canPredict ? options_.nisWindow : 0) {
+      innovations_(canPredict ? options_.nisWindow : 0, static_cast<std::size_t>(inputs)) {
   for (Index i = 0; i < inputs; ++i) ring_->aligners.emplace_back(inputOptions(i).alignment);
   // A power of two, so that the slot of a period is a bit mask away.
   const auto needed = static_cast<std::size_t>(
@@ -286,7 +286,7 @@ void FusionCoreBase::clearInputs() {
     c.lastAccepted = std::numeric_limits<double>::quiet_NaN();
   }
   control_.setZero();
-  nis_.clear();
+  innovations_.restartWindows();
   present_ = substituted_ = 0;
   consecutiveFailures_ = 0;
 }

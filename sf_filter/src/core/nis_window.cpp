@@ -4,11 +4,14 @@
 
 namespace sf_filter {
 
+NisBounds chiSquareMeanBounds(long dof, double periods, double alpha) {
+  const boost::math::chi_squared chi2(static_cast<double>(dof));
+  return {boost::math::quantile(chi2, alpha / 2.0) / periods,
+          boost::math::quantile(chi2, 1.0 - alpha / 2.0) / periods};
+}
+
 NisBounds NisWindow::bounds(double alpha) const {
-  const boost::math::chi_squared chi2(static_cast<double>(dofSum_));
-  const double k = static_cast<double>(size_);
-  return {boost::math::quantile(chi2, alpha / 2.0) / k,
-          boost::math::quantile(chi2, 1.0 - alpha / 2.0) / k};
+  return chiSquareMeanBounds(dofSum_, static_cast<double>(size_), alpha);
 }
 
 }  // namespace sf_filter

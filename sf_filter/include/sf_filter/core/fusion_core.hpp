@@ -261,16 +261,26 @@ class FusionCore : public FusionCoreBase {
     }
   }
 
-  /// The NIS of the period's measured (not substituted) entries, into the window. Throws
-  /// NumericalError when the innovation covariance is not positive definite.
+  /// The NIS and log det S of the period's measured (not substituted) entries, and each
+  /// measured input's own NIS, into the innovation record. Throws NumericalError when the
+  /// innovation covariance is not positive definite.
   void addNis(const estimation::MeasurementPrediction<M>& prediction) {
     for (Index i = 0; i < filter_.measurementSize(); ++i) {
       measured_.value(i) = measurement_.value(i);
       measured_.varianceGiven(i) = measurement_.varianceGiven(i);
       measured_.variance(i) = measurement_.variance(i);
     }
-    FusionCoreBase::addNis(estimation::squaredMahalanobisDistance(prediction, measured_),
-                           static_cast<int>(measured_.availableCount()));
+    const estimation::InnovationLikelihood l =
+        estimation::innovationLikelihood(prediction, measured_);
+    FusionCoreBase::addNis(l.squaredDistance, static_cast<int>(measured_.availableCount()),
+                           l.logDeterminant);
+    for (Index i = 0; i < filter_.measurementSize(); ++i) {
+      if (!measured_.available(i)) continue;
+      addInputNis(i, estimation::squaredMahalanobisDistance(
+                         prediction, i, measured_.value(i),
+                         measured_.varianceGiven(i) ? std::optional<double>(measured_.variance(i))
+                                                    : std::nullopt));
+    }
   }
 
   void fillEstimate(double time, bool failed = false, bool reset = false) {

@@ -18,6 +18,7 @@
 
 #include "sf_filter/core/fusion_core_options.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/core/innovation_record.hpp"
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
 #include "sf_filter/core/nis_window.hpp"
@@ -60,7 +61,10 @@ class FusionCoreBase {
   double startTime() const { return startTime_; }
   /// The NIS of the recent periods (empty unless Options::nisWindow > 0 and the filter
   /// predicts its measurement).
-  const NisWindow& nis() const { return nis_; }
+  const NisWindow& nis() const { return innovations_.overall().window(); }
+  /// The NIS of the run, overall and per input, and the prediction-error cost (recorded under
+  /// the same conditions as nis()).
+  const InnovationRecord& innovations() const { return innovations_; }
   /// Periods whose NIS could not be computed (innovation covariance not positive definite).
   std::uint64_t nisFailures() const { return nisFailures_; }
   std::uint64_t clockResets() const { return clockResets_; }
@@ -149,11 +153,18 @@ class FusionCoreBase {
   /// Counts a rejected step; true when it is the maxConsecutiveFailures-th in a row, which
   /// restarts the filter (counted as a filter reset).
   bool recordFailure(const std::string& what);
-  void addNis(double nis, int degreesOfFreedom) { nis_.add(nis, degreesOfFreedom); }
+  /// The period's innovation over its measured entries (InnovationRecord::addPeriod).
+  void addNis(double nis, int degreesOfFreedom, double logDetS) {
+    innovations_.addPeriod(nis, degreesOfFreedom, logDetS);
+  }
+  /// Input `input`'s own NIS in the period (InnovationRecord::addInput).
+  void addInputNis(Index input, double nis) {
+    innovations_.addInput(static_cast<std::size_t>(input), nis);
+  }
   void countNisFailure() { ++nisFailures_; }
-  bool nisWanted() const { return nis_.enabled() && present_ > 0; }
+  bool nisWanted() const { return innovations_.enabled() && present_ > 0; }
 
-  /// Discards pending values, the alignment histories, the controls and the NIS window.
+  /// Discards pending values, the alignment histories, the controls and the NIS windows.
   void clearInputs();
   /// The options as checked.
   const FusionCoreOptions& options() const { return options_; }
@@ -184,7 +195,7 @@ class FusionCoreBase {
   std::vector<InputCounters> counters_;
   std::vector<PeriodEntry> entries_;
   Eigen::VectorXd control_;  ///< the controls in force (of the last estimated period)
-  NisWindow nis_;
+  InnovationRecord innovations_;
   Index present_ = 0, substituted_ = 0;
   double clock_ = 0.0;      ///< last reading passed to readClock
   double startTime_ = 0.0;  ///< clock reading the schedule (re)started at

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <sf_estimation/numerical_repairs.hpp>
 
+#include "sf_filter/core/innovation_record.hpp"
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
 #include "sf_filter/core/nis_window.hpp"
@@ -76,6 +77,8 @@ class FusionEngine {
   virtual double clock() const = 0;
   virtual double startTime() const = 0;
   virtual const NisWindow& nis() const = 0;
+  /// The NIS of the run, overall and per input, and the prediction-error cost.
+  virtual const InnovationRecord& innovations() const = 0;
   virtual std::uint64_t nisFailures() const = 0;
   virtual std::uint64_t clockResets() const = 0;
   virtual std::uint64_t estimationFailures() const = 0;

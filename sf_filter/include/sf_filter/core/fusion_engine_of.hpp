@@ -78,6 +78,7 @@ class FusionEngineOf final : public FusionEngine {
   double clock() const override { return core_.clock(); }
   double startTime() const override { return core_.startTime(); }
   const NisWindow& nis() const override { return core_.nis(); }
+  const InnovationRecord& innovations() const override { return core_.innovations(); }
   std::uint64_t nisFailures() const override { return core_.nisFailures(); }
   std::uint64_t clockResets() const override { return core_.clockResets(); }
   std::uint64_t estimationFailures() const override { return core_.estimationFailures(); }

@@ -18,13 +18,16 @@
 #include <cstddef>
 #include <vector>
 
-
 namespace sf_filter {
 
 struct NisBounds {
   double lower = 0.0;
   double upper = 0.0;
 };
+
+/// The two-sided bounds at level 1 - alpha on the mean over `periods` periods of NIS values
+/// whose sum has `dof` degrees of freedom: the chi-square quantiles divided by `periods`.
+NisBounds chiSquareMeanBounds(long dof, double periods, double alpha = 0.05);
 
 class NisWindow {
  public:

@@ -34,9 +34,11 @@
 
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/definition/message_sink.hpp"
-#include "sf_filter/node/estimate_messages.hpp"
 #include "sf_filter/definition/node_description.hpp"
+#include "sf_filter/node/estimate_messages.hpp"
 #include "sf_filter/replay/atomic_output.hpp"
+#include "sf_filter/replay/replay_clock.hpp"
+#include "sf_filter/tuning/event_log.hpp"
 
 namespace sf_filter {
 
@@ -56,7 +58,7 @@ struct ReplaySummary {
   std::uint64_t messages = 0;
   std::uint64_t estimates = 0;
   std::uint64_t dropped = 0;
-  std::uint64_t skippedGaps = 0;  ///< gaps longer than kMaxGapPeriods, skipped as online
+  std::uint64_t skippedGaps = 0;  ///< gaps longer than ReplayClock::kMaxGapPeriods, skipped
   double estimatorSeconds = 0.0;
 };
 
@@ -82,6 +84,10 @@ class BagReplay final : public MessageSink {
         description_(std::move(description)),
         options_(std::move(options)) {}
 
+  /// Records what the bag's messages give the core into `events` (tuning/event_log.hpp), so
+  /// that it can be replayed from memory without the bag.
+  void recordEvents(EventLog* events) { events_ = events; }
+
   /// Registers the reader of one topic, as the online node subscribes it.
   void subscribe(const TopicReader& reader) {
     const std::string name = absolute(reader.topic);
@@ -91,11 +97,13 @@ class BagReplay final : public MessageSink {
 
   void measurement(Index input, double now, double value, std::optional<double> variance,
                    double stamp) override {
+    if (events_) events_->measurement(input, now, value, variance, stamp);
     if (core_.addMeasurement(input, now, value, variance, stamp) != Rejection::None) {
       ++summary_.dropped;
     }
   }
   void control(Index index, double value) override {
+    if (events_) events_->control(index, value);
     if (core_.addControl(index, value) != Rejection::None) ++summary_.dropped;
   }
   std::optional<double> rotated(Index input, const std::string& frame, std::uint32_t sec,
@@ -158,7 +166,8 @@ class BagReplay final : public MessageSink {
           continue;
         }
         const double now = m.getTime().toSec();
-        advanceClock(now, write);
+        if (events_) events_->clock(now);
+        clock_.advance(core_, now, write);
         read(readers_.at(absolute(m.getTopic())), m, now);
         ++summary_.messages;
       }
@@ -171,6 +180,7 @@ class BagReplay final : public MessageSink {
     csvFile.commit();
     bagFile.commit();
     summary_.estimatorSeconds = core_.estimatorSeconds();
+    summary_.skippedGaps = clock_.skippedGaps();
     return summary_;
   }
 
@@ -184,35 +194,6 @@ class BagReplay final : public MessageSink {
     m.write(stream);
     reader.read(buffer_.data(), m.size(), *this, now);
   }
-
-  /// Advances the core's clock to the message time `now` as the online node's ros::Timer
-  /// would: the timer estimates every period while rosbag play's clock runs through a gap
-  /// between messages, so a gap longer than Options::maxCatchUpPeriods periods (which the
-  /// core would skip with one estimate) is crossed in steps of one period less than that,
-  /// each estimating every period it ends. Shorter gaps take one step, as before. A gap of
-  /// more than kMaxGapPeriods periods (a recording paused or two recordings in one bag) is
-  /// crossed as the online node crosses a clock jump: one estimate, the missed periods
-  /// skipped (counted in the summary), never millions of empty periods.
-  template <class Write>
-  void advanceClock(double now, Write& write) {
-    if (clockStarted_ && now - core_.clock() <= kMaxGapPeriods * core_.period()) {
-      const std::uint64_t periods = core_.maxCatchUpPeriods();
-      const double step = static_cast<double>(periods > 1 ? periods - 1 : 1) * core_.period();
-      while (now - core_.clock() > step) core_.advanceTo(core_.clock() + step, write);
-    }
-    if (core_.advanceTo(now, write) == ClockEvent::SkippedGap) {
-      if (summary_.skippedGaps++ == 0 || summary_.skippedGaps % 1000 == 0) {
-        std::cerr << "warning: a gap of more than " << kMaxGapPeriods
-                  << " periods in the bag before " << std::fixed << std::setprecision(3) << now
-                  << " s: skipped as the online node skips a clock jump (" << summary_.skippedGaps
-                  << " so far)" << std::defaultfloat << std::endl;
-      }
-    }
-    clockStarted_ = true;
-  }
-
-  /// The longest gap between messages estimated period by period.
-  static constexpr double kMaxGapPeriods = 10000.0;
 
   static constexpr const char* kTf = "/tf";
   static constexpr const char* kTfStatic = "/tf_static";
@@ -432,7 +413,8 @@ class BagReplay final : public MessageSink {
   std::map<std::string, ExpectedType> expectedTypes_;
   TransformSink transformSink_;
   ReplaySummary summary_;
-  bool clockStarted_ = false;  ///< the core's clock has had its first reading
+  ReplayClock clock_;
+  EventLog* events_ = nullptr;
 };
 
 }  // namespace sf_filter

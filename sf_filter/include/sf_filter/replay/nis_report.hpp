@@ -1,0 +1,45 @@
+// The replay's NIS lines (doc/evaluation.md): per input and for all inputs together, the mean
+// NIS of the run with its chi-square verdict, and how often the node's diagnostics, judging a
+// sliding window of ~nis_window periods, would have reported the filter inconsistent. They
+// follow the summary and per-input counter lines, whose format tools parse, and name no
+// "estimates" so that a parser looking for the summary line does not take them for it.
+#pragma once
+
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+#include "sf_filter/core/innovation_record.hpp"
+
+namespace sf_filter {
+
+/// "consistent", or which side of the bounds the mean lies on and what that suggests.
+inline std::string nisVerdict(double mean, const NisBounds& b) {
+  if (mean > b.upper) return "inconsistent, above (innovations larger than S: Q or R too small?)";
+  if (mean < b.lower) return "inconsistent, below (innovations smaller than S: Q or R too large?)";
+  return "consistent";
+}
+
+/// One line about `series`: `label` e.g. "all inputs" or "input 0 (odom twist.twist.linear.x)".
+inline void printNisLine(std::ostream& out, const std::string& node, const std::string& label,
+                         const NisSeries& series) {
+  out << node << ": NIS " << label << ": ";
+  if (series.periods() == 0) {
+    out << "none (no measured period, or no prediction: averaging method or ~nis_window 0)\n";
+    return;
+  }
+  const NisBounds b = series.bounds();
+  const double expected =
+      static_cast<double>(series.degreesOfFreedom()) / static_cast<double>(series.periods());
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "mean %.4g over %llu periods (expected %.4g), 95 %% bounds [%.4g, %.4g]: %s; "
+                "window of %zu periods inconsistent in %llu of %llu judged periods",
+                series.mean(), static_cast<unsigned long long>(series.periods()), expected, b.lower,
+                b.upper, nisVerdict(series.mean(), b).c_str(), series.window().capacity(),
+                static_cast<unsigned long long>(series.inconsistentPeriods()),
+                static_cast<unsigned long long>(series.judgedPeriods()));
+  out << text << "\n";
+}
+
+}  // namespace sf_filter

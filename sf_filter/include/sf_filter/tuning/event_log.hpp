@@ -1,0 +1,63 @@
+// What a bag gives the fusion core, kept in memory: the clock reading of every message and the
+// values and controls its topic readers took out of it (after tf rotation and derived inputs),
+// in the order the bag replay handed them to the core. Replaying the log into a fresh core
+// (replayEvents) repeats the bag replay's estimates exactly, without reading or deserialising
+// the bag again: the noise identification (noise_tuning.hpp) replays it hundreds of times.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/replay/replay_clock.hpp"
+
+namespace sf_filter {
+
+class EventLog {
+ public:
+  void clock(double now) { events_.push_back({Kind::Clock, false, 0, now, 0.0, 0.0, 0.0}); }
+  void measurement(Index input, double now, double value, std::optional<double> variance,
+                   double stamp) {
+    events_.push_back({Kind::Measurement, variance.has_value(), input, now, value,
+                       variance.value_or(0.0), stamp});
+  }
+  void control(Index control, double value) {
+    events_.push_back({Kind::Control, false, control, 0.0, value, 0.0, 0.0});
+  }
+  std::size_t size() const { return events_.size(); }
+
+  /// Feeds the log into `core` as the bag replay fed the bag, through the same ReplayClock;
+  /// the estimates go to `write` (an EstimateRef callable).
+  template <class Write>
+  void replay(FusionEngine& core, Write& write) const {
+    ReplayClock clock;
+    for (const Event& e : events_) {
+      switch (e.kind) {
+        case Kind::Clock:
+          clock.advance(core, e.now, write);
+          break;
+        case Kind::Measurement:
+          core.addMeasurement(e.index, e.now, e.value,
+                              e.hasVariance ? std::optional<double>(e.variance) : std::nullopt,
+                              e.stamp);
+          break;
+        case Kind::Control:
+          core.addControl(e.index, e.value);
+          break;
+      }
+    }
+  }
+
+ private:
+  enum class Kind : std::uint8_t { Clock, Measurement, Control };
+  struct Event {
+    Kind kind;
+    bool hasVariance;  ///< the message carried a variance (passed on as it came)
+    Index index;
+    double now, value, variance, stamp;
+  };
+  std::vector<Event> events_;
+};
+
+}  // namespace sf_filter

@@ -1,0 +1,79 @@
+// Noise identification from a recording by the prediction-error method (Ljung, "System
+// Identification", ch. 7; for Kalman filters e.g. Bar-Shalom et al., "Estimation with
+// Applications to Tracking and Navigation", 11.2): the free entries of Q, R and P0 are chosen
+// to minimise
+//
+//   J = sum_k (log det S_k + y_k^T S_k^-1 y_k),
+//
+// twice the negative log-likelihood of the innovations y_k with covariances S_k over the
+// periods with measured inputs (up to a constant), each evaluation one replay of the recorded
+// events (event_log.hpp) through a fresh fusion core. A free entry is a diagonal variance,
+// optimised as the logarithm of its factor over the starting value within [1/range, range],
+// by NLopt's derivative-free BOBYQA (Powell); a correlated off-diagonal entry scales with
+// sqrt(f_i f_j), so the correlation stays and every trial matrix is a covariance.
+//
+// Only for the Kalman filters (KF, EKF, UKF), whose S is their innovation covariance: the
+// particle filter's likelihood is a Monte Carlo estimate that changes with every draw, and
+// the averaging methods have no model.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/definition/filter_parameters.hpp"
+#include "sf_filter/tuning/event_log.hpp"
+
+namespace sf_filter {
+
+/// One free diagonal entry: `matrix` "Q", "R" or "P0", and its index.
+struct FreeEntry {
+  std::string matrix;
+  Index index = 0;
+  std::string name() const { return matrix + "." + std::to_string(index); }
+};
+
+/// The entries of `list`, a comma-separated list of "Q", "R", "P0" (every non-zero diagonal
+/// entry of the matrix) and "Q.i", "R.i", "P0.i" (one diagonal entry). Throws
+/// std::invalid_argument naming a bad item, an index out of range, or an entry that is 0 in
+/// `start` (a zero variance is structural: it cannot be scaled).
+std::vector<FreeEntry> parseFreeEntries(const std::string& list, const FilterParameters& start);
+
+/// Why the noise identification does not apply to a method ("" when it does).
+std::string tuningRefusal(const std::string& method);
+
+struct TuningOptions {
+  double range = 1000.0;      ///< each variance within [start / range, start * range]
+  int maxEvaluations = 2000;  ///< replays at most
+};
+
+struct TuningResult {
+  FilterParameters tuned;
+  std::vector<double> factors;  ///< per free entry: tuned / start
+  std::vector<bool> atBound;    ///< per free entry: ended within 1 % of a bound
+  double startCost = 0.0, cost = 0.0;
+  int evaluations = 0;
+  std::string stop;  ///< NLopt's reason to stop
+};
+
+/// The engine of the header's filter for one set of parameters.
+using EngineMaker = std::function<std::unique_ptr<FusionEngine>(const FilterParameters&)>;
+
+/// The prediction-error cost J of `parameters` on `events`; +infinity when a step failed or
+/// an innovation covariance was not positive definite.
+double predictionErrorCost(const EventLog& events, const EngineMaker& makeEngine,
+                           const FilterParameters& parameters);
+
+/// Minimises J over `free` from `start`.
+TuningResult tuneNoise(const EventLog& events, const EngineMaker& makeEngine,
+                       const FilterParameters& start, const std::vector<FreeEntry>& free,
+                       const TuningOptions& options);
+
+/// `start` with the free entries' variances multiplied by `factors` (correlations kept).
+FilterParameters scaledParameters(const FilterParameters& start, const std::vector<FreeEntry>& free,
+                                  const std::vector<double>& factors);
+
+}  // namespace sf_filter

@@ -1,0 +1,194 @@
+#include "sf_filter/tuning/noise_tuning.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlopt.hpp>
+
+namespace sf_filter {
+
+namespace {
+
+Eigen::MatrixXd& matrixOf(FilterParameters& p, const std::string& name) {
+  if (name == "Q") return p.process_noise_covariance;
+  if (name == "R") return p.measurement_noise_covariance;
+  return p.initial_error_covariance;
+}
+
+const Eigen::MatrixXd& matrixOf(const FilterParameters& p, const std::string& name) {
+  return matrixOf(const_cast<FilterParameters&>(p), name);  // NOLINT: read-only use
+}
+
+/// A penalty far above any cost of a run that works, finite so that BOBYQA's quadratic
+/// models stay finite.
+constexpr double kFailedRunCost = 1e100;
+
+}  // namespace
+
+std::string tuningRefusal(const std::string& method) {
+  if (method == "KALMAN_FILTER" || method == "EXTENDED_KALMAN_FILTER" ||
+      method == "UNSCENTED_KALMAN_FILTER") {
+    return "";
+  }
+  if (method == "PARTICLE_FILTER_SIR") {
+    return "the noise identification needs the innovation covariance S of a Kalman filter "
+           "(KF, EKF, UKF); the particle filter's likelihood is a Monte Carlo estimate that "
+           "changes with every draw: identify Q and R with the header's EKF or UKF and use "
+           "them here";
+  }
+  return "the noise identification needs a model with a predicted measurement and its "
+         "covariance (KF, EKF, UKF); method " +
+         method + " has none";
+}
+
+std::vector<FreeEntry> parseFreeEntries(const std::string& list, const FilterParameters& start) {
+  std::vector<FreeEntry> free;
+  auto add = [&](const FreeEntry& e) {
+    for (const FreeEntry& f : free) {
+      if (f.matrix == e.matrix && f.index == e.index) return;  // named twice: once
+    }
+    free.push_back(e);
+  };
+  std::stringstream items(list);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    const std::size_t dot = item.find('.');
+    const std::string matrix = item.substr(0, dot);
+    if (matrix != "Q" && matrix != "R" && matrix != "P0") {
+      throw std::invalid_argument("--free: '" + item +
+                                  "' is not Q, R, P0 or one of their diagonal entries "
+                                  "(Q.i, R.i, P0.i)");
+    }
+    const Eigen::MatrixXd& m = matrixOf(start, matrix);
+    if (dot == std::string::npos) {
+      for (Index i = 0; i < m.rows(); ++i) {
+        if (m(i, i) > 0.0) add({matrix, i});
+      }
+      continue;
+    }
+    std::size_t used = 0;
+    long index = -1;
+    try {
+      index = std::stol(item.substr(dot + 1), &used);
+    } catch (const std::logic_error&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() - dot - 1 || index < 0 || index >= m.rows()) {
+      throw std::invalid_argument("--free: '" + item + "': " + matrix + " has diagonal entries " +
+                                  matrix + ".0 .. " + matrix + "." + std::to_string(m.rows() - 1));
+    }
+    if (!(m(index, index) > 0.0)) {
+      throw std::invalid_argument("--free: " + item +
+                                  " is 0 in the configuration: a zero variance is structural and "
+                                  "cannot be scaled; give it a positive start value with --params");
+    }
+    add({matrix, static_cast<Index>(index)});
+  }
+  if (free.empty()) throw std::invalid_argument("--free '" + list + "': no free entry");
+  return free;
+}
+
+FilterParameters scaledParameters(const FilterParameters& start, const std::vector<FreeEntry>& free,
+                                  const std::vector<double>& factors) {
+  FilterParameters p = start;
+  for (const char* name : {"Q", "R", "P0"}) {
+    const Eigen::MatrixXd& from = matrixOf(start, name);
+    Eigen::VectorXd root = Eigen::VectorXd::Ones(from.rows());
+    for (std::size_t k = 0; k < free.size(); ++k) {
+      if (free[k].matrix == name) root(free[k].index) = std::sqrt(factors[k]);
+    }
+    matrixOf(p, name) = root.asDiagonal() * from * root.asDiagonal();
+  }
+  return p;
+}
+
+double predictionErrorCost(const EventLog& events, const EngineMaker& makeEngine,
+                           const FilterParameters& parameters) {
+  std::unique_ptr<FusionEngine> engine;
+  try {
+    engine = makeEngine(parameters);
+  } catch (const std::exception&) {
+    return kFailedRunCost;  // the filter refused the matrices (should not happen: covariances)
+  }
+  auto ignore = [](const EstimateRef&) {};
+  events.replay(*engine, ignore);
+  const double cost = engine->innovations().predictionErrorCost();
+  if (engine->estimationFailures() > 0 || engine->nisFailures() > 0 || !std::isfinite(cost)) {
+    return kFailedRunCost;
+  }
+  return cost;
+}
+
+TuningResult tuneNoise(const EventLog& events, const EngineMaker& makeEngine,
+                       const FilterParameters& start, const std::vector<FreeEntry>& free,
+                       const TuningOptions& options) {
+  if (!(options.range > 1.0)) throw std::invalid_argument("--tune-range must be above 1");
+  if (options.maxEvaluations < 1) throw std::invalid_argument("--max-evaluations must be >= 1");
+  const unsigned n = static_cast<unsigned>(free.size());
+  struct Objective {
+    const EventLog& events;
+    const EngineMaker& makeEngine;
+    const FilterParameters& start;
+    const std::vector<FreeEntry>& free;
+    int evaluations = 0;
+  } objective{events, makeEngine, start, free};
+  auto f = [](const std::vector<double>& theta, std::vector<double>&, void* data) -> double {
+    auto& o = *static_cast<Objective*>(data);
+    ++o.evaluations;
+    std::vector<double> factors(theta.size());
+    for (std::size_t k = 0; k < theta.size(); ++k) factors[k] = std::exp(theta[k]);
+    return predictionErrorCost(o.events, o.makeEngine, scaledParameters(o.start, o.free, factors));
+  };
+  // BOBYQA models the cost by a quadratic through 2n + 1 points and needs n >= 2; one free
+  // entry is a line search, which Nelder-Mead does without a model.
+  nlopt::opt opt(n >= 2 ? nlopt::LN_BOBYQA : nlopt::LN_NELDERMEAD, n);
+  const double bound = std::log(options.range);
+  opt.set_lower_bounds(std::vector<double>(n, -bound));
+  opt.set_upper_bounds(std::vector<double>(n, bound));
+  opt.set_min_objective(f, &objective);
+  // A change of the cost by 1e-4 is far below what the data can tell apart (a likelihood-ratio
+  // test needs a change of about 4 for one parameter); 1e-4 in log is a factor of 1.0001.
+  opt.set_ftol_abs(1e-4);
+  opt.set_xtol_abs(1e-4);
+  opt.set_maxeval(options.maxEvaluations);
+  opt.set_initial_step(std::vector<double>(n, std::min(1.0, bound / 2.0)));
+  std::vector<double> theta(n, 0.0);
+  TuningResult result;
+  result.startCost = predictionErrorCost(events, makeEngine, start);
+  double best = result.startCost;
+  try {
+    const nlopt::result r = opt.optimize(theta, best);
+    switch (r) {
+      case nlopt::FTOL_REACHED:
+        result.stop = "the cost changed by less than 1e-4";
+        break;
+      case nlopt::XTOL_REACHED:
+        result.stop = "the factors changed by less than 0.01 %";
+        break;
+      case nlopt::MAXEVAL_REACHED:
+        result.stop = "the maximum number of replays was reached";
+        break;
+      default:
+        result.stop = "NLopt result " + std::to_string(static_cast<int>(r));
+        break;
+    }
+  } catch (const nlopt::roundoff_limited&) {
+    result.stop = "rounding errors limited the progress (the result is the best point found)";
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("the optimiser failed: ") + e.what());
+  }
+  result.evaluations = objective.evaluations;
+  result.factors.resize(n);
+  result.atBound.resize(n);
+  for (unsigned k = 0; k < n; ++k) {
+    result.factors[k] = std::exp(theta[k]);
+    result.atBound[k] = std::abs(theta[k]) > bound - std::log(1.01);
+  }
+  result.tuned = scaledParameters(start, free, result.factors);
+  result.cost = predictionErrorCost(events, makeEngine, result.tuned);
+  return result;
+}
+
+}  // namespace sf_filter
