@@ -26,6 +26,7 @@ SF_PACKAGE=sf_pkg
 # python3-diagnostic-msgs: the Python messages of /diagnostics, for `rostopic echo
 # /diagnostics`, tools/diagnostics_monitor.py and its test (ros-diagnostic-msgs has only the
 # .msg files).
+# libgeographiclib-dev: the WGS84 geodesy of the GPS inputs (GeographicLib::LocalCartesian).
 SF_DEB_PACKAGES=(
   ros-core-dev catkin libroscpp-dev librosbag-dev python3-rostest rosbash
   libtf2-ros-dev libtf2-geometry-msgs-dev
@@ -34,6 +35,7 @@ SF_DEB_PACKAGES=(
   libeigen3-dev libboost-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
   python3-diagnostic-msgs
+  libgeographiclib-dev
   cmake g++
   clang libclang-rt-14-dev
 )
