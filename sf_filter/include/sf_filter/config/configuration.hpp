@@ -270,5 +270,6 @@
 // After the inputs (they read Input<i>::Field and the message types).
 #include "sf_filter/config/derived_inputs.hpp"
 #include "sf_filter/config/input_covariance.hpp"
+#include "sf_filter/config/gps_inputs.hpp"
 #include "sf_filter/config/twist_output.hpp"
 #endif
