@@ -153,6 +153,50 @@ def _fix_stamp(raw, t):
     return stamp.to_sec()
 
 
+def evaluate_holdout(bag, lib_dir, out_dir, every=5, calibration=10.0):
+    """Replays and compares as described above. Returns a dict: fixes (valid), fused and held
+    ([(t, x, y)] in the odom frame), left_out (messages left out of the copy), yaw_offset
+    [rad], summary (the GPS node's replay output) and rows, one dict per track: label,
+    track, n (held-out fixes compared), rmse, max, final, fused_rmse [m]."""
+    fixes = gr.read_fixes(bag)
+    fused, held = split_fixes(fixes, every)
+    frame = gr.LocalFrame(fused[0][2], fused[0][3], fused[0][4])
+
+    base_csv = os.path.join(out_dir, BASELINE_NODE + ".csv")
+    pioneer_nodes.replay(os.path.join(lib_dir, BASELINE_NODE), bag, base_csv)
+    base = ev.load_result_csv(base_csv)
+    yaw_offset = calibrate_yaw_offset(base, odom_points(frame, fused, 0.0), calibration)
+
+    reduced = os.path.join(out_dir, "fused_fixes.bag")
+    left_out = write_reduced_bag(bag, reduced, [f[0] for f in fused])
+    params = os.path.join(out_dir, "gps.yaml")
+    with open(params, "w") as f:
+        f.write("gps_yaw_offset: %.9f\n" % yaw_offset)
+    gps_csv = os.path.join(out_dir, GPS_NODE + ".csv")
+    summary = pioneer_nodes.replay(os.path.join(lib_dir, GPS_NODE), reduced, gps_csv,
+                                   ["--params", params])
+    gps_track = ev.load_result_csv(gps_csv)
+
+    fused_pts = odom_points(frame, fused, yaw_offset)
+    held_pts = odom_points(frame, held, yaw_offset)
+    fit = gr.fit_rigid_2d(
+        [ev.interpolate(base, t)[:2] for t, _, _ in fused_pts], [(x, y) for _, x, y in fused_pts])
+    moved = gr.apply_rigid_2d(fit, list(zip(base.x, base.y)))
+    base_fit = ev.make_trajectory(base.t, [p[0] for p in moved], [p[1] for p in moved])
+    rows = []
+    for label, track in (("GPS node (`%s`)" % GPS_NODE, gps_track),
+                         ("no GPS, same frame (`%s`)" % BASELINE_NODE, base),
+                         ("no GPS, best fit on the fused fixes", base_fit),
+                         ("fused fixes held", held_track(fused_pts))):
+        errors = holdout_errors(track, held_pts)
+        rmse, emax, final = gr.error_stats(errors)
+        rows.append({"label": label, "track": track, "n": len(errors), "rmse": rmse,
+                     "max": emax, "final": final,
+                     "fused_rmse": ev.rmse(holdout_errors(track, fused_pts))})
+    return {"fixes": len(fused) + len(held), "fused": fused_pts, "held": held_pts,
+            "left_out": left_out, "yaw_offset": yaw_offset, "summary": summary, "rows": rows}
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(
         description=__doc__.split("\n\n")[0],
@@ -179,53 +223,23 @@ def main(argv=None):
         out_dir = tmp.name
     os.makedirs(out_dir, exist_ok=True)
 
-    fixes = gr.read_fixes(args.bag)
-    fused, held = split_fixes(fixes, args.every)
-    frame = gr.LocalFrame(fused[0][2], fused[0][3], fused[0][4])
-
-    base_csv = os.path.join(out_dir, BASELINE_NODE + ".csv")
-    pioneer_nodes.replay(os.path.join(lib_dir, BASELINE_NODE), args.bag, base_csv)
-    base = ev.load_result_csv(base_csv)
-    yaw_offset = calibrate_yaw_offset(base, odom_points(frame, fused, 0.0), args.calibration)
-
-    reduced = os.path.join(out_dir, "fused_fixes.bag")
-    left_out = write_reduced_bag(args.bag, reduced, [f[0] for f in fused])
-    params = os.path.join(out_dir, "gps.yaml")
-    with open(params, "w") as f:
-        f.write("gps_yaw_offset: %.9f\n" % yaw_offset)
-    gps_csv = os.path.join(out_dir, GPS_NODE + ".csv")
-    summary = pioneer_nodes.replay(os.path.join(lib_dir, GPS_NODE), reduced, gps_csv,
-                                   ["--params", params])
-    gps_track = ev.load_result_csv(gps_csv)
-
-    fused_pts = odom_points(frame, fused, yaw_offset)
-    held_pts = odom_points(frame, held, yaw_offset)
-    fit = gr.fit_rigid_2d(
-        [ev.interpolate(base, t)[:2] for t, _, _ in fused_pts], [(x, y) for _, x, y in fused_pts])
-    moved = gr.apply_rigid_2d(fit, list(zip(base.x, base.y)))
-    base_fit = ev.make_trajectory(base.t, [p[0] for p in moved], [p[1] for p in moved])
-    rows = [("GPS node (`%s`)" % GPS_NODE, gps_track),
-            ("no GPS, same frame (`%s`)" % BASELINE_NODE, base),
-            ("no GPS, best fit on the fused fixes", base_fit),
-            ("fused fixes held", held_track(fused_pts))]
-
+    result = evaluate_holdout(args.bag, lib_dir, out_dir, args.every, args.calibration)
     print("# %s: %d valid fixes, %d fused (every %d), %d held out; %d /fix messages left out "
-          "of the replayed copy" % (os.path.basename(args.bag), len(fused) + len(held),
-                                    len(fused), args.every, len(held), left_out))
+          "of the replayed copy" % (os.path.basename(args.bag), result["fixes"],
+                                    len(result["fused"]), args.every, len(result["held"]),
+                                    result["left_out"]))
     print("# yaw offset from the fused fixes of the first %g s: %.2f deg" %
-          (args.calibration, math.degrees(yaw_offset)))
-    print("# %s replay: %s" % (GPS_NODE, summary.replace("\n", "\n#   ")))
+          (args.calibration, math.degrees(result["yaw_offset"])))
+    print("# %s replay: %s" % (GPS_NODE, result["summary"].replace("\n", "\n#   ")))
     print()
     print("| track | held-out fixes | RMSE [m] | max [m] | final [m] | RMSE on fused fixes [m] |")
     print("| --- | --- | --- | --- | --- | --- |")
-    for label, track in rows:
-        errors = holdout_errors(track, held_pts)
-        rmse, emax, final = gr.error_stats(errors)
-        fused_rmse = ev.rmse(holdout_errors(track, fused_pts))
-        print("| %s | %d | %.2f | %.2f | %.2f | %.2f |" % (label, len(errors), rmse, emax, final,
-                                                        fused_rmse))
+    for row in result["rows"]:
+        print("| %s | %d | %.2f | %.2f | %.2f | %.2f |" % (
+            row["label"], row["n"], row["rmse"], row["max"], row["final"], row["fused_rmse"]))
     if args.plot:
-        plot(args.plot, rows, fused_pts, held_pts)
+        plot(args.plot, [(r["label"], r["track"]) for r in result["rows"]], result["fused"],
+             result["held"])
     return 0
 
 
@@ -241,7 +255,7 @@ def plot(path, rows, fused_pts, held_pts):
     ax.set_ylabel("y (odom) [m]")
     ax.set_aspect("equal")
     ax.grid(True)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="lower left")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
