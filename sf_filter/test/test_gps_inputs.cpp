@@ -71,8 +71,8 @@ TEST(GpsInputs, DatumIsTheFirstValidFix) {
   EXPECT_NEAR(gps.sample(1, kNorth, later)->value, 100.0, 1e-3);
   EXPECT_NEAR(gps.sample(0, kEast, later)->value, 0.0, 1e-3);
   EXPECT_NEAR(gps.sample(2, kUp, later)->value, -100.0 * 100.0 / (2 * 6.3675e6), 1e-4);
-  // reset() forgets it: the next valid fix is the datum.
-  gps.reset();
+  // New settings forget it: the next valid fix is the datum.
+  gps.setOptions(GpsOptions{});
   EXPECT_NEAR(gps.sample(1, kNorth, later)->value, 0.0, 1e-9);
 }
 
@@ -86,9 +86,6 @@ TEST(GpsInputs, DatumParameter) {
   GpsInputs below;
   below.setOptions(GpsOptions{Datum{kLat, kLon, kAlt - 3.0}, 0.0});
   EXPECT_NEAR(below.sample(1, kUp, fix(kLat, kLon, kAlt))->value, 3.0, 1e-9);
-  // reset() keeps a datum given as a parameter.
-  gps.reset();
-  EXPECT_NEAR(gps.sample(0, kNorth, fix(kLat, kLon, kAlt))->value, 250.0, 1e-3);
   // New settings forget the previous datum.
   gps.setOptions(GpsOptions{});
   EXPECT_NEAR(gps.sample(0, kNorth, fix(kLat, kLon, kAlt))->value, 0.0, 1e-9);

@@ -8,7 +8,7 @@
 //   finite; a NaN altitude ("no altitude" in NavSatFix) is taken as the datum's for EAST and
 //   NORTH and gives a NaN UP.
 // - The datum is the ~datum parameter if given, else the first fix with a valid status and a
-//   finite position (its NaN altitude taken as 0). reset() forgets a datum taken from a fix.
+//   finite position (its NaN altitude taken as 0), kept until new settings (setOptions).
 // - position_covariance_type COVARIANCE_TYPE_UNKNOWN (0) gives no variance: the header's R
 //   is used and the caller counts the fallback; APPROXIMATED, DIAGONAL_KNOWN and KNOWN give
 //   the diagonal of the ENU covariance turned into the odom frame.
@@ -73,8 +73,6 @@ class GpsInputs {
   std::optional<Datum> datum() const {
     return frame_ ? std::optional<Datum>(frame_->datum()) : options_.datum;
   }
-  /// Forgets a datum taken from a fix (the next valid fix sets it anew).
-  void reset() { frame_.reset(); }
 
  private:
   GpsOptions options_;
