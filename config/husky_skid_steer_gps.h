@@ -31,6 +31,7 @@
 // gyro's heading drift; 0.02 T m^2 on x and y (0.14 m per sqrt(s)) and 1e-4 T rad^2 on the
 // heading (0.6 deg per sqrt(s)). Chosen from these figures, not fitted to the fixes.
 #include <sensor_msgs/NavSatFix.h>
+#include <sf_filter/config/diagonal.hpp>
 
 #include "husky_skid_steer_odom_imu.h"
 
@@ -43,15 +44,7 @@
   ((/fix)(sensor_msgs::NavSatFix)(latitude))
 #define DERIVED_INPUTS ((3)(EAST)(ABSOLUTE))((4)(NORTH)(ABSOLUTE))
 #undef STATE_TRANSITION_MODEL
-#define STATE_TRANSITION_MODEL \
-  (x[0] + x[3] * T * cos(x[2] + 0.5 * x[4] * T)) \
-  (x[1] + x[3] * T * sin(x[2] + 0.5 * x[4] * T)) \
-  (x[2] + x[4] * T) \
-  (x[3]) \
-  (x[4]) \
-  (x[5]) \
-  (0) \
-  (x[7])
+#define STATE_TRANSITION_MODEL SKID_STEER_TRANSITION(x[7])
 #undef OBSERVATION_MODEL
 #define OBSERVATION_MODEL \
   (x[3] * (1 + x[7])) \
@@ -60,33 +53,13 @@
   (x[0]) \
   (x[1])
 #undef MEASUREMENT_NOISE_COVARIANCE
-#define MEASUREMENT_NOISE_COVARIANCE \
-  ((1e-4)(0)(0)(0)(0)) \
-  ((0)(4e-4)(0)(0)(0)) \
-  ((0)(0)(1.25e-5)(0)(0)) \
-  ((0)(0)(0)(2.0)(0)) \
-  ((0)(0)(0)(0)(2.0))
+#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((1e-4)(4e-4)(1.25e-5)(2.0)(2.0))
 #undef PROCESS_NOISE_COVARIANCE
 #define PROCESS_NOISE_COVARIANCE \
-  ((0.02 * T)(0)(0)(0)(0)(0)(0)(0)) \
-  ((0)(0.02 * T)(0)(0)(0)(0)(0)(0)) \
-  ((0)(0)(1e-4 * T)(0)(0)(0)(0)(0)) \
-  ((0)(0)(0)(0.25 * T)(0)(0)(0)(0)) \
-  ((0)(0)(0)(0)(1.0 * T)(0)(0)(0)) \
-  ((0)(0)(0)(0)(0)(1e-8 * T)(0)(0)) \
-  ((0)(0)(0)(0)(0)(0)(100)(0)) \
-  ((0)(0)(0)(0)(0)(0)(0)(1e-6 * T))
+  SF_DIAGONAL((0.02 * T)(0.02 * T)(1e-4 * T)(0.25 * T)(1.0 * T)(1e-8 * T)(100)(1e-6 * T))
 #undef INITIAL_STATE
 #define INITIAL_STATE (0)(0)(0)(0)(0)(0)(0)(0)
 #undef INITIAL_ERROR_COVARIANCE
-#define INITIAL_ERROR_COVARIANCE \
-  ((0)(0)(0)(0)(0)(0)(0)(0)) \
-  ((0)(0)(0)(0)(0)(0)(0)(0)) \
-  ((0)(0)(0)(0)(0)(0)(0)(0)) \
-  ((0)(0)(0)(1)(0)(0)(0)(0)) \
-  ((0)(0)(0)(0)(1)(0)(0)(0)) \
-  ((0)(0)(0)(0)(0)(2.5e-5)(0)(0)) \
-  ((0)(0)(0)(0)(0)(0)(100)(0)) \
-  ((0)(0)(0)(0)(0)(0)(0)(0.04))
+#define INITIAL_ERROR_COVARIANCE SF_DIAGONAL((0)(0)(0)(1)(1)(2.5e-5)(100)(0.04))
 #undef ALIGN_BY_STAMP
 #define ALIGN_BY_STAMP (0)(1)(2)(3)(4)

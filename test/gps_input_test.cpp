@@ -18,32 +18,17 @@
 
 #include "sf_filter/generated/node_definition_of.hpp"
 
+#include "recording_sink.hpp"
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr long kEastInput = 3, kNorthInput = 4;
 constexpr double kLat = 43.5, kLon = 7.25, kAlt = 272.4;
 
-struct Value {
-  long input;
-  double value;
-  std::optional<double> variance;
-  double stamp;
-};
-
-class RecordingSink final : public sf_filter::MessageSink {
- public:
-  void measurement(estimation::Index input, double, double value, std::optional<double> variance,
-                   double stamp) override {
-    values.push_back({static_cast<long>(input), value, variance, stamp});
-  }
-  void control(estimation::Index, double) override {}
-  std::optional<double> rotated(estimation::Index, const std::string&, std::uint32_t, std::uint32_t,
-                                const std::array<double, 3>&, int) override {
-    return std::nullopt;
-  }
-  std::vector<Value> values;
-};
+using sf_test::feed;
+using sf_test::readerOf;
+using sf_test::RecordingSink;
 
 sensor_msgs::NavSatFix navSatFix(double lat, double stamp, int status = 1, int type = 2) {
   sensor_msgs::NavSatFix m;
@@ -67,19 +52,6 @@ double hundredMetresNorth() {
   return kLat + 100.0 / (m + kAlt) * 180 / kPi;
 }
 
-void feed(const sf_filter::NodeDefinition& d, const sensor_msgs::NavSatFix& m,
-          sf_filter::MessageSink& sink) {
-  for (const auto& reader : d.topics) {
-    if (reader.topic != "/fix") continue;
-    std::vector<std::uint8_t> bytes(ros::serialization::serializationLength(m));
-    ros::serialization::OStream stream(bytes.data(), static_cast<std::uint32_t>(bytes.size()));
-    ros::serialization::serialize(stream, m);
-    reader.read(bytes.data(), static_cast<std::uint32_t>(bytes.size()), sink, 0.0);
-    return;
-  }
-  FAIL() << "no reader of /fix";
-}
-
 TEST(GpsInput, NamesSayWhatIsDerived) {
   const auto d = sf_filter::generated::nodeDefinition();
   EXPECT_EQ(d.description.inputs[kEastInput], "/fix longitude east");
@@ -88,22 +60,23 @@ TEST(GpsInput, NamesSayWhatIsDerived) {
 
 TEST(GpsInput, StatusDatumYawOffsetAndCovariance) {
   const auto d = sf_filter::generated::nodeDefinition();
+  const sf_filter::TopicReader& fix = readerOf(d, "/fix");
   RecordingSink sink;
   sink.gps().setOptions({std::nullopt, kPi / 2});  // odom x points north
 
-  feed(d, navSatFix(10.0, 1.0, -1), sink);  // STATUS_NO_FIX: dropped, not the datum
+  feed(fix, navSatFix(10.0, 1.0, -1), sink, 0.0);  // STATUS_NO_FIX: dropped, not the datum
   EXPECT_TRUE(sink.values.empty());
   EXPECT_EQ(sink.gps().noFix(kEastInput), 1u);
   EXPECT_EQ(sink.gps().noFix(kNorthInput), 1u);
 
-  feed(d, navSatFix(kLat, 2.0), sink);  // the datum
+  feed(fix, navSatFix(kLat, 2.0), sink, 0.0);  // the datum
   ASSERT_EQ(sink.values.size(), 2u);
   EXPECT_NEAR(sink.values[0].value, 0.0, 1e-9);
   EXPECT_NEAR(sink.values[1].value, 0.0, 1e-9);
   EXPECT_EQ(sink.values[0].stamp, 2.0);
 
   sink.values.clear();
-  feed(d, navSatFix(hundredMetresNorth(), 3.0), sink);
+  feed(fix, navSatFix(hundredMetresNorth(), 3.0), sink, 0.0);
   ASSERT_EQ(sink.values.size(), 2u);
   EXPECT_EQ(sink.values[0].input, kEastInput);
   EXPECT_NEAR(sink.values[0].value, 100.0, 1e-3);  // odom x: north
@@ -112,7 +85,7 @@ TEST(GpsInput, StatusDatumYawOffsetAndCovariance) {
   EXPECT_NEAR(*sink.values[1].variance, 0.81, 1e-12);
 
   sink.values.clear();
-  feed(d, navSatFix(kLat, 4.0, 0, 0), sink);  // COVARIANCE_TYPE_UNKNOWN: the header's R
+  feed(fix, navSatFix(kLat, 4.0, 0, 0), sink, 0.0);  // COVARIANCE_TYPE_UNKNOWN: the header's R
   ASSERT_EQ(sink.values.size(), 2u);
   EXPECT_FALSE(sink.values[0].variance);
   EXPECT_FALSE(sink.values[1].variance);
