@@ -39,7 +39,6 @@ import argparse
 import math
 import os
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -211,17 +210,10 @@ def main(argv=None):
     parser.add_argument("--plot", help="write the tracks and fixes (PNG)")
     args = parser.parse_args(argv)
 
-    lib_dir = args.lib_dir or pioneer_nodes.find_lib_dir("sf_husky")
+    # tmp keeps a temporary out_dir until main returns.
+    lib_dir, out_dir, tmp = pioneer_nodes.husky_dirs(args.lib_dir, args.out_dir)  # noqa: F841
     if not lib_dir:
-        print("error: no sf_husky_* executables found (build them, source the devel space or "
-              "give --lib-dir)", file=sys.stderr)
         return 2
-    tmp = None
-    out_dir = args.out_dir
-    if not out_dir:
-        tmp = tempfile.TemporaryDirectory()
-        out_dir = tmp.name
-    os.makedirs(out_dir, exist_ok=True)
 
     result = evaluate_holdout(args.bag, lib_dir, out_dir, args.every, args.calibration)
     print("# %s: %d valid fixes, %d fused (every %d), %d held out; %d /fix messages left out "
