@@ -9,6 +9,8 @@
 //                   quantity ROLL, PITCH, YAW of a quaternion (x, y, z, w) or of a pose's
 //                            orientation; angle inputs (ANGLE_INPUTS) automatically
 //                            X, Y, Z of a pose's position (members position and orientation)
+//                   quantity EAST, NORTH, UP of a sensor_msgs/NavSatFix (GPS inputs: the
+//                            message is checked and read in gps_inputs.hpp)
 //                   mode     ABSOLUTE, or DIFFERENTIAL: the change since the previous message
 //                            of the topic in the previous pose's frame, its variance the sum
 //                            of the two messages' (extractors/pose_difference.hpp)
