@@ -75,7 +75,9 @@
 #define METHOD EXTENDED_KALMAN_FILTER
 #endif
 #define ESTIMATION_PERIOD 20
-#define STATE_TRANSITION_MODEL \
+// The transition has a name of its own so that a header extending the state appends to it
+// instead of copying it (config/husky_skid_steer_gps.h).
+#define SKID_STEER_TRANSITION \
   (x[0] + x[3] * T * cos(x[2] + 0.5 * x[4] * T)) \
   (x[1] + x[3] * T * sin(x[2] + 0.5 * x[4] * T)) \
   (x[2] + x[4] * T) \
@@ -83,6 +85,7 @@
   (x[4]) \
   (x[5]) \
   (0)
+#define STATE_TRANSITION_MODEL SKID_STEER_TRANSITION
 // k(v, omega): 0 at standstill, 1 in motion (see above).
 #define SKID_STEER_MOVING \
   (1 - exp(-pow(pow(x[3] / 0.05, 2) + pow(x[4] / 0.1, 2), 2)))

@@ -16,52 +16,15 @@
 
 #include "sf_filter/generated/node_definition_of.hpp"
 
+#include "recording_sink.hpp"
+
 namespace {
 
 using sf_filter::TopicReader;
 
-struct Value {
-  long input;
-  double value;
-  std::optional<double> variance;
-  double stamp;
-};
-
-/// Records what the readers hand over.
-class RecordingSink final : public sf_filter::MessageSink {
- public:
-  void measurement(estimation::Index input, double, double value, std::optional<double> variance,
-                   double stamp) override {
-    values.push_back({static_cast<long>(input), value, variance, stamp});
-  }
-  void control(estimation::Index, double) override {}
-  std::optional<double> rotated(estimation::Index, const std::string&, std::uint32_t, std::uint32_t,
-                                const std::array<double, 3>&, int) override {
-    return std::nullopt;
-  }
-  std::vector<Value> values;
-};
-
-template <class M>
-std::vector<std::uint8_t> serialized(const M& message) {
-  std::vector<std::uint8_t> bytes(ros::serialization::serializationLength(message));
-  ros::serialization::OStream stream(bytes.data(), static_cast<std::uint32_t>(bytes.size()));
-  ros::serialization::serialize(stream, message);
-  return bytes;
-}
-
-const TopicReader& readerOf(const sf_filter::NodeDefinition& d, const std::string& topic) {
-  for (const auto& r : d.topics) {
-    if (r.topic == topic) return r;
-  }
-  throw std::runtime_error("no reader for " + topic);
-}
-
-template <class M>
-void feed(const TopicReader& reader, const M& message, sf_filter::MessageSink& sink, double now) {
-  const std::vector<std::uint8_t> bytes = serialized(message);
-  reader.read(bytes.data(), static_cast<std::uint32_t>(bytes.size()), sink, now);
-}
+using sf_test::feed;
+using sf_test::readerOf;
+using sf_test::RecordingSink;
 
 geometry_msgs::Quaternion aboutZ(double yaw) {
   geometry_msgs::Quaternion q;

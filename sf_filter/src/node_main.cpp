@@ -23,6 +23,7 @@
 #include "sf_filter/definition/node_definition.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_node.hpp"
+#include "sf_filter/node/gps_parameters.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
 #include "sf_filter/replay/bag_replay.hpp"
 #include "sf_filter/replay/contained_run.hpp"
@@ -205,6 +206,20 @@ int tuneFromEvents(const std::string& name, const NodeDefinition& def,
   return EXIT_SUCCESS;
 }
 
+/// The GPS inputs' fixes without a valid status and unknown covariances (for the inputs that
+/// received a fix).
+void printGpsCounters(const std::string& name, const sf_filter::MessageSink& sink,
+                      const std::vector<std::string>& inputs) {
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    if (!sink.gps().receivedFix(i)) continue;
+    const auto input = static_cast<sf_filter::Index>(i);
+    std::cout << name << ": input " << i << " (GPS): " << sink.gps().noFix(i)
+              << " fixes dropped without a fix (status < STATUS_FIX), "
+              << sink.covarianceFallbacks(input) << " with an unknown covariance (header R used)"
+              << std::endl;
+  }
+}
+
 /// Offline replay: `<node> --replay in.bag [--csv out.csv] [--bag out.bag] [options]`.
 int replayMain(int argc, char** argv, const NodeDefinition& def) {
   const std::string program = argv[0];
@@ -256,6 +271,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   const sf_filter::InputCapabilities& can = def.capabilities;
   std::optional<sf_filter::YamlParameterSource> params;
   std::string paramsPath;
+  sf_filter::gps::GpsOptions gpsOptions;  // ~datum, ~gps_yaw_offset of --params
   std::optional<double> periodOverrideMs;
   std::optional<sf_filter::FilterParameters> fileParameters;
   double maxFutureStampMs = sf_filter::kDefaultMaxFutureStampMs;
@@ -285,6 +301,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       options.frameId = out.frameId;
       options.childFrameId = out.childFrameId;
       baseFrame = sf_filter::detail::frameParameter(*params, "base_frame", baseFrame);
+      gpsOptions = sf_filter::loadGpsParameters(*params);
     }
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -503,6 +520,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
           aligner->addTransforms(given, true);
         }
       }
+      replay.gps().setOptions(gpsOptions);
       for (sf_filter::TopicReader reader : def.topics) {
         const auto remapped = remaps.find(relativeName(reader.topic));
         if (remapped != remaps.end()) reader.topic = remapped->second;
@@ -529,6 +547,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                 << " us per estimation step, " << wall << " s in all" << std::endl;
       printInputCounters(options.nodeName, replay.core());
       printNis(options.nodeName, replay.core(), def.description.inputs);
+      printGpsCounters(options.nodeName, replay, def.description.inputs);
       if (aligner) {
         std::cout << options.nodeName << ": " << aligner->transforms()
                   << " transforms read from the bag's /tf_static and /tf ("
@@ -598,6 +617,7 @@ int nodeMain(int argc, char** argv, const NodeDefinition& def) {
     node.emplace(*nh, *pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
                  aligner ? &*aligner : nullptr, faults.diagnosticPeriod,
                  sf_filter::loadOutputParameters(params));
+    node->gps().setOptions(sf_filter::loadGpsParameters(params));
     for (const sf_filter::TopicReader& reader : def.topics) node->subscribe(reader);
     node->start();
   } catch (const std::exception& e) {

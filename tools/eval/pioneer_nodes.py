@@ -15,6 +15,8 @@ their path is also computed from their v = x5 and omega = x3 (VELOCITIES_OF_POSE
 import os
 import re
 import subprocess
+import sys
+import tempfile
 
 PACKAGE = "sf_pkg"
 # Columns of v and omega in the states (x, y, theta, omega, delta_s, v[, a]).
@@ -53,6 +55,23 @@ def find_lib_dir(exe_prefix="sf_nav"):
         if os.path.isdir(d) and any(n.startswith(exe_prefix) for n in os.listdir(d)):
             return d
     return None
+
+
+def husky_dirs(lib_dir, out_dir):
+    """(lib_dir, out_dir, tmp) of the real-recording reports: lib_dir or the devel space's
+    sf_husky_* executables (None, after an error on stderr, when there are none); out_dir
+    (created) or a temporary directory, kept alive by `tmp` (None for a given out_dir)."""
+    lib_dir = lib_dir or find_lib_dir("sf_husky")
+    if not lib_dir:
+        print("error: no sf_husky_* executables found (build them, source the devel space or "
+              "give --lib-dir)", file=sys.stderr)
+        return None, None, None
+    tmp = None
+    if not out_dir:
+        tmp = tempfile.TemporaryDirectory()
+        out_dir = tmp.name
+    os.makedirs(out_dir, exist_ok=True)
+    return lib_dir, out_dir, tmp
 
 
 def list_nodes(lib_dir):

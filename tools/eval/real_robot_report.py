@@ -36,7 +36,6 @@ import math
 import os
 import subprocess
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -105,17 +104,9 @@ def main(argv=None):
                         help="also the best RMSE over a Q/R scaling grid per Kalman filter")
     args = parser.parse_args(argv)
 
-    lib_dir = args.lib_dir or pioneer_nodes.find_lib_dir("sf_husky")
+    lib_dir, out_dir, tmp = pioneer_nodes.husky_dirs(args.lib_dir, args.out_dir)
     if not lib_dir:
-        print("error: no sf_husky_* executables found (build them, source the devel space or "
-              "give --lib-dir)", file=sys.stderr)
         return 2
-    tmp = None
-    out_dir = args.out_dir
-    if not out_dir:
-        tmp = tempfile.TemporaryDirectory()
-        out_dir = tmp.name
-    os.makedirs(out_dir, exist_ok=True)
 
     _, gps = gr.gps_track(gr.read_fixes(args.bag))
     results = []  # (label, compare result, trajectory, extra dict)

@@ -122,7 +122,9 @@
 //                               quaternion or pose member: quantity X Y Z (pose position) or
 //                               ROLL PITCH YAW (angle inputs automatically), mode ABSOLUTE or
 //                               DIFFERENTIAL (change since the topic's previous message, in the
-//                               previous pose's frame; derived_inputs.hpp).  Default none.
+//                               previous pose's frame; derived_inputs.hpp); or EAST NORTH UP
+//                               of a sensor_msgs/NavSatFix, ABSOLUTE: the fix in the odom frame
+//                               about the datum (GPS inputs, gps_inputs.hpp). Default none.
 //   TWIST_OUT                   (v index)(omega index): the published Odometry's twist and its
 //                               covariance from the state (requires POSE_OUT;
 //                               twist_output.hpp).                          Default: unknown
@@ -270,5 +272,6 @@
 // After the inputs (they read Input<i>::Field and the message types).
 #include "sf_filter/config/derived_inputs.hpp"
 #include "sf_filter/config/input_covariance.hpp"
+#include "sf_filter/config/gps_inputs.hpp"
 #include "sf_filter/config/twist_output.hpp"
 #endif

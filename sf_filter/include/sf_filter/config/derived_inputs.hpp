@@ -9,6 +9,8 @@
 //                   quantity ROLL, PITCH, YAW of a quaternion (x, y, z, w) or of a pose's
 //                            orientation; angle inputs (ANGLE_INPUTS) automatically
 //                            X, Y, Z of a pose's position (members position and orientation)
+//                   quantity EAST, NORTH, UP of a sensor_msgs/NavSatFix (GPS inputs: the
+//                            message is checked and read in gps_inputs.hpp)
 //                   mode     ABSOLUTE, or DIFFERENTIAL: the change since the previous message
 //                            of the topic in the previous pose's frame, its variance the sum
 //                            of the two messages' (extractors/pose_difference.hpp)
@@ -86,6 +88,8 @@ template <class Field>
 constexpr bool memberFits(int quantity) {
   if constexpr (std::is_same_v<Field, detail::UnknownMessage>) {
     return true;
+  } else if (isGpsQuantity(quantity)) {
+    return true;  // any member of the fix: gps_inputs.hpp checks the message
   } else {
     return isAngleQuantity(quantity) ? (IsQuaternion<Field>::value || IsPose<Field>::value)
                                      : IsPose<Field>::value;
@@ -120,8 +124,8 @@ struct InputFieldOf<I, true> {
                   "an input derives one quantity (list the topic again in TOPICS_IN for another)"); \
     static_assert(e.quantity != derived_detail::UnknownQuantity,                                   \
                   SF_DI_PREFIX(k, entry) ": quantity '" SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry))     \
-                  "' is not one of X, Y, Z (of a pose's position) or ROLL, PITCH, YAW (of a "      \
-                  "quaternion or a pose's orientation)");                                          \
+                  "' is not one of X, Y, Z (of a pose's position), ROLL, PITCH, YAW (of a "        \
+                  "quaternion or a pose's orientation) or EAST, NORTH, UP (of a NavSatFix)");       \
     static_assert(e.mode != derived_detail::UnknownMode,                                           \
                   SF_DI_PREFIX(k, entry) ": mode '" SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry))         \
                   "' is not ABSOLUTE or DIFFERENTIAL (the change since the topic's previous "      \

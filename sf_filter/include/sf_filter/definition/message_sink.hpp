@@ -14,6 +14,7 @@
 #include <sf_estimation/types.hpp>
 
 #include "sf_filter/config/extractors/pose_difference.hpp"
+#include "sf_filter/gps/gps_inputs.hpp"
 
 namespace sf_filter {
 
@@ -54,10 +55,14 @@ class MessageSink {
   }
   /// Forgets the previous poses of the differential inputs (after a reset of the estimate).
   void forgetPreviousPoses() { previousPoses_.clear(); }
+  /// The GPS inputs' datum, yaw offset and counters (DERIVED_INPUTS EAST, NORTH, UP).
+  gps::GpsInputs& gps() { return gps_; }
+  const gps::GpsInputs& gps() const { return gps_; }
 
  private:
   std::vector<sf_config::extractors::PoseMemory> previousPoses_;
   std::vector<std::uint64_t> covarianceFallbacks_;
+  gps::GpsInputs gps_;
 };
 
 /// One subscribed topic: its message type and the reader of its serialized messages.

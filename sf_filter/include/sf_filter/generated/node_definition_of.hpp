@@ -101,6 +101,19 @@ std::optional<double> inputVariance(const Message& msg, MessageSink& sink) {
   }
 }
 
+/// Reads GPS input In (DERIVED_INPUTS EAST, NORTH, UP) from the fix `msg` into the sink: its
+/// position in the odom frame (gps::GpsInputs), nothing for a fix without a valid status.
+template <class In, class Message>
+void readGpsInput(const Message& msg, MessageSink& sink, double now, double stamp) {
+  using Gps = sf_config::GpsDerivation<In::index>;
+  if constexpr (Gps::valid) {
+    const std::optional<gps::GpsSample> s = sink.gps().sample(In::index, Gps::axis, Gps::fix(msg));
+    if (!s) return;
+    if (s->covarianceUnknown) sink.countCovarianceFallback(In::index);
+    sink.measurement(In::index, now, s->value, s->variance, stamp);
+  }  // else not built: a static_assert of the configuration reported why
+}
+
 /// Reads input In from `msg` into the sink: a DERIVED_INPUTS quantity (a differential one
 /// from the change since the topic's previous message), or the field (or rotated vector).
 template <class In, class Message>
@@ -109,9 +122,11 @@ void readInput(const Message& msg, MessageSink& sink, double now) {
   static_assert(!(Derivation::derived && sf_config::FrameAlignment<In::index>::aligned),
                 "DERIVED_INPUTS and FRAME_ALIGNED_INPUTS: an input is listed in both; a derived "
                 "input reads a quaternion or pose member, which is not rotated");
-  const std::optional<double> variance = inputVariance<In>(msg, sink);
+  [[maybe_unused]] const std::optional<double> variance = inputVariance<In>(msg, sink);
   const double stamp = stampOf(msg);
-  if constexpr (Derivation::derived) {
+  if constexpr (sf_config::GpsDerivation<In::index>::gps) {
+    readGpsInput<In>(msg, sink, now, stamp);
+  } else if constexpr (Derivation::derived) {
     if constexpr (Derivation::valid) {
       const sf_config::extractors::Pose pose = Derivation::pose(In::member(msg));
       if constexpr (Derivation::differential) {
@@ -228,7 +243,8 @@ inline std::vector<std::string> inputNames() {
     if constexpr (Align::aligned) {
       names.push_back(std::string(In::topic) + " " + std::string(Align::member));
     } else if constexpr (Derivation::derived) {
-      constexpr const char* kQuantities[] = {"x", "y", "z", "roll", "pitch", "yaw"};
+      constexpr const char* kQuantities[] = {"x",   "y",    "z",     "roll", "pitch",
+                                             "yaw", "east", "north", "up"};
       names.push_back(std::string(In::topic) + " " + std::string(In::field) + " " +
                       kQuantities[static_cast<int>(Derivation::quantity)] +
                       (Derivation::differential ? " differential" : ""));

@@ -82,6 +82,11 @@ class FusionNode final : public MessageSink {
              w.expected;
     };
     diagnostics_.addLossSource(wrongType);
+    // A GPS input's fixes without a valid status (gps::GpsInputs).
+    InputLossSource noFix;
+    noFix.count = [this](std::size_t i) { return gps().noFix(i); };
+    noFix.reason = [](std::size_t) { return std::string("GPS fix status below STATUS_FIX"); };
+    diagnostics_.addLossSource(noFix);
     if (aligner_) {
       InputLossSource unrotated;
       unrotated.count = [this](std::size_t i) { return aligner_->dropped(i); };

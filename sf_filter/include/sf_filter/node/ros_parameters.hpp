@@ -489,7 +489,9 @@ inline const std::vector<std::string>& knownParameters() {
                                                  "publish_tf",
                                                  "queue_size",
                                                  "base_frame",
-                                                 "transform_timeout"};
+                                                 "transform_timeout",
+                                                 "datum",
+                                                 "gps_yaw_offset"};
   return names;
 }
 

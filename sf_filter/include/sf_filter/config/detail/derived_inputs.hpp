@@ -7,6 +7,8 @@
 //                   entry's field is the member the value is derived from:
 //                   quantity ROLL, PITCH, YAW   of a quaternion member (x, y, z, w)
 //                            X, Y, Z            of a pose member (position, orientation)
+//                            EAST, NORTH, UP    of a sensor_msgs/NavSatFix (any of its members:
+//                                               the whole fix is read; config/gps_inputs.hpp)
 //                   mode     ABSOLUTE           the value itself
 //                            DIFFERENTIAL       the change since the previous message of the
 //                                               topic, in the frame of the previous pose
@@ -37,7 +39,18 @@ namespace sf_config {
 namespace derived_detail {
 
 /// DERIVED_INPUTS quantities; Unknown for a name that is none of them.
-enum Quantity : int { X = 0, Y = 1, Z = 2, Roll = 3, Pitch = 4, Yaw = 5, UnknownQuantity = -1 };
+enum Quantity : int {
+  X = 0,
+  Y = 1,
+  Z = 2,
+  Roll = 3,
+  Pitch = 4,
+  Yaw = 5,
+  East = 6,
+  North = 7,
+  Up = 8,
+  UnknownQuantity = -1
+};
 enum Mode : int { Absolute = 0, Differential = 1, UnknownMode = -1 };
 
 constexpr int quantityOf(std::string_view s) {
@@ -47,12 +60,17 @@ constexpr int quantityOf(std::string_view s) {
          : s == "ROLL"  ? Roll
          : s == "PITCH" ? Pitch
          : s == "YAW"   ? Yaw
+         : s == "EAST"  ? East
+         : s == "NORTH" ? North
+         : s == "UP"    ? Up
                         : UnknownQuantity;
 }
 constexpr int modeOf(std::string_view s) {
   return s == "ABSOLUTE" ? Absolute : s == "DIFFERENTIAL" ? Differential : UnknownMode;
 }
 constexpr bool isAngleQuantity(int q) { return q == Roll || q == Pitch || q == Yaw; }
+/// A GPS quantity: the position of a sensor_msgs/NavSatFix in the odom frame.
+constexpr bool isGpsQuantity(int q) { return q == East || q == North || q == Up; }
 
 struct DerivedEntry {
   int input;

@@ -1,0 +1,85 @@
+// What a fusion node does with the sensor_msgs/NavSatFix of its GPS inputs (DERIVED_INPUTS
+// EAST, NORTH, UP; doc/configuration.md, "GPS"): the status check, the datum, the conversion
+// to the odom frame (local_frame.hpp) and the variance from the fix's position_covariance.
+//
+// - A fix whose status is below STATUS_FIX (-1, STATUS_NO_FIX) gives no value: it is dropped
+//   and counted per input (noFix(), shown in the input's diagnostics). A fix whose latitude or
+//   longitude is not finite gives a NaN value, which the fusion core drops and counts as not
+//   finite; a NaN altitude ("no altitude" in NavSatFix) is taken as the datum's for EAST and
+//   NORTH and gives a NaN UP.
+// - The datum is the ~datum parameter if given, else the first fix with a valid status and a
+//   finite position (its NaN altitude taken as 0), kept until new settings (setOptions).
+// - position_covariance_type COVARIANCE_TYPE_UNKNOWN (0) gives no variance: the header's R
+//   is used and the caller counts the fallback; APPROXIMATED, DIAGONAL_KNOWN and KNOWN give
+//   the diagonal of the ENU covariance turned into the odom frame.
+// ROS-free; compiled once in sf_fusion_core and unit-tested in test_gps_inputs.cpp.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "sf_filter/gps/local_frame.hpp"
+
+namespace sf_filter {
+namespace gps {
+
+/// The GPS inputs' settings (private parameters ~datum and ~gps_yaw_offset).
+struct GpsOptions {
+  std::optional<Datum> datum;  ///< nullopt: the first valid fix
+  double yawOffset = 0.0;      ///< [rad], see local_frame.hpp
+};
+
+/// The members of a sensor_msgs/NavSatFix that a GPS input reads.
+struct Fix {
+  int status = -1;  ///< status.status: -1 no fix, 0 fix, 1 SBAS, 2 GBAS
+  double latitude = 0.0;
+  double longitude = 0.0;
+  double altitude = 0.0;
+  std::array<double, 9> covariance{};  ///< position_covariance, ENU, row-major
+  int covarianceType = 0;              ///< position_covariance_type
+};
+
+inline constexpr int kStatusFix = 0;              ///< sensor_msgs/NavSatStatus STATUS_FIX
+inline constexpr int kCovarianceTypeUnknown = 0;  ///< NavSatFix COVARIANCE_TYPE_UNKNOWN
+
+/// One value of a GPS input and its variance.
+struct GpsSample {
+  double value;
+  std::optional<double> variance;  ///< nullopt: the header's R
+  bool covarianceUnknown;          ///< the fix's covariance type is unknown
+};
+
+class GpsInputs {
+ public:
+  /// New settings; forgets the datum of the previous ones.
+  void setOptions(const GpsOptions& options) {
+    options_ = options;
+    frame_.reset();
+  }
+  const GpsOptions& options() const { return options_; }
+
+  /// The value of axis `axis` of GPS input `input` from `fix` in the odom frame (0: x, EAST
+  /// turned by the yaw offset; 1: y, NORTH turned; 2: z, UP); nullopt for a fix without a
+  /// valid status (counted). See above.
+  std::optional<GpsSample> sample(std::size_t input, int axis, const Fix& fix);
+
+  /// Fixes of `input` dropped because their status was below STATUS_FIX.
+  std::uint64_t noFix(std::size_t input) const { return input < noFix_.size() ? noFix_[input] : 0; }
+  /// Whether `input` was given a fix (a GPS input that has received a message).
+  bool receivedFix(std::size_t input) const { return input < noFix_.size() && received_[input]; }
+  /// The datum in use, nullopt before the first valid fix (without ~datum).
+  std::optional<Datum> datum() const {
+    return frame_ ? std::optional<Datum>(frame_->datum()) : options_.datum;
+  }
+
+ private:
+  GpsOptions options_;
+  std::optional<LocalFrame> frame_;
+  std::vector<std::uint64_t> noFix_;  ///< per input; sized with received_
+  std::vector<bool> received_;
+};
+
+}  // namespace gps
+}  // namespace sf_filter

@@ -1,0 +1,46 @@
+// The GPS inputs' handling of a fix; see gps_inputs.hpp.
+#include "sf_filter/gps/gps_inputs.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace sf_filter {
+namespace gps {
+
+std::optional<GpsSample> GpsInputs::sample(std::size_t input, int axis, const Fix& fix) {
+  if (noFix_.size() <= input) {
+    noFix_.resize(input + 1, 0);
+    received_.resize(input + 1, false);
+  }
+  received_[input] = true;
+  if (fix.status < kStatusFix) {
+    ++noFix_[input];
+    return std::nullopt;
+  }
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (!std::isfinite(fix.latitude) || !std::isfinite(fix.longitude)) {
+    return GpsSample{kNaN, std::nullopt, false};  // dropped by the core as not finite
+  }
+  if (!frame_) {
+    Datum datum;
+    if (options_.datum) {
+      datum = *options_.datum;
+    } else {
+      datum = {fix.latitude, fix.longitude, std::isfinite(fix.altitude) ? fix.altitude : 0.0};
+    }
+    frame_.emplace(datum, options_.yawOffset);
+  }
+  // Without an altitude the fix is taken at the datum's height: east and north barely depend
+  // on it (1 m of height changes them by about 1e-7 of their size), up is unknown.
+  const bool hasAltitude = std::isfinite(fix.altitude);
+  const double altitude = hasAltitude ? fix.altitude : frame_->datum().altitude;
+  const std::array<double, 3> odom =
+      frame_->toOdom(frame_->enu(fix.latitude, fix.longitude, altitude));
+  const double value = (axis == 2 && !hasAltitude) ? kNaN : odom[static_cast<std::size_t>(axis)];
+  if (fix.covarianceType == kCovarianceTypeUnknown) return GpsSample{value, std::nullopt, true};
+  return GpsSample{value, frame_->odomVariances(fix.covariance)[static_cast<std::size_t>(axis)],
+                   false};
+}
+
+}  // namespace gps
+}  // namespace sf_filter

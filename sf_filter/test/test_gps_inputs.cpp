@@ -1,0 +1,137 @@
+// The GPS inputs' handling of a fix (sf_filter/gps/gps_inputs.hpp): status check and its
+// counter, datum from the first valid fix or from the parameter, the fix's covariance by its
+// type (unknown: the header's R), a missing altitude. Positions are checked against the
+// published WGS84 radius of curvature (a point 100 m north: latitude step 100 m / M).
+#include <cmath>
+#include <optional>
+
+#include <gtest/gtest.h>
+
+#include "sf_filter/gps/gps_inputs.hpp"
+
+namespace {
+
+using sf_filter::gps::Datum;
+using sf_filter::gps::Fix;
+using sf_filter::gps::GpsInputs;
+using sf_filter::gps::GpsOptions;
+using sf_filter::gps::GpsSample;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kLat = 43.5, kLon = 7.25, kAlt = 272.4;
+constexpr int kEast = 0, kNorth = 1, kUp = 2;
+
+/// Latitude [deg] of the point `metres` north of latitude `lat` [deg] at height `height` [m]:
+/// at that height the meridian's radius of curvature is M + height (WGS84 M).
+double north(double lat, double metres, double height) {
+  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2 - f);
+  const double s = std::sin(lat * kPi / 180);
+  const double m = a * (1 - e2) / std::pow(1 - e2 * s * s, 1.5);
+  return lat + metres / (m + height) * 180 / kPi;
+}
+
+Fix fix(double lat, double lon, double alt, int status = 1, int covarianceType = 1) {
+  Fix f;
+  f.status = status;
+  f.latitude = lat;
+  f.longitude = lon;
+  f.altitude = alt;
+  f.covariance = {0.81, 0, 0, 0, 1.21, 0, 0, 0, 3.24};
+  f.covarianceType = covarianceType;
+  return f;
+}
+
+TEST(GpsInputs, NoFixIsDroppedAndCountedPerInput) {
+  GpsInputs gps;
+  EXPECT_FALSE(gps.sample(3, kEast, fix(kLat, kLon, kAlt, -1)));
+  EXPECT_FALSE(gps.sample(4, kNorth, fix(kLat, kLon, kAlt, -1)));
+  EXPECT_FALSE(gps.sample(4, kNorth, fix(kLat, kLon, kAlt, -2)));
+  EXPECT_EQ(gps.noFix(3), 1u);
+  EXPECT_EQ(gps.noFix(4), 2u);
+  EXPECT_EQ(gps.noFix(0), 0u);
+  EXPECT_TRUE(gps.receivedFix(3));
+  EXPECT_FALSE(gps.receivedFix(0));
+  // A dropped fix does not become the datum.
+  EXPECT_FALSE(gps.datum());
+  // STATUS_FIX, SBAS and GBAS fixes are used.
+  for (int status : {0, 1, 2}) EXPECT_TRUE(gps.sample(3, kEast, fix(kLat, kLon, kAlt, status)));
+  EXPECT_EQ(gps.noFix(3), 1u);
+}
+
+TEST(GpsInputs, DatumIsTheFirstValidFix) {
+  GpsInputs gps;
+  gps.sample(0, kEast, fix(10.0, 10.0, 0.0, -1));  // no fix: not the datum
+  const std::optional<GpsSample> first = gps.sample(0, kEast, fix(kLat, kLon, kAlt));
+  ASSERT_TRUE(first);
+  EXPECT_NEAR(first->value, 0.0, 1e-9);
+  ASSERT_TRUE(gps.datum());
+  EXPECT_EQ(gps.datum()->latitude, kLat);
+  EXPECT_EQ(gps.datum()->altitude, kAlt);
+  const Fix later = fix(north(kLat, 100.0, kAlt), kLon, kAlt);
+  EXPECT_NEAR(gps.sample(1, kNorth, later)->value, 100.0, 1e-3);
+  EXPECT_NEAR(gps.sample(0, kEast, later)->value, 0.0, 1e-3);
+  EXPECT_NEAR(gps.sample(2, kUp, later)->value, -100.0 * 100.0 / (2 * 6.3675e6), 1e-4);
+  // New settings forget it: the next valid fix is the datum.
+  gps.setOptions(GpsOptions{});
+  EXPECT_NEAR(gps.sample(1, kNorth, later)->value, 0.0, 1e-9);
+}
+
+TEST(GpsInputs, DatumParameter) {
+  GpsInputs gps;
+  GpsOptions options;
+  options.datum = Datum{north(kLat, -250.0, kAlt), kLon, kAlt};
+  gps.setOptions(options);
+  EXPECT_NEAR(gps.sample(0, kNorth, fix(kLat, kLon, kAlt))->value, 250.0, 1e-3);
+  // 3 m above a datum at the same latitude and longitude.
+  GpsInputs below;
+  below.setOptions(GpsOptions{Datum{kLat, kLon, kAlt - 3.0}, 0.0});
+  EXPECT_NEAR(below.sample(1, kUp, fix(kLat, kLon, kAlt))->value, 3.0, 1e-9);
+  // New settings forget the previous datum.
+  gps.setOptions(GpsOptions{});
+  EXPECT_NEAR(gps.sample(0, kNorth, fix(kLat, kLon, kAlt))->value, 0.0, 1e-9);
+}
+
+TEST(GpsInputs, YawOffsetTurnsTheFixAndItsCovariance) {
+  GpsInputs gps;
+  GpsOptions options;
+  options.yawOffset = kPi / 2;  // odom x points north
+  gps.setOptions(options);
+  gps.sample(0, kEast, fix(kLat, kLon, kAlt));
+  const Fix later = fix(north(kLat, 100.0, kAlt), kLon, kAlt);
+  const GpsSample x = *gps.sample(0, kEast, later);
+  const GpsSample y = *gps.sample(1, kNorth, later);
+  EXPECT_NEAR(x.value, 100.0, 1e-3);
+  EXPECT_NEAR(y.value, 0.0, 1e-3);
+  EXPECT_NEAR(*x.variance, 1.21, 1e-12);  // the north variance
+  EXPECT_NEAR(*y.variance, 0.81, 1e-12);
+}
+
+TEST(GpsInputs, CovarianceByType) {
+  GpsInputs gps;
+  // APPROXIMATED (1), DIAGONAL_KNOWN (2), KNOWN (3): the fix's own variances.
+  for (int type : {1, 2, 3}) {
+    const GpsSample s = *gps.sample(0, kUp, fix(kLat, kLon, kAlt, 1, type));
+    ASSERT_TRUE(s.variance);
+    EXPECT_EQ(*s.variance, 3.24);
+    EXPECT_FALSE(s.covarianceUnknown);
+  }
+  // UNKNOWN (0): no variance (the header's R), and the caller is told so to count it.
+  const GpsSample unknown = *gps.sample(0, kEast, fix(kLat, kLon, kAlt, 1, 0));
+  EXPECT_FALSE(unknown.variance);
+  EXPECT_TRUE(unknown.covarianceUnknown);
+}
+
+TEST(GpsInputs, MissingAltitudeAndPosition) {
+  GpsInputs gps;
+  const double nan = std::nan("");
+  // The first fix has no altitude: the datum is at height 0, east and north still work.
+  gps.sample(0, kEast, fix(kLat, kLon, nan));
+  EXPECT_EQ(gps.datum()->altitude, 0.0);
+  EXPECT_NEAR(gps.sample(1, kNorth, fix(north(kLat, 100.0, 0.0), kLon, nan))->value, 100.0, 1e-3);
+  EXPECT_TRUE(std::isnan(gps.sample(2, kUp, fix(kLat, kLon, nan))->value));
+  // A position that is not finite gives NaN (the fusion core drops and counts it).
+  EXPECT_TRUE(std::isnan(gps.sample(0, kEast, fix(nan, kLon, kAlt))->value));
+  EXPECT_TRUE(std::isnan(gps.sample(0, kEast, fix(kLat, INFINITY, kAlt))->value));
+}
+
+}  // namespace

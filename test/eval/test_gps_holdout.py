@@ -1,0 +1,122 @@
+"""Unit tests of tools/eval/gps_holdout.py: the split into fused and held-out fixes, the turn
+of ENU into the odom frame, the held track, the errors at held-out points, the yaw offset
+measured on a track turned by a known angle, and the reduced bag (hand-made, written with
+rosbag) that leaves out exactly the held-out fixes."""
+
+import math
+import os
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
+import evaluate as ev  # noqa: E402
+import gps_holdout as gh  # noqa: E402
+
+try:
+    import rosbag
+    import rospy
+    from sensor_msgs.msg import NavSatFix
+    from std_msgs.msg import Float64
+except ImportError:  # pragma: no cover - Debian's python3-rosbag is a package dependency
+    rosbag = None
+
+
+def fix(t, status=1, lat=49.0, lon=8.0, alt=100.0):
+    return (t, status, lat, lon, alt)
+
+
+class SplitTest(unittest.TestCase):
+    def test_every_nth_valid_fix_is_fused(self):
+        fixes = [fix(float(k)) for k in range(11)]
+        fused, held = gh.split_fixes(fixes, 5)
+        self.assertEqual([f[0] for f in fused], [0.0, 5.0, 10.0])
+        self.assertEqual(len(held), 8)
+        self.assertNotIn(5.0, [f[0] for f in held])
+
+    def test_invalid_fixes_are_in_neither_and_do_not_count(self):
+        fixes = [fix(0.0, status=-1), fix(1.0), fix(2.0), fix(3.0, lat=float("nan")), fix(4.0)]
+        fused, held = gh.split_fixes(fixes, 2)
+        self.assertEqual([f[0] for f in fused], [1.0, 4.0])
+        self.assertEqual([f[0] for f in held], [2.0])
+
+    def test_refuses_to_hold_nothing_out(self):
+        with self.assertRaises(ValueError):
+            gh.split_fixes([fix(0.0)], 1)
+        with self.assertRaises(ValueError):
+            gh.split_fixes([fix(0.0, status=-1)], 5)
+
+
+class OdomFrameTest(unittest.TestCase):
+    def test_to_odom_matches_the_node_convention(self):
+        # Offset 90 deg: the odom x axis points north.
+        x, y = gh.to_odom(0.0, 100.0, math.pi / 2)
+        self.assertAlmostEqual(x, 100.0)
+        self.assertAlmostEqual(y, 0.0)
+        x, y = gh.to_odom(100.0, 0.0, math.pi / 2)
+        self.assertAlmostEqual(x, 0.0)
+        self.assertAlmostEqual(y, -100.0)
+        x, y = gh.to_odom(3.0, 4.0, 0.3)
+        self.assertAlmostEqual(math.hypot(x, y), 5.0)
+
+    def test_calibrated_offset_is_the_turn_of_the_track(self):
+        # A track in the odom frame, and the same track in ENU turned by 40 deg: the offset
+        # measured is 40 deg, whatever the shift.
+        a = math.radians(40.0)
+        t = [0.1 * k for k in range(200)]
+        xs = [0.5 * tk + 0.02 * tk * tk for tk in t]
+        ys = [0.3 * math.sin(0.4 * tk) for tk in t]
+        track = ev.make_trajectory(t, xs, ys)
+        enu = []
+        for tk, xk, yk in zip(t[::20], xs[::20], ys[::20]):
+            e = math.cos(a) * xk - math.sin(a) * yk + 7.0
+            n = math.sin(a) * xk + math.cos(a) * yk - 3.0
+            enu.append((tk, e, n))
+        self.assertAlmostEqual(gh.calibrate_yaw_offset(track, enu, 10.0), a, places=9)
+        # Turning the ENU points by the offset gives the track back (up to the shift).
+        back = [gh.to_odom(e, n, a) for _, e, n in enu]
+        self.assertAlmostEqual(back[1][0] - back[0][0], xs[20] - xs[0], places=9)
+        with self.assertRaises(ValueError):
+            gh.calibrate_yaw_offset(track, enu[:1], 10.0)
+
+
+class ErrorTest(unittest.TestCase):
+    def test_errors_at_points_without_alignment(self):
+        track = ev.make_trajectory([0.0, 10.0], [0.0, 10.0], [0.0, 0.0])
+        errors = gh.holdout_errors(track, [(5.0, 5.0, 3.0), (2.0, 2.0, -4.0), (50.0, 0.0, 0.0)])
+        self.assertEqual(len(errors), 2)  # the last point is outside the track's time range
+        self.assertAlmostEqual(errors[0], 3.0)
+        self.assertAlmostEqual(errors[1], 4.0)
+
+    def test_held_track_holds_each_point_until_the_next(self):
+        held = gh.held_track([(0.0, 1.0, 2.0), (2.0, 5.0, 6.0)])
+        self.assertEqual(ev.interpolate(held, 1.9)[:2], (1.0, 2.0))
+        self.assertEqual(ev.interpolate(held, 2.0)[:2], (5.0, 6.0))
+
+
+@unittest.skipIf(rosbag is None, "python3-rosbag missing")
+class ReducedBagTest(unittest.TestCase):
+    def test_leaves_out_exactly_the_held_out_fixes(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            inp, out = os.path.join(tmp, "in.bag"), os.path.join(tmp, "out.bag")
+            with rosbag.Bag(inp, "w") as bag:
+                for k in range(6):
+                    m = NavSatFix()
+                    m.header.stamp = rospy.Time.from_sec(100.0 + 0.4 * k)
+                    m.latitude = 49.0 + 1e-5 * k
+                    bag.write("/fix", m, rospy.Time.from_sec(100.001 + 0.4 * k))
+                    bag.write("/other", Float64(data=k), rospy.Time.from_sec(100.1 + 0.4 * k))
+            left_out = gh.write_reduced_bag(inp, out, [100.0, 101.2])
+            self.assertEqual(left_out, 4)
+            with rosbag.Bag(out) as bag:
+                fixes = [m for _, m, _ in bag.read_messages(topics=["/fix"])]
+                others = [m for _, m, _ in bag.read_messages(topics=["/other"])]
+            self.assertEqual([round(m.header.stamp.to_sec(), 3) for m in fixes], [100.0, 101.2])
+            self.assertEqual(len(others), 6)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,96 @@
+// GPS inputs (DERIVED_INPUTS EAST, NORTH of a sensor_msgs/NavSatFix) through the code the
+// shipped header config/husky_skid_steer_gps.h generates: its NodeDefinition's reader of /fix
+// on serialized messages. A fix without a valid status is dropped and counted, the first valid
+// fix is the datum, a fix 100 m north (WGS84 meridian radius of curvature at its height) is
+// 100 m along the odom axis the yaw offset says, with the fix's own variances turned alike,
+// and a fix whose covariance type is unknown falls back to the header's R, counted.
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "husky_skid_steer_gps.h"
+
+#include <sf_filter/config/configuration.hpp>
+
+#include "sf_filter/generated/node_definition_of.hpp"
+
+#include "recording_sink.hpp"
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr long kEastInput = 3, kNorthInput = 4;
+constexpr double kLat = 43.5, kLon = 7.25, kAlt = 272.4;
+
+using sf_test::feed;
+using sf_test::readerOf;
+using sf_test::RecordingSink;
+
+sensor_msgs::NavSatFix navSatFix(double lat, double stamp, int status = 1, int type = 2) {
+  sensor_msgs::NavSatFix m;
+  m.header.stamp = ros::Time(stamp);
+  m.status.status = static_cast<std::int8_t>(status);
+  m.latitude = lat;
+  m.longitude = kLon;
+  m.altitude = kAlt;
+  m.position_covariance[0] = 0.81;  // east
+  m.position_covariance[4] = 1.21;  // north
+  m.position_covariance[8] = 3.24;  // up
+  m.position_covariance_type = static_cast<std::uint8_t>(type);
+  return m;
+}
+
+/// Latitude [deg] 100 m north of kLat at height kAlt (meridian radius M + h, WGS84).
+double hundredMetresNorth() {
+  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2 - f);
+  const double s = std::sin(kLat * kPi / 180);
+  const double m = a * (1 - e2) / std::pow(1 - e2 * s * s, 1.5);
+  return kLat + 100.0 / (m + kAlt) * 180 / kPi;
+}
+
+TEST(GpsInput, NamesSayWhatIsDerived) {
+  const auto d = sf_filter::generated::nodeDefinition();
+  EXPECT_EQ(d.description.inputs[kEastInput], "/fix longitude east");
+  EXPECT_EQ(d.description.inputs[kNorthInput], "/fix latitude north");
+}
+
+TEST(GpsInput, StatusDatumYawOffsetAndCovariance) {
+  const auto d = sf_filter::generated::nodeDefinition();
+  const sf_filter::TopicReader& fix = readerOf(d, "/fix");
+  RecordingSink sink;
+  sink.gps().setOptions({std::nullopt, kPi / 2});  // odom x points north
+
+  feed(fix, navSatFix(10.0, 1.0, -1), sink, 0.0);  // STATUS_NO_FIX: dropped, not the datum
+  EXPECT_TRUE(sink.values.empty());
+  EXPECT_EQ(sink.gps().noFix(kEastInput), 1u);
+  EXPECT_EQ(sink.gps().noFix(kNorthInput), 1u);
+
+  feed(fix, navSatFix(kLat, 2.0), sink, 0.0);  // the datum
+  ASSERT_EQ(sink.values.size(), 2u);
+  EXPECT_NEAR(sink.values[0].value, 0.0, 1e-9);
+  EXPECT_NEAR(sink.values[1].value, 0.0, 1e-9);
+  EXPECT_EQ(sink.values[0].stamp, 2.0);
+
+  sink.values.clear();
+  feed(fix, navSatFix(hundredMetresNorth(), 3.0), sink, 0.0);
+  ASSERT_EQ(sink.values.size(), 2u);
+  EXPECT_EQ(sink.values[0].input, kEastInput);
+  EXPECT_NEAR(sink.values[0].value, 100.0, 1e-3);  // odom x: north
+  EXPECT_NEAR(sink.values[1].value, 0.0, 1e-3);
+  EXPECT_NEAR(*sink.values[0].variance, 1.21, 1e-12);  // the north variance
+  EXPECT_NEAR(*sink.values[1].variance, 0.81, 1e-12);
+
+  sink.values.clear();
+  feed(fix, navSatFix(kLat, 4.0, 0, 0), sink, 0.0);  // COVARIANCE_TYPE_UNKNOWN: the header's R
+  ASSERT_EQ(sink.values.size(), 2u);
+  EXPECT_FALSE(sink.values[0].variance);
+  EXPECT_FALSE(sink.values[1].variance);
+  EXPECT_EQ(sink.covarianceFallbacks(kEastInput), 1u);
+  EXPECT_EQ(sink.covarianceFallbacks(kNorthInput), 1u);
+}
+
+}  // namespace

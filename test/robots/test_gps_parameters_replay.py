@@ -1,0 +1,102 @@
+"""The GPS inputs' private parameters through the replay's --params (parsed by the node's own
+code, sf_filter/node/gps_parameters.hpp), on the real Husky recording with
+config/husky_skid_steer_gps.h:
+  - ~datum equal to the recording's first fix gives the same estimates as the default (the
+    first valid fix); a datum 100 m south of it (WGS84 meridian radius at its height) moves
+    every GPS value by 100 m and the estimates' y towards it;
+  - ~gps_yaw_offset turns the fixes: the GPS values of a quarter turn are the default's
+    turned (x = north, y = -east), visible in the final estimate;
+  - a malformed or implausible value is refused with one line naming the parameter.
+The executable comes from $SF_LIB_DIR or the sourced devel space (skipped when not built).
+"""
+
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
+sys.path.insert(0, HERE)
+import gps_reference as gr  # noqa: E402
+import pioneer_nodes  # noqa: E402
+from replay_helpers import read_rows  # noqa: E402
+
+HUSKY_BAG = os.path.join(REPO, "bags", "husky_gps.bag")
+NODE = "sf_husky_skid_steer_gps"
+
+
+def south(lat_deg, metres, height):
+    """Latitude [deg] `metres` south of lat_deg at `height` (meridian radius M + height)."""
+    s = math.sin(math.radians(lat_deg))
+    m = gr.WGS84_A * (1 - gr.WGS84_E2) / (1 - gr.WGS84_E2 * s * s) ** 1.5
+    return lat_deg - math.degrees(metres / (m + height))
+
+
+class GpsParametersReplay(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_nodes.find_lib_dir(NODE)
+        cls.exe = os.path.join(lib_dir or "", NODE)
+        if not os.access(cls.exe, os.X_OK):
+            raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel space)" % NODE)
+        cls.first = next(f for f in gr.read_fixes(HUSKY_BAG) if gr.valid_fix(*f[1:4]))
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def replay(self, yaml_text, name):
+        params = os.path.join(self.tmp.name, name + ".yaml")
+        with open(params, "w") as f:
+            f.write(yaml_text)
+        csv_path = os.path.join(self.tmp.name, name + ".csv")
+        proc = subprocess.run([self.exe, "--replay", HUSKY_BAG, "--csv", csv_path, "--params",
+                               params], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                              universal_newlines=True, timeout=120)
+        rows = read_rows(csv_path) if proc.returncode == 0 else None
+        return proc, rows
+
+    def test_datum_parameter(self):
+        _, default = self.replay("{}\n", "default")
+        t, _, lat, lon, alt = self.first
+        proc, same = self.replay("datum: [%.12f, %.12f, %.6f]\n" % (lat, lon, alt), "same")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(len(same), len(default))
+        for a, b in zip(same, default):
+            self.assertAlmostEqual(a["x0"], b["x0"], places=6)  # the datum written to 1e-12 deg
+            self.assertAlmostEqual(a["x1"], b["x1"], places=6)  # the datum written to 1e-12 deg
+        _, shifted = self.replay("datum: [%.12f, %.12f, %.6f]\n" % (south(lat, 100.0, alt), lon,
+                                                                   alt), "south")
+        # Every fix is now 100 m further north: the estimate's y is pulled north by the first
+        # fused fix already, and ends far north of the default's.
+        self.assertGreater(shifted[-1]["x1"] - default[-1]["x1"], 50.0)
+        self.assertLess(abs(shifted[-1]["x0"] - default[-1]["x0"]), 50.0)
+
+    def test_yaw_offset_turns_the_fixes(self):
+        _, default = self.replay("{}\n", "default")
+        _, quarter = self.replay("gps_yaw_offset: %.15f\n" % (math.pi / 2), "quarter")
+        # The dead reckoning is the same; the fixes are turned (x = north, y = -east), so the
+        # tracks part.
+        end_d, end_q = default[-1], quarter[-1]
+        self.assertGreater(math.hypot(end_d["x0"] - end_q["x0"], end_d["x1"] - end_q["x1"]), 1.0)
+
+    def test_bad_values_are_refused_naming_the_parameter(self):
+        for text, expected in (
+                ("datum: [91.0, 7.0, 0.0]\n", "parameter ~datum: latitude must be in [-90, 90]"),
+                ("datum: [43.0, 7.0]\n", "parameter ~datum: expected [latitude, longitude, altitude]"),
+                ("datum: [43.0, 'east', 0.0]\n", "parameter ~datum longitude: expected a number"),
+                ("gps_yaw_offset: 7.0\n", "parameter ~gps_yaw_offset: expected radians in (-2 pi, 2 pi)")):
+            proc, _ = self.replay(text, "bad")
+            self.assertNotEqual(proc.returncode, 0, text)
+            self.assertIn(expected, proc.stderr + proc.stdout, text)
+
+
+if __name__ == "__main__":
+    unittest.main()
