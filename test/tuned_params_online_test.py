@@ -61,7 +61,7 @@ def nearest(rows, t):
 
 class TunedParamsOnlineTest(unittest.TestCase):
     def test_online_node_and_replay_take_the_tuned_file_alike(self):
-        from sf_pkg.msg import StateEstimateStamped
+        from sf_msgs.msg import StateEstimateStamped
 
         exe = find_executable(NODE)
         with tempfile.TemporaryDirectory(prefix="sf_tuned_online_") as tmp:
