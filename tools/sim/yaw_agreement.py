@@ -16,7 +16,7 @@ left after that slope. Layouts:
              its track widths, latencies, losses, encoder resolution and mean
              accelerometer reading (husky_extras)
 
-  yaw_agreement.py --layout pioneer bags/pioneer_real_seed1.bag
+  yaw_agreement.py --layout pioneer bags/pioneer_seed1.bag
 """
 
 import argparse
