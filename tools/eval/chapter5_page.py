@@ -278,7 +278,7 @@ def write(m, ctx, out_path, img_dir):
       "model of eqs. 5.17–5.18, but the sensors see it through the simulator's realistic "
       "error set (`--realistic husky`, calibrated on a real Husky recording): the wheels' "
       "effective track is 15 % wider than the one the filters convert with, so the wheels "
-      "report 1.15 times the true yaw rate, plus a drifting slip rate (std 0.1 rad/s, 1 s "
+      "report 1.15 times the true yaw rate, plus a drifting slip rate (std 0.11 rad/s, 0.12 s "
       "correlation time), radius errors and their change with load in turns, 1 mm encoder "
       "ticks on top of the 1.4 mm/s noise and 1 mm/s rounding; the gyroscope has a drifting "
       "bias (0.5 mrad/s at the start, random walk 0.05 mrad/s/√s) and a 1 % scale error on "
@@ -443,6 +443,10 @@ def write(m, ctx, out_path, img_dir):
     sec.append("- nav1ctrl closer than nav2 and nav2ctrl: %s (%s m against %s and %s m)." % (
         yes_no(nav1ctrl_beats_nav2), pm(m.stat("nav1ctrl_ukf", "final")),
         pm(m.stat("nav2_ukf", "final")), pm(m.stat("nav2ctrl_ukf", "final"))))
+    ekf_steps = ["%s → %s: %s" % (less, more, change_text(m, more + "_ekf", less + "_ekf"))
+                 for less, more in pairs[1:5]]
+    sec.append("- The steps with the wheels, with the EKF instead of the UKF: %s." %
+               "; ".join(ekf_steps))
     sec.append("- RMSE along the path: nav2 %s m, nav2ctrl %s m (%s), nav3 %s m, nav3ctrl "
                "%s m." % (pm(m.stat("nav2_ukf", "rmse")), pm(m.stat("nav2ctrl_ukf", "rmse")),
                           change_text(m, "nav2ctrl_ukf", "nav2_ukf", "rmse"),
@@ -469,7 +473,11 @@ def write(m, ctx, out_path, img_dir):
                "`config/skid_steer_odom_imu.h` does for the generic robot "
                "([real_robot.md](real_robot.md)). The thesis's real runs may have had such a "
                "weighting; with the variances it lists and a 100 ms period these headers do "
-               "not." % (pm(head["nav2"], 0), pm(head["nav2ctrl"], 0), pm(head["nav3"], 0),
+               "not. Where the UKF and the EKF of one model disagree on a step (the two lists "
+               "above), the final error is a single point of a path that is tens of degrees "
+               "off in heading, and which of two nearly equal paths ends nearer the start is "
+               "chance; the RMSE along the path ranks the models with the wheels within a few "
+               "per cent of each other." % (pm(head["nav2"], 0), pm(head["nav2ctrl"], 0), pm(head["nav3"], 0),
                          pm(head["nav3ctrl"], 0), pm(head["nav1ctrl"], 1)))
     sec.append("")
     figures.append(plot_paths(m, "models.png", img_dir, [
@@ -575,6 +583,12 @@ def write(m, ctx, out_path, img_dir):
                "useless (%s m final error, against %s m for the path from its v and ω): %s." % (
                    yes_no(pf_worse), pm(m.stat("nav3ctrl_pf own pose", "final"), 1),
                    pm(m.stat("nav3ctrl_pf", "final")), yes_no(own_useless)))
+    if not own_useless:
+        sec.append("- The own pose (useless: more than ten times the final error of the path "
+                   "from v and ω) ends %.1f times as far off as that path here, because that "
+                   "path itself carries the wheels' heading error; the own pose still ends %s "
+                   "m off." % (mean_of(m, "nav3ctrl_pf own pose") / mean_of(m, "nav3ctrl_pf"),
+                               pm(m.stat("nav3ctrl_pf own pose", "final"), 1)))
     if not pf_worse:
         sec.append("- Why the PF is not less accurate here: every filter carries the heading "
                    "error of the slipping wheels (the Kalman filters' final errors are %s m), "
@@ -714,7 +728,7 @@ def write(m, ctx, out_path, img_dir):
                "pose with the previous period's velocities (x and y by Δs = v·T of the period "
                "before, eqs. 5.1, 5.5; θ by the previous ω, eq. 5.3), so the path trails the "
                "robot by about two periods; taken two periods earlier, the 100 ms path's RMSE "
-               "is %s m instead of %s m. Against both works eq. 5.14, which sets the "
+               "is %s m instead of %s m (%s). Against both works eq. 5.14, which sets the "
                "acceleration to (cmd_vel.linear.x − v)/T, i.e. the robot reaches the commanded "
                "speed within one period: at 10 ms it demands ten times as much as at 100 ms, "
                "and between two wheel readings (every 100 ms) nine periods pull v to the "
@@ -728,7 +742,10 @@ def write(m, ctx, out_path, img_dir):
                    pm(m.stat(base, "heading"), 1), pm(m.stat(base + " 10ms", "heading"), 1),
                    pm(m.stat("nav3_ukf", "heading"), 1),
                    pm(m.stat("nav3_ukf 10ms", "heading"), 1),
-                   pm(m.delayed_rmse_stat(base, 2, 0.1)), pm(m.stat(base, "rmse"))))
+                   pm(m.delayed_rmse_stat(base, 2, 0.1)), pm(m.stat(base, "rmse")),
+                   "the delay is most of the error"
+                   if m.delayed_rmse_stat(base, 2, 0.1)[0] < 0.7 * m.stat(base, "rmse")[0]
+                   else "here the delay is a small part of the error, the heading most of it"))
     sec.append("")
     figures.append(plot_paths(m, "tuning_r.png", img_dir, [
         ("(1) 100 ms", base), ("(2) R × 10", base + " R*10"),
