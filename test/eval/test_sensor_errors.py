@@ -354,6 +354,20 @@ class HuskyPresetTest(unittest.TestCase):
         p = se.PRESETS["husky"]
         self.assertLess(abs(slope - p["slip_chi"] / (1.0 + p["gyro_scale"])), 0.06, slope)
 
+    def test_residual_correlation_time(self):
+        # The residual after the slope is, per 100 ms wheel sample, the window mean of the
+        # gated Gauss-Markov slip rate plus white noise (wheel noise, ticks, gyro noise). For
+        # window means of such a process the lag correlations satisfy acf(2)/acf(1) =
+        # exp(-T/tau) whatever the white part (yaw_agreement.residual_correlation), so the
+        # estimate recovers the preset's slip_tau, which is the real recording's 0.12 s
+        # (doc/bags.md). Tolerance 50 %: two lag correlations of about 1800 pairs each have a
+        # sampling spread of several percent, and the gate (no slip at rest) and the ticks'
+        # lag-1 anticorrelation (about 1 % of the variance) bend the ratio a little.
+        _, _, _, slope, _ = self.measured()
+        _, _, tau = self.agree.residual_correlation(self.wheel, self.gyro, slope)
+        self.assertIsNotNone(tau)
+        self.assertLess(abs(tau / se.PRESETS["husky"]["slip_tau"] - 1.0), 0.5, tau)
+
     def test_real_order_of_magnitude(self):
         # real skid-steer recordings (doc/bags.md): correlation 0.87 and 0.94, residual std
         # 0.048 and 0.129 rad/s (0.087 after the scale); the simulated run must lie in the

@@ -10,8 +10,10 @@ Usage:
 
 A level f scales the `--realistic husky` preset of tools/sim/pioneer_sim.py (doc/bags.md,
 "Realistic error options") in the effect swept, with every other error option off:
-  slip       --slip-chi 1 + 0.15 f  --slip-std 0.1 f        (f = 1: the preset's slip)
+  slip       --slip-chi 1 + 0.15 f  --slip-std 0.11 f  --slip-tau 0.12   (f = 1: the preset's slip)
   gyro bias  --gyro-bias-init 0.0005 f  --gyro-bias-rw 5e-5 f
+(the values are read from the preset, sensor_errors.PRESETS["husky"]; the slip's correlation
+time is not scaled)
   both       the two together
 For every sweep, level and seed it writes a bag (--duration s, uncompressed) into the work
 directory (default: a temporary one), replays sf_nav2_ekf, sf_nav3_ekf and sf_nav3ctrl_ekf
@@ -36,12 +38,18 @@ import evaluate as ev  # noqa: E402
 import pioneer_nodes  # noqa: E402
 
 SIM = os.path.join(REPO, "tools", "sim", "pioneer_sim.py")
+sys.path.insert(0, os.path.join(REPO, "tools", "sim"))
+import sensor_errors  # noqa: E402
+
+PRESET = sensor_errors.PRESETS["husky"]
 NODES = ["nav2_ekf", "nav3_ekf", "nav3ctrl_ekf"]
 
 
 def sim_args(sweep, f):
-    slip = ["--slip-chi", "%g" % (1 + 0.15 * f), "--slip-std", "%g" % (0.1 * f)]
-    gyro = ["--gyro-bias-init", "%g" % (0.0005 * f), "--gyro-bias-rw", "%g" % (5e-5 * f)]
+    slip = ["--slip-chi", "%g" % (1 + (PRESET["slip_chi"] - 1) * f),
+            "--slip-std", "%g" % (PRESET["slip_std"] * f), "--slip-tau", "%g" % PRESET["slip_tau"]]
+    gyro = ["--gyro-bias-init", "%g" % (PRESET["gyro_bias_init"] * f),
+            "--gyro-bias-rw", "%g" % (PRESET["gyro_bias_rw"] * f)]
     return {"slip": slip, "gyro bias": gyro, "both": slip + gyro}[sweep]
 
 

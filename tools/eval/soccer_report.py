@@ -6,8 +6,9 @@ bag's ground_truth/pose.
 Per bag it prints the accuracy table (tools/eval/evaluate.py) of
   kf              the Kalman filter's position, every 1 ms estimate
   vision          the 32 Hz vision samples at their own stamps (the sensor's noise alone)
-  vision held     the latest vision sample at every 1 ms estimate time: what a 1 kHz
-                  controller gets from vision alone (noise plus the motion since the frame)
+  vision held     the latest vision sample to have arrived (bag time) at every 1 ms estimate
+                  time: what a 1 kHz controller gets from vision alone (noise plus the
+                  motion since the frame, and its transport delay in a realistic bag)
   encoder         the 1 kHz encoder positions (the drifting bias alone)
 and, for every stretch of lost vision frames (a gap in vision/pose longer than 1.5 frame
 periods), the largest error of the filter and of the held vision inside it.
@@ -39,6 +40,25 @@ DEFAULT_BAGS = [os.path.join(REPO, "bags", b) for b in ("soccer_seed1.bag", "soc
 VISION_TOPIC = "vision/pose"
 ENCODER_TOPIC = "encoder/pose"
 GAP_FACTOR = 1.5  # a vision gap: consecutive frames more than this many periods apart
+
+
+def load_arrivals(bag_path, topic):
+    """The PointStamped samples of `topic` at their arrival (bag) times, not their header
+    stamps: what a controller holding the latest frame has. With the transport delay of a
+    realistic bag (soccer_sim.py --realistic wang) a frame arrives after its stamp; a frame
+    recorded twice counts once, at its first arrival."""
+    import rosbag
+    t, x, y, seen = [], [], [], set()
+    with rosbag.Bag(bag_path) as bag:
+        for _, msg, stamp in bag.read_messages(topics=[topic]):
+            key = (msg.header.seq, msg.header.stamp.to_nsec())
+            if key in seen:
+                continue
+            seen.add(key)
+            t.append(stamp.to_sec())
+            x.append(msg.point.x)
+            y.append(msg.point.y)
+    return evaluate.make_trajectory(t, x, y)
 
 
 def zero_order_hold(samples, times):
@@ -121,7 +141,7 @@ def report_bag(bag, exe, replay_dir, out_dir, timeout):
     kf = evaluate.load_result_csv(csv_path, ["x0", "x1"])
     vision = evaluate.load_pose_bag(bag, VISION_TOPIC, with_heading=False)
     encoder = evaluate.load_pose_bag(bag, ENCODER_TOPIC, with_heading=False)
-    held = zero_order_hold(vision, kf.t)
+    held = zero_order_hold(load_arrivals(bag, VISION_TOPIC), kf.t)
     results = [("kf", kf), ("vision", vision), ("vision held", held), ("encoder", encoder)]
     evaluations = [(label, evaluate.evaluate(tr, truth)) for label, tr in results]
     timing = evaluate.parse_summary_timing(summary)

@@ -23,7 +23,7 @@ Realistic errors (wheel slip, radius and load, encoder ticks, gyro bias walk and
 accelerometer tilt and bias, latency, losses, duplicates; sensor_errors.py) are off by
 default; --realistic husky switches on a calibrated set:
 
-  pioneer_sim.py --seed 1 --duration 90 --realistic husky --out bags/pioneer_real_seed1.bag
+  pioneer_sim.py --seed 1 --duration 90 --realistic husky --out bags/pioneer_seed1.bag
 """
 
 import argparse

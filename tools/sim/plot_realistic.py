@@ -7,7 +7,8 @@ paths of the ideal and realistic bags (wheels only, and wheel speed with gyro he
 against the true path. Prints the statistics and the final dead-reckoning errors (the
 true path ends at its start).
 
-  plot_realistic.py --ideal bags/pioneer_seed1.bag --realistic bags/pioneer_real_seed1.bag \\
+  make_bags.sh --ideal --out /tmp/ideal
+  plot_realistic.py --ideal /tmp/ideal/pioneer_seed1_ideal.bag --realistic bags/pioneer_seed1.bag \\
       [--husky husky_gps_data.bag] --out doc/img/bags/realistic_pioneer.png
 """
 

@@ -340,8 +340,10 @@ class ErrorProfile:
 # Calibrated sets (doc/bags.md explains each value and its source).
 PRESETS = {
     # Clearpath Husky-like skid steer on a floor that differs from the one its track was
-    # calibrated on; latencies measured in the real Husky recording.
-    "husky": dict(slip_chi=1.15, slip_std=0.10, slip_tau=1.0, lateral_slip=0.02,
+    # calibrated on; the slip rate's correlation time (0.12 s) and, through it, its std, the
+    # encoder step, the latencies and the tilt read from the real Husky recording
+    # (yaw_agreement.py --layout husky; doc/bags.md, "Calibration against a real recording").
+    "husky": dict(slip_chi=1.15, slip_std=0.11, slip_tau=0.12, lateral_slip=0.02,
                   radius_error_left=0.005, radius_error_right=-0.003, radius_load_coef=0.02,
                   encoder_step=0.001,
                   gyro_bias_init=0.0005, gyro_bias_rw=5e-5, gyro_scale=0.01,

@@ -4,8 +4,10 @@
 For every wheel/odometry sample the gyro's yaw rate is interpolated linearly at the
 sample's time, and the script prints the number of pairs, the correlation of the two
 series, the standard deviation of their difference (wheels minus gyro), the
-least-squares slope of wheels on gyro through the origin, and the standard deviation
-left after that slope. Layouts:
+least-squares slope of wheels on gyro through the origin, the standard deviation
+left after that slope, and that residual's autocorrelation at one and two samples with the
+correlation time it implies (residual_correlation; the samples are 10 Hz in every layout).
+Layouts:
 
   pioneer    velocity_wheel_left/right (mm/s, Float32, bag time), R = 0.3 m,
              angular_velocity.vector.z (header stamp)
@@ -16,7 +18,7 @@ left after that slope. Layouts:
              its track widths, latencies, losses, encoder resolution and mean
              accelerometer reading (husky_extras)
 
-  yaw_agreement.py --layout pioneer bags/pioneer_real_seed1.bag
+  yaw_agreement.py --layout pioneer bags/pioneer_seed1.bag
 """
 
 import argparse
@@ -52,6 +54,24 @@ def statistics(wheel, gyro):
     mr = sum(rest) / n
     resid_slope = math.sqrt(sum((d - mr) ** 2 for d in rest) / n)
     return n, swg / math.sqrt(sww * sgg), resid, slope, resid_slope
+
+
+def residual_correlation(wheel, gyro, slope, period=0.1):
+    """Autocorrelation of the residual wheels - slope * gyro at lags of 1 and 2 samples, and
+    the correlation time it implies. A first-order Gauss-Markov disturbance with correlation
+    time tau plus white noise has acf(k) = c exp(-k period / tau) for k >= 1 (c < 1 the
+    disturbance's share of the variance), so tau = -period / ln(acf(2) / acf(1)), whatever
+    the white part. Returns (acf1, acf2, tau or None)."""
+    rest = [a - slope * b for a, b in zip(wheel, gyro)]
+    n = len(rest)
+    m = sum(rest) / n
+    d = [x - m for x in rest]
+    var = sum(x * x for x in d)
+    acf = [sum(d[i] * d[i + k] for i in range(n - k)) / var for k in (1, 2)]
+    tau = None
+    if 0.0 < acf[1] < acf[0]:
+        tau = -period / math.log(acf[1] / acf[0])
+    return acf[0], acf[1], tau
 
 
 def pair(wheel_samples, gyro_samples):
@@ -165,6 +185,9 @@ def main(argv=None):
         gyro_std = math.sqrt(sum((x - mg) ** 2 for x in g) / n)
         print("%s pairs=%d corr=%.3f resid_std=%.4frad/s slope=%.3f resid_after_slope=%.4frad/s gyro_std=%.3frad/s"
               % (path, n, corr, resid, slope, resid_slope, gyro_std))
+        acf1, acf2, tau = residual_correlation(w, g, slope)
+        print("%s residual after the slope: acf(1 sample)=%.3f acf(2 samples)=%.3f correlation_time=%s"
+              % (path, acf1, acf2, "%.2fs" % tau if tau is not None else "-"))
         if args.layout == "husky":
             husky_extras(path)
     return 0
