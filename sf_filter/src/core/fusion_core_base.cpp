@@ -74,17 +74,19 @@ FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, I
       entries_(static_cast<std::size_t>(inputs)),
       control_(Eigen::VectorXd::Zero(controls)),
       nis_(canPredict ? options_.nisWindow : 0) {
-  for (Index i = 0; i < inputs; ++i) ring_->aligners.emplace_back(inputOptions(i).alignment);
+  for (Index i = 0; i < inputs; ++i) {
+    ring_->aligners.emplace_back(inputOptions(i).alignment, inputOptions(i).angle);
+  }
   // A power of two, so that the slot of a period is a bit mask away.
-  const auto needed = static_cast<std::size_t>(
-      std::floor(options_.maxMeasurementLag / options_.period + 1e-9) + 3);
+  const auto needed =
+      static_cast<std::size_t>(std::floor(options_.maxMeasurementLag / options_.period + 1e-9) + 3);
   std::size_t slots = 1;
   while (slots < needed) slots *= 2;
   Ring::OpenPeriod empty;
   empty.control = Eigen::VectorXd::Zero(controls);
   empty.controlSet = Eigen::Array<bool, Eigen::Dynamic, 1>::Constant(controls, false);
   for (Index i = 0; i < inputs; ++i) {
-    empty.inputs.emplace_back(inputOptions(i).alignment.historyLength());
+    empty.inputs.emplace_back(inputOptions(i).alignment.historyLength(), inputOptions(i).angle);
   }
   ring_->open.assign(slots, empty);
   openWindow();
@@ -100,8 +102,7 @@ FusionCoreBase::RingPtr& FusionCoreBase::RingPtr::operator=(const RingPtr& other
 FusionCoreBase::RingPtr::~RingPtr() = default;
 
 const InputOptions& FusionCoreBase::inputOptions(Index input) const {
-  return options_.inputs.empty() ? kDefaultInput
-                                 : options_.inputs[static_cast<std::size_t>(input)];
+  return options_.inputs.empty() ? kDefaultInput : options_.inputs[static_cast<std::size_t>(input)];
 }
 
 bool FusionCoreBase::timedOut(Index input, double t) const {
