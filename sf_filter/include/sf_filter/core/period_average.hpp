@@ -59,6 +59,13 @@ class PeriodAverage {
     return angle_ ? estimation::wrapAngle(std::atan2(sinSum_, cosSum_)) : sum_ / count_;
   }
 
+  /// The derivative of mean() by the reading `value` of the period: 1 / k, for angles
+  /// cos(value - m) / R (the weights of the variance above). Requires hasMean().
+  double weightOf(double value) const {
+    if (!angle_) return 1.0 / count_;
+    return std::cos(value - mean()) / std::hypot(sinSum_, cosSum_);
+  }
+
   /// True when every value of the period carried its own variance.
   bool hasVariance() const { return count_ > 0 && varianceCount_ == count_; }
   /// Variance of the mean of independent values: sum(var_i) / k^2, for angles

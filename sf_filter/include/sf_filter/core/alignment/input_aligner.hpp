@@ -46,6 +46,17 @@ class InputAligner {
     return AlignedValue{period.newest().value(), period.newest().variance()};
   }
 
+  /// The derivative of measured(period)'s value by the period's `ordinal`-th reading (1 for
+  /// the first), whose value was `value`: the mean's weight for AVERAGE, 1 for the newest
+  /// reading and 0 for the others under the other policies. Used to carry the covariances
+  /// between inputs of one message into the aligned values. Requires a measured value.
+  double weightOf(const InputPeriod& period, std::uint32_t ordinal, double value) const {
+    if (policy_.kind == AlignmentKind::Average && period.average().hasMean()) {
+      return period.average().weightOf(value);
+    }
+    return ordinal == period.count() ? 1.0 : 0.0;
+  }
+
   /// Values of the period that measured() leaves out: all but the newest for LAST and
   /// SAMPLED (HOLD and FILL shift every sample into their history).
   std::uint32_t superseded(const InputPeriod& period) const {
