@@ -64,6 +64,12 @@ class FusionDiagnostics {
     estimationValues_.emplace_back(std::move(key), std::move(value));
   }
 
+  /// Adds `key` with `value(i)` to input i's reports where it is not empty (counters kept by
+  /// the node: covariances that fell back to the header's R, say).
+  void addInputValue(std::string key, std::function<std::string(std::size_t)> value) {
+    inputValues_.emplace_back(std::move(key), std::move(value));
+  }
+
   /// Publishes one report now.
   void update() {
     updater_.force_update();
@@ -121,6 +127,10 @@ class FusionDiagnostics {
                          " since the last report)");
       s.add("dropped before the filter", std::to_string(total));
     }
+    for (const auto& kv : inputValues_) {
+      const std::string value = kv.second(i);
+      if (!value.empty()) s.add(kv.first, value);
+    }
   }
 
   EstimationTotals totals() const {
@@ -157,6 +167,7 @@ class FusionDiagnostics {
   std::vector<InputLossSource> lossSources_;
   std::vector<std::vector<std::uint64_t>> lossBefore_;  ///< per source, per input
   std::vector<std::pair<std::string, std::function<std::string()>>> estimationValues_;
+  std::vector<std::pair<std::string, std::function<std::string(std::size_t)>>> inputValues_;
   EstimationTotals beforeEstimation_;
   double previousClock_ = std::numeric_limits<double>::quiet_NaN();  ///< NaN: no report yet
   double previousRosTime_ = std::numeric_limits<double>::quiet_NaN();

@@ -95,6 +95,11 @@ class FusionNode final : public MessageSink {
              w.expected;
     };
     diagnostics_.addLossSource(wrongType);
+    // INPUT_COVARIANCE: messages whose covariance was unknown (all zero, -1 first) used R.
+    diagnostics_.addInputValue("covariance unknown, header R used", [this](std::size_t i) {
+      const std::uint64_t n = covarianceFallbacks(static_cast<Index>(i));
+      return n ? std::to_string(n) : std::string();
+    });
     if (aligner_) {
       InputLossSource unrotated;
       unrotated.count = [this](std::size_t i) { return aligner_->dropped(i); };
