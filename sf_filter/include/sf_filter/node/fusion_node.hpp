@@ -176,6 +176,17 @@ class FusionNode final : public MessageSink {
     }
   }
 
+  void measurementBlock(const Index* inputs, const double* values, const double* covariance,
+                        int count, double now, double stamp) override {
+    const Rejection r = core_.addMeasurementBlock(inputs, values, covariance, count, now, stamp);
+    if (r != Rejection::None) {
+      ROS_WARN_THROTTLE(5.0, "dropped a value of the covariance block of input %ld (%s): %s",
+                        static_cast<long>(inputs[0]),
+                        description_.inputs.at(static_cast<std::size_t>(inputs[0])).c_str(),
+                        toString(r));
+    }
+  }
+
   void control(Index index, double value) override {
     if (core_.addControl(index, value) != Rejection::None) {
       ROS_WARN_THROTTLE(5.0, "dropped a non-finite value of control %ld (%s)",
