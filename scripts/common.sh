@@ -25,7 +25,8 @@ SF_PACKAGE=sf_pkg
 # sf_estimation's sanitizer and libFuzzer checks (sf_estimation/scripts/sanitizer_checks.py).
 # python3-diagnostic-msgs: the Python messages of /diagnostics, for `rostopic echo
 # /diagnostics`, tools/diagnostics_monitor.py and its test (ros-diagnostic-msgs has only the
-# .msg files).
+# .msg files). python3-rosservice, python3-rostopic: the rostests that look up the type of a
+# running service or topic (set_pose, covariance_block).
 SF_DEB_PACKAGES=(
   ros-core-dev catkin libroscpp-dev librosbag-dev python3-rostest rosbash
   libtf2-ros-dev libtf2-geometry-msgs-dev
@@ -33,7 +34,7 @@ SF_DEB_PACKAGES=(
   libdiagnostic-updater-dev libtopic-tools-dev ros-message-generation ros-message-runtime
   libeigen3-dev libboost-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
-  python3-diagnostic-msgs
+  python3-diagnostic-msgs python3-rosservice python3-rostopic
   cmake g++
   clang libclang-rt-14-dev
 )
