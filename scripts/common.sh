@@ -29,6 +29,8 @@ SF_PACKAGE=sf_pkg
 # .msg files). tf2-tools: tf2_ros's executables, `rosrun tf2_ros static_transform_publisher`
 # (launch/diff_drive_odom_imu.launch's imu_mount, doc/spatial_alignment.md).
 # libgeographiclib-dev: the WGS84 geodesy of the GPS inputs (GeographicLib::LocalCartesian).
+# python3-rosservice, python3-rostopic: the rostests that look up the type of a
+# running service or topic (set_pose, covariance_block).
 SF_DEB_PACKAGES=(
   ros-core-dev catkin libroscpp-dev librosbag-dev python3-rostest rosbash
   libtf2-ros-dev libtf2-geometry-msgs-dev
@@ -37,7 +39,7 @@ SF_DEB_PACKAGES=(
   libeigen3-dev libboost-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   libnlopt-dev libnlopt-cxx-dev
   python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
-  python3-diagnostic-msgs tf2-tools
+  python3-diagnostic-msgs tf2-tools python3-rosservice python3-rostopic
   libgeographiclib-dev
   cmake g++
   clang libclang-rt-14-dev

@@ -2,9 +2,11 @@
 """set_pose and initialpose at run time (test/set_pose.test): a fusion node with POSE_OUT
 (test/configs/derived_inputs_ekf.h, state (x, y, yaw, v, omega), no sensor publishing) is sent
 a geometry_msgs/PoseWithCovarianceStamped on set_pose, then on /initialpose (rviz's 2D Pose
-Estimate). Each time the published nav_msgs/Odometry must hold the sent pose (v = 0, so the
-prediction keeps it) and, in its x, y, yaw slots, the sent covariance block plus at most the
-growth of the periods since (bound below).
+Estimate), and through the ~set_pose service. Each time the published nav_msgs/Odometry must
+hold the sent pose (v = 0, so the prediction keeps it) and, in its x, y, yaw slots, the sent
+covariance block plus at most the growth of the periods since (bound below). A pose the
+service refuses (a negative variance) is answered with the reason and leaves the pose as it
+was; the estimation diagnostics count both.
 """
 
 import math
@@ -12,10 +14,16 @@ import sys
 import time
 import unittest
 
+import rosservice
 import rospy
 import rostest
+from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import PoseWithCovarianceStamped
+from roslib.message import get_service_class
 from nav_msgs.msg import Odometry
+
+
+SERVICE = "/derived_inputs/set_pose"
 
 
 def pose_message(x, y, yaw, covariance):
@@ -47,6 +55,8 @@ class SetPoseTest(unittest.TestCase):
         # The node publishes its state every period from the start; odometry only once a
         # period had a measured value or a pose was set (no pose at the origin before).
         rospy.Subscriber("/derived_inputs/state", rospy.AnyMsg, self.states.append)
+        self.diagnostics = []
+        rospy.Subscriber("/diagnostics", DiagnosticArray, self.diagnostics.append)
 
     def wait_for(self, predicate, seconds):
         deadline = time.monotonic() + seconds
@@ -56,13 +66,33 @@ class SetPoseTest(unittest.TestCase):
             time.sleep(0.02)
         return False
 
-    def check(self, topic, x, y, yaw, covariance):
+    def send(self, topic, message):
+        """Publishes `message` on `topic` once the node listens; returns the time it did."""
         publisher = rospy.Publisher(topic, PoseWithCovarianceStamped, queue_size=1, latch=True)
         self.assertTrue(self.wait_for(lambda: publisher.get_num_connections() >= 1, 20.0),
                         "the node did not subscribe to " + topic)
-        self.assertTrue(self.wait_for(lambda: self.states, 20.0), "no ~state from the node")
         sent = rospy.Time.now()
-        publisher.publish(pose_message(x, y, yaw, covariance))
+        publisher.publish(message)
+        return sent
+
+    def call(self, message):
+        """Calls the node's ~set_pose service with `message`; returns its response. The type
+        is read from the running service, so the test does not name the package defining it."""
+        rospy.wait_for_service(SERVICE, timeout=20.0)
+        service = rospy.ServiceProxy(SERVICE, get_service_class(rosservice.get_service_type(SERVICE)))
+        return service(pose=message)
+
+    def check(self, topic, x, y, yaw, covariance):
+        self.assertTrue(self.wait_for(lambda: self.states, 20.0), "no ~state from the node")
+        message = pose_message(x, y, yaw, covariance)
+        if topic == SERVICE:
+            rospy.wait_for_service(SERVICE, timeout=20.0)
+            sent = rospy.Time.now()
+            response = self.call(message)
+            self.assertTrue(response.success, response.message)
+            self.assertEqual(response.message, "")
+        else:
+            sent = self.send(topic, message)
 
         def arrived():
             return [m for m in self.odometry if m.header.stamp > sent + rospy.Duration(0.15)]
@@ -89,11 +119,39 @@ class SetPoseTest(unittest.TestCase):
                 self.assertAlmostEqual(c[r * 6 + k], v, delta=growth)
         return odom
 
-    def test_set_pose_then_initialpose(self):
+    def pose_counts(self, after):
+        """(poses set, poses refused) of the newest estimation report stamped after `after`,
+        None before there is one."""
+        for array in reversed(self.diagnostics):
+            if array.header.stamp <= after:
+                break
+            for status in array.status:
+                if status.name.endswith("derived_inputs: estimation"):
+                    values = {v.key: v.value for v in status.values}
+                    return int(values["poses set"]), int(values["poses refused"])
+        return None
+
+    def test_set_pose_then_initialpose_then_service(self):
         self.check("/set_pose", 3.0, -2.0, 1.0, {(0, 0): 0.25, (1, 1): 0.16, (5, 5): 0.04,
                                                    (0, 1): 0.05})
         # rviz's pose estimate, across the seam of the heading.
         self.check("/initialpose", -1.0, 5.0, -3.1, {(0, 0): 0.5, (1, 1): 0.5, (5, 5): 0.07})
+        # The service, with a correlated block.
+        self.check(SERVICE, 0.5, 1.5, 2.0, {(0, 0): 0.3, (1, 1): 0.2, (5, 5): 0.1, (1, 5): 0.02})
+        # Refused: a negative variance is no covariance. The answer says why; the pose stays.
+        response = self.call(pose_message(9.0, 9.0, 0.0, {(0, 0): -1.0, (1, 1): 0.2, (5, 5): 0.1}))
+        self.assertFalse(response.success)
+        self.assertIn("covariance", response.message.lower())
+        refused = rospy.Time.now()
+        self.assertTrue(self.wait_for(
+            lambda: [m for m in self.odometry if m.header.stamp > refused], 5.0))
+        after = [m for m in self.odometry if m.header.stamp > refused][0].pose.pose.position
+        self.assertAlmostEqual(after.x, 0.5, places=6)
+        self.assertAlmostEqual(after.y, 1.5, places=6)
+        # Three poses set (two topics, one service call), one refused.
+        self.assertTrue(self.wait_for(lambda: self.pose_counts(refused) is not None, 10.0),
+                        "no estimation diagnostics after the refused pose")
+        self.assertEqual(self.pose_counts(refused), (3, 1))
 
 
 if __name__ == "__main__":

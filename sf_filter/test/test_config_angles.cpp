@@ -29,6 +29,13 @@ TEST(ConfigAngles, DeclarationsReachTheFilter) {
   EXPECT_FALSE(filter.angleMeasurements()(1));
 }
 
+TEST(ConfigAngles, AngleInputsAreAnglesForTheirAlignmentToo) {
+  const auto inputs = sf_config::defaultInputOptions();
+  ASSERT_EQ(inputs.size(), 2u);
+  EXPECT_TRUE(inputs[0].angle);  // the compass: circular mean, unwrapped holds
+  EXPECT_FALSE(inputs[1].angle);
+}
+
 TEST(ConfigAngles, CompassInnovationIsWrapped) {
   // Heading 3.1 with P = I (the default P0), compass -3.1 with R = 0.05, the range missing,
   // no motion (u = 0): the heading's prior variance is 1 + 0.001 and the compass update is

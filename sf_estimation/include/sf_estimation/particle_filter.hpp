@@ -247,7 +247,7 @@ class ParticleFilterSIR {
   void weigh(const Measurement<M>& z) {
     const Index m = measurementSize(), p = particleCount();
     const Matrix<M, M>* whitening = &fullWhitening_;
-    if (z.availableCount() != m || z.varianceGiven.any()) {
+    if (z.availableCount() != m || z.varianceGiven.any() || z.covarianceGiven.any()) {
       effectiveMeasurementNoise(R_, z, reducedR_);
       maskedNoise_.compute(reducedR_);
       if (maskedNoise_.info() != Eigen::Success) {

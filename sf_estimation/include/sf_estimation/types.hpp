@@ -19,6 +19,10 @@ using Matrix = Eigen::Matrix<double, Rows, Cols>;
 template <int Rows>
 using Mask = Eigen::Matrix<bool, Rows, 1>;
 
+/// A flag per pair of measurement entries (covariances given for a step).
+template <int Rows>
+using PairMask = Eigen::Matrix<bool, Rows, Rows>;
+
 /// Number of sigma points of the unscented transform for a state of size n.
 constexpr int sigmaPointCount(int n) { return n == Dynamic ? Dynamic : 2 * n + 1; }
 

@@ -1,7 +1,11 @@
 #include "sf_filter/core/fusion_core_base.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
+
+#include <Eigen/Cholesky>
 
 #include <sf_estimation/errors.hpp>
 
@@ -13,16 +17,27 @@ namespace sf_filter {
 
 /// The schedule, the open periods and the per-input aligners.
 struct FusionCoreBase::Ring {
+  /// The covariance of two values of one message placed in one period (a < b), with the
+  /// values and their ordinals in their inputs' periods, to find their weights in the
+  /// aligned values.
+  struct CrossTerm {
+    Index a = 0, b = 0;
+    double covariance = 0.0, valueA = 0.0, valueB = 0.0;
+    std::uint32_t ordinalA = 0, ordinalB = 0;
+  };
+
   /// What arrived for one not yet estimated period.
   struct OpenPeriod {
     std::uint64_t index = 0;  ///< the period the slot holds
     std::vector<InputPeriod> inputs;
     Eigen::VectorXd control;
     Eigen::Array<bool, Eigen::Dynamic, 1> controlSet;  ///< controls received in the period
+    std::vector<CrossTerm> cross;  ///< cleared, not freed: no allocation once warmed up
 
     void clear() {
       for (InputPeriod& in : inputs) in.clear();
       controlSet.setConstant(false);
+      cross.clear();
     }
   };
 
@@ -74,17 +89,19 @@ FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, I
       entries_(static_cast<std::size_t>(inputs)),
       control_(Eigen::VectorXd::Zero(controls)),
       innovations_(canPredict ? options_.nisWindow : 0, static_cast<std::size_t>(inputs)) {
-  for (Index i = 0; i < inputs; ++i) ring_->aligners.emplace_back(inputOptions(i).alignment);
+  for (Index i = 0; i < inputs; ++i) {
+    ring_->aligners.emplace_back(inputOptions(i).alignment, inputOptions(i).angle);
+  }
   // A power of two, so that the slot of a period is a bit mask away.
-  const auto needed = static_cast<std::size_t>(
-      std::floor(options_.maxMeasurementLag / options_.period + 1e-9) + 3);
+  const auto needed =
+      static_cast<std::size_t>(std::floor(options_.maxMeasurementLag / options_.period + 1e-9) + 3);
   std::size_t slots = 1;
   while (slots < needed) slots *= 2;
   Ring::OpenPeriod empty;
   empty.control = Eigen::VectorXd::Zero(controls);
   empty.controlSet = Eigen::Array<bool, Eigen::Dynamic, 1>::Constant(controls, false);
   for (Index i = 0; i < inputs; ++i) {
-    empty.inputs.emplace_back(inputOptions(i).alignment.historyLength());
+    empty.inputs.emplace_back(inputOptions(i).alignment.historyLength(), inputOptions(i).angle);
   }
   ring_->open.assign(slots, empty);
   openWindow();
@@ -100,8 +117,7 @@ FusionCoreBase::RingPtr& FusionCoreBase::RingPtr::operator=(const RingPtr& other
 FusionCoreBase::RingPtr::~RingPtr() = default;
 
 const InputOptions& FusionCoreBase::inputOptions(Index input) const {
-  return options_.inputs.empty() ? kDefaultInput
-                                 : options_.inputs[static_cast<std::size_t>(input)];
+  return options_.inputs.empty() ? kDefaultInput : options_.inputs[static_cast<std::size_t>(input)];
 }
 
 bool FusionCoreBase::timedOut(Index input, double t) const {
@@ -113,6 +129,73 @@ bool FusionCoreBase::timedOut(Index input, double t) const {
 
 Rejection FusionCoreBase::addMeasurement(Index input, double now, double value,
                                          std::optional<double> variance, double stamp) {
+  std::uint64_t period = 0;
+  return place(input, now, value, variance, stamp, period);
+}
+
+Rejection FusionCoreBase::addMeasurementBlock(const Index* inputs, const double* values,
+                                              const double* covariance, int count, double now,
+                                              double stamp) {
+  if (count < 1 || count > kMaxBlockSize) {
+    throw std::invalid_argument("a covariance block covers 1 to " + std::to_string(kMaxBlockSize) +
+                                " inputs, got " + std::to_string(count));
+  }
+  for (int r = 0; r < count; ++r) {
+    if (inputs[r] < 0 || inputs[r] >= inputCount()) return Rejection::UnknownInput;
+  }
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxBlockSize, kMaxBlockSize> block(
+      count, count);
+  bool covariant = true;
+  for (int r = 0; r < count; ++r) {
+    for (int c = 0; c < count; ++c) {
+      block(r, c) = covariance[r * count + c];
+      covariant =
+          covariant && std::isfinite(block(r, c)) && block(r, c) == covariance[c * count + r];
+    }
+  }
+  covariant = covariant && Eigen::LLT<decltype(block)>(block).info() == Eigen::Success;
+  if (!covariant) {
+    for (int r = 0; r < count; ++r) {
+      InputCounters& c = counters_[static_cast<std::size_t>(inputs[r])];
+      ++c.received;
+      c.lastArrival = now;
+      ++c.badVariance;
+    }
+    return Rejection::BadVariance;
+  }
+  Rejection first = Rejection::None;
+  std::array<std::uint64_t, kMaxBlockSize> period{};
+  std::array<bool, kMaxBlockSize> placed{};
+  for (int r = 0; r < count; ++r) {
+    const Rejection why =
+        place(inputs[r], now, values[r], block(r, r), stamp, period[static_cast<std::size_t>(r)]);
+    placed[static_cast<std::size_t>(r)] = why == Rejection::None;
+    if (first == Rejection::None) first = why;
+  }
+  for (int r = 0; r < count; ++r) {
+    for (int c = r + 1; c < count; ++c) {
+      const auto i = static_cast<std::size_t>(r), j = static_cast<std::size_t>(c);
+      if (!placed[i] || !placed[j] || period[i] != period[j] || inputs[r] == inputs[c]) continue;
+      Ring::OpenPeriod& slot = ring_->slotOf(period[i]);
+      const bool ordered = inputs[r] < inputs[c];
+      const int a = ordered ? r : c, b = ordered ? c : r;
+      Ring::CrossTerm t;
+      t.a = inputs[a];
+      t.b = inputs[b];
+      t.covariance = block(r, c);
+      t.valueA = values[a];
+      t.valueB = values[b];
+      t.ordinalA = slot.inputs[static_cast<std::size_t>(t.a)].count();
+      t.ordinalB = slot.inputs[static_cast<std::size_t>(t.b)].count();
+      slot.cross.push_back(t);
+    }
+  }
+  return first;
+}
+
+Rejection FusionCoreBase::place(Index input, double now, double value,
+                                std::optional<double> variance, double stamp,
+                                std::uint64_t& period) {
   if (input < 0 || input >= inputCount()) return Rejection::UnknownInput;
   InputCounters& c = counters_[static_cast<std::size_t>(input)];
   const InputOptions& o = inputOptions(input);
@@ -158,6 +241,7 @@ Rejection FusionCoreBase::addMeasurement(Index input, double now, double value,
   }
   if (byStamp && beyond) ++c.aheadOfClock;
   ring_->slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time, now);
+  period = k;
   return Rejection::None;
 }
 
@@ -249,6 +333,33 @@ void FusionCoreBase::alignInputs(Prediction& prediction) {
       entry.value = v->value;
       entry.variance = v->variance;
     }
+  }
+  alignCovariances();
+}
+
+void FusionCoreBase::alignCovariances() {
+  covariances_.clear();
+  const Ring::OpenPeriod& slot = ring_->slotOf(ring_->schedule.index());
+  for (const Ring::CrossTerm& t : slot.cross) {
+    const auto a = static_cast<std::size_t>(t.a), b = static_cast<std::size_t>(t.b);
+    // Only between measured values that carry the message's variances (not substitutes, not
+    // gated, not a period that mixed in values without one).
+    if (!entries_[a].measured || !entries_[b].measured || !entries_[a].variance ||
+        !entries_[b].variance) {
+      continue;
+    }
+    const double weight = ring_->aligners[a].weightOf(slot.inputs[a], t.ordinalA, t.valueA) *
+                          ring_->aligners[b].weightOf(slot.inputs[b], t.ordinalB, t.valueB);
+    if (weight == 0.0) continue;
+    PeriodCovariance* pair = nullptr;
+    for (PeriodCovariance& p : covariances_) {
+      if (p.a == t.a && p.b == t.b) pair = &p;
+    }
+    if (!pair) {
+      covariances_.push_back(PeriodCovariance{t.a, t.b, 0.0});
+      pair = &covariances_.back();
+    }
+    pair->covariance += weight * t.covariance;
   }
 }
 

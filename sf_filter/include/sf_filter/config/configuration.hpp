@@ -57,7 +57,7 @@
 //   ALIGN_BY_STAMP, MAX_MEASUREMENT_LAG      o    o    o    o    o    o    o
 //   INPUT_TIMEOUT, INPUT_RANGE               o    o    o    o    o    o    o
 //   ANGLE_STATES, ANGLE_INPUTS               o    o    o    o    x    x    x
-//   DERIVED_INPUTS, INPUT_COVARIANCE         o    o    o    o    o    o    o
+//   DERIVED_INPUTS, INPUT_COVARIANCE(_BLOCK) o    o    o    o    o    o    o
 //     (ROLL, PITCH, YAW derived inputs:      o    o    o    o    x    x    x)
 //   R required (#error if missing), o optional, c required if TOPICS_IN_CTRL is defined,
 //   x not allowed (#error), - not used (a "#pragma GCC warning" says it is ignored).
@@ -132,6 +132,9 @@
 //   INPUT_COVARIANCE            ((i)(covariance array member)(entry)) per TOPICS_IN entry taking
 //                               its variance from the message's covariance array; "unknown"
 //                               arrays (all zero, -1 first) fall back to R (input_covariance.hpp).
+//   INPUT_COVARIANCE_BLOCK      ((inputs)(covariance array member)(rows)) per group of TOPICS_IN
+//                               entries of one message taking their covariance block,
+//                               correlations included (input_covariance_blocks.hpp).
 //
 // STATE SIZE n: rows of STATE_TRANSITION_MATRIX (KF); entries of STATE_TRANSITION_MODEL
 //   (EKF, UKF, PF); m (MA, MM: one averaged output per input); 1 (CWA: one fused value).
@@ -273,5 +276,6 @@
 #include "sf_filter/config/derived_inputs.hpp"
 #include "sf_filter/config/input_covariance.hpp"
 #include "sf_filter/config/gps_inputs.hpp"
+#include "sf_filter/config/input_covariance_blocks.hpp"
 #include "sf_filter/config/twist_output.hpp"
 #endif

@@ -220,6 +220,12 @@ class FusionCore : public FusionCoreBase {
         measurement_.variance(i) = e.available && e.variance ? *e.variance : 0.0;
         measured_.available(i) = e.measured;
       }
+      if (covariancesGiven_) measurement_.covarianceGiven.setConstant(false);
+      covariancesGiven_ = !periodCovariances().empty();
+      for (const PeriodCovariance& c : periodCovariances()) {
+        measurement_.covarianceGiven(c.a, c.b) = measurement_.covarianceGiven(c.b, c.a) = true;
+        measurement_.covariance(c.a, c.b) = measurement_.covariance(c.b, c.a) = c.covariance;
+      }
       if (nisWanted()) {
         // The check must never change the estimate: a prediction it alone asked for and that
         // fails only skips the period's NIS (the step itself then decides about a failure).
@@ -270,6 +276,8 @@ class FusionCore : public FusionCoreBase {
       measured_.varianceGiven(i) = measurement_.varianceGiven(i);
       measured_.variance(i) = measurement_.variance(i);
     }
+    measured_.covarianceGiven = measurement_.covarianceGiven;
+    measured_.covariance = measurement_.covariance;
     const estimation::InnovationLikelihood l =
         estimation::innovationLikelihood(prediction, measured_);
     FusionCoreBase::addNis(l.squaredDistance, static_cast<int>(measured_.availableCount()),
@@ -298,6 +306,7 @@ class FusionCore : public FusionCoreBase {
   estimation::Measurement<M> measurement_;
   estimation::MeasurementPrediction<M> prediction_;
   estimation::Measurement<M> measured_;  ///< the period's measured entries, for the NIS
+  bool covariancesGiven_ = false;        ///< measurement_ holds covariances to clear
   estimation::Vector<L> control_;        ///< the controls in force, in the filter's type
   Estimate last_;
   estimation::NumericalRepairs repairsBeforeRestart_;  ///< of the filters before restarts

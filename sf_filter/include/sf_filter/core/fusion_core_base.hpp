@@ -39,6 +39,21 @@ class FusionCoreBase {
   Rejection addMeasurement(Index input, double now, double value,
                            std::optional<double> variance = std::nullopt,
                            double stamp = std::numeric_limits<double>::quiet_NaN());
+  /// Most inputs one message's covariance block may cover (a 6 x 6 pose or twist covariance).
+  static constexpr int kMaxBlockSize = 6;
+  /// `count` values of inputs `inputs` read from one message, with the message's covariance
+  /// block of them (`covariance`: row-major count x count, the variances on its diagonal).
+  /// A block that is not a covariance (not finite, not symmetric, not positive definite)
+  /// drops every value, counted as a bad variance of each input. Otherwise each value is
+  /// checked and placed as by addMeasurement (one may be dropped alone), and the covariances
+  /// between the values placed in one period go with them to the filter, carried through
+  /// the period's alignment (AVERAGE: the mean's weights; newest-value policies: only when
+  /// both newest values came from this message; not to substitutes or gated values).
+  /// Returns the first rejection, None if every value was accepted. Throws
+  /// std::invalid_argument for a count outside 1 .. kMaxBlockSize.
+  Rejection addMeasurementBlock(const Index* inputs, const double* values, const double* covariance,
+                                int count, double now,
+                                double stamp = std::numeric_limits<double>::quiet_NaN());
   /// A control value, received at the clock's last reading; a period uses the latest value of
   /// each control received before its end.
   Rejection addControl(Index control, double value);
@@ -110,6 +125,13 @@ class FusionCoreBase {
     virtual double mean(Index input) = 0;
   };
 
+  /// The covariance between the aligned values of inputs a < b in the period being estimated
+  /// (from addMeasurementBlock); replaces R(a, b) for the step.
+  struct PeriodCovariance {
+    Index a = 0, b = 0;
+    double covariance = 0.0;
+  };
+
   /// One input's value for the period being estimated.
   struct PeriodEntry {
     bool available = false;  ///< measured or substituted
@@ -139,6 +161,8 @@ class FusionCoreBase {
   /// estimation::EstimationError (the caller counts it as a failed step).
   void alignInputs(Prediction& prediction);
   const std::vector<PeriodEntry>& periodEntries() const { return entries_; }
+  /// Covariances between measured entries of the period (alignInputs()).
+  const std::vector<PeriodCovariance>& periodCovariances() const { return covariances_; }
   Index presentInputs() const { return present_; }
   Index substitutedInputs() const { return substituted_; }
   /// The controls in force for the current period.
@@ -185,6 +209,11 @@ class FusionCoreBase {
     std::unique_ptr<Ring> ring_;
   };
 
+  /// addMeasurement, telling the period the value was placed in.
+  Rejection place(Index input, double now, double value, std::optional<double> variance,
+                  double stamp, std::uint64_t& period);
+  /// The period's covariances from its slot's cross terms (alignInputs()).
+  void alignCovariances();
   static const FusionCoreOptions& checked(const FusionCoreOptions& o, Index inputs,
                                           bool canPredict);
   void restartSchedule(double now);
@@ -194,6 +223,7 @@ class FusionCoreBase {
   RingPtr ring_;
   std::vector<InputCounters> counters_;
   std::vector<PeriodEntry> entries_;
+  std::vector<PeriodCovariance> covariances_;
   Eigen::VectorXd control_;  ///< the controls in force (of the last estimated period)
   InnovationRecord innovations_;
   Index present_ = 0, substituted_ = 0;

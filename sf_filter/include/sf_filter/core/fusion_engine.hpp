@@ -59,6 +59,10 @@ class FusionEngine {
   virtual ClockEvent advanceTo(double now, EstimateCallback onEstimate) = 0;
   virtual Rejection addMeasurement(Index input, double now, double value,
                                    std::optional<double> variance, double stamp) = 0;
+  /// Values of one message with their covariance block (FusionCoreBase::addMeasurementBlock).
+  virtual Rejection addMeasurementBlock(const Index* inputs, const double* values,
+                                        const double* covariance, int count, double now,
+                                        double stamp) = 0;
   virtual Rejection addControl(Index control, double value) = 0;
   virtual void reset() = 0;
   /// Replaces the pose part of the current belief (set_pose, initialpose): the state

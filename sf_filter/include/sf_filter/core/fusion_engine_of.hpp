@@ -30,8 +30,7 @@ class FusionEngineOf final : public FusionEngine {
       : core_(std::move(filter), options) {}
 
   ClockEvent advanceTo(double now, EstimateCallback onEstimate) override {
-    return core_.advanceTo(now,
-                           [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
+    return core_.advanceTo(now, [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
   }
   ClockEvent skipGap(double now, EstimateCallback onEstimate) override {
     return core_.skipGap(now, [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
@@ -39,6 +38,10 @@ class FusionEngineOf final : public FusionEngine {
   Rejection addMeasurement(Index input, double now, double value, std::optional<double> variance,
                            double stamp) override {
     return core_.addMeasurement(input, now, value, variance, stamp);
+  }
+  Rejection addMeasurementBlock(const Index* inputs, const double* values, const double* covariance,
+                                int count, double now, double stamp) override {
+    return core_.addMeasurementBlock(inputs, values, covariance, count, now, stamp);
   }
   Rejection addControl(Index control, double value) override {
     return core_.addControl(control, value);
@@ -70,9 +73,7 @@ class FusionEngineOf final : public FusionEngine {
 
   EstimateRef lastEstimate() const override { return view(core_.lastEstimate()); }
   const InputCounters& counters(Index input) const override { return core_.counters(input); }
-  const InputOptions& inputOptions(Index input) const override {
-    return core_.inputOptions(input);
-  }
+  const InputOptions& inputOptions(Index input) const override { return core_.inputOptions(input); }
   Index inputCount() const override { return core_.inputCount(); }
   bool timedOut(Index input) const override { return core_.timedOut(input); }
   double clock() const override { return core_.clock(); }

@@ -26,6 +26,9 @@ struct InputOptions {
   /// Plausible range: a value below `minimum` or above `maximum` is dropped on arrival.
   double minimum = -std::numeric_limits<double>::infinity();
   double maximum = std::numeric_limits<double>::infinity();
+  /// The input measures an angle in radians (ANGLE_INPUTS, a derived ROLL, PITCH or YAW):
+  /// AVERAGE takes the circular mean, HOLD and FILL extrapolate the unwrapped angle.
+  bool angle = false;
 
   bool gated() const { return std::isfinite(gateThreshold); }
   bool hasTimeout() const { return std::isfinite(timeout); }

@@ -26,6 +26,15 @@ class MessageSink {
   /// carried (if any) and its header stamp in seconds (NaN: the message has no header).
   virtual void measurement(estimation::Index input, double now, double value,
                            std::optional<double> variance, double stamp) = 0;
+  /// The values of `count` inputs read from one message with the message's covariance block of
+  /// them (row-major count x count; INPUT_COVARIANCE_BLOCK). By default each value alone with
+  /// its variance; the node and the replay hand the block to the fusion core.
+  virtual void measurementBlock(const estimation::Index* inputs, const double* values,
+                                const double* covariance, int count, double now, double stamp) {
+    for (int k = 0; k < count; ++k) {
+      measurement(inputs[k], now, values[k], covariance[k * count + k], stamp);
+    }
+  }
   virtual void control(estimation::Index control, double value) = 0;
   /// Component `axis` (0 x, 1 y, 2 z) of `vector`, given in `frame` at the stamp
   /// (sec, nsec), rotated into the node's base frame (FRAME_ALIGNED_INPUTS); nullopt when it

@@ -147,6 +147,89 @@ void readInput(const Message& msg, MessageSink& sink, double now) {
   }
 }
 
+/// The values one message gave the inputs of an INPUT_COVARIANCE_BLOCK entry, collected while
+/// it is read and handed over together (sendBlocks).
+struct BlockValues {
+  std::array<double, 6> value{};
+  std::array<bool, 6> present{};
+};
+
+/// Value of block input In: its field or an ABSOLUTE derived quantity (the configuration
+/// refuses DIFFERENTIAL ones and FRAME_ALIGNED_INPUTS in a block).
+template <class In, class Message>
+std::optional<double> blockInputValue(const Message& msg) {
+  static_assert(!sf_config::FrameAlignment<In::index>::aligned,
+                "INPUT_COVARIANCE_BLOCK and FRAME_ALIGNED_INPUTS: an input is listed in both; the "
+                "message's covariance is given in the sensor's frame, which is not rotated");
+  using Derivation = sf_config::Derivation<In::index>;
+  if constexpr (Derivation::derived) {
+    if constexpr (Derivation::valid && !Derivation::differential) {
+      return sf_config::extractors::absoluteValue(Derivation::quantity,
+                                                  Derivation::pose(In::member(msg)));
+    } else {
+      return std::nullopt;  // not built: a static_assert of the configuration reported why
+    }
+  } else {
+    return In::value(msg);
+  }
+}
+
+/// Position of `input` in Block's inputs.
+template <class Block>
+constexpr int positionIn(int input) {
+  for (int k = 0; k < Block::size; ++k) {
+    if (Block::inputs[k] == input) return k;
+  }
+  return 0;
+}
+
+/// Hands Block's values of `msg` to the sink if the block is read from topic Owner: together
+/// with the message's covariance block when every value is there and the covariance known;
+/// otherwise each value alone, with its variance from the block, or (unknown covariance,
+/// counted) with the header's R.
+template <int Owner, class Block, class Message>
+void sendBlock(const Message& msg, const BlockValues& v, MessageSink& sink, double now) {
+  if constexpr (Block::valid) {
+    if constexpr (std::tuple_element_t<Block::first, sf_config::Inputs>::first_same_topic ==
+                  Owner) {
+      std::array<double, 36> covariance{};
+      const bool known = Block::read(msg, covariance.data());
+      std::array<estimation::Index, 6> inputs{};
+      bool all = true;
+      for (int k = 0; k < Block::size; ++k) {
+        inputs[static_cast<std::size_t>(k)] = Block::inputs[k];
+        all = all && v.present[static_cast<std::size_t>(k)];
+      }
+      const double stamp = stampOf(msg);
+      if (known && all) {
+        sink.measurementBlock(inputs.data(), v.value.data(), covariance.data(), Block::size, now,
+                              stamp);
+        return;
+      }
+      for (int k = 0; k < Block::size; ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        if (!v.present[i]) continue;
+        if (!known) sink.countCovarianceFallback(inputs[i]);
+        sink.measurement(
+            inputs[i], now, v.value[i],
+            known ? std::optional<double>(covariance[i * Block::size + i]) : std::nullopt, stamp);
+      }
+    }
+  }
+}
+
+template <int Owner, class Message, std::size_t... K>
+void sendBlocks(const Message& msg, const std::array<BlockValues, sizeof...(K)>& blocks,
+                MessageSink& sink, double now, std::index_sequence<K...>) {
+  (sendBlock<Owner, std::tuple_element_t<K, sf_config::CovarianceBlocks>>(msg, blocks[K], sink,
+                                                                          now),
+   ...);
+  static_cast<void>(msg);
+  static_cast<void>(blocks);
+  static_cast<void>(sink);
+  static_cast<void>(now);
+}
+
 /// One reader per distinct topic of TOPICS_IN and of TOPICS_IN_CTRL; a reader takes every
 /// field used from its topic.
 inline std::vector<TopicReader> topicReaders() {
@@ -159,10 +242,26 @@ inline std::vector<TopicReader> topicReaders() {
       reader.read = [](const std::uint8_t* data, std::uint32_t size, MessageSink& sink,
                        double now) {
         const Message msg = deserialize<Message>(data, size);
+        constexpr std::size_t kBlocks = std::tuple_size_v<sf_config::CovarianceBlocks>;
+        std::array<BlockValues, kBlocks> blocks{};
         sf_config::forEachInput([&](auto in) {
           using In = decltype(in);
-          if constexpr (In::first_same_topic == Owner::index) readInput<In>(msg, sink, now);
+          if constexpr (In::first_same_topic == Owner::index) {
+            constexpr int block = sf_config::blockOf(In::index);
+            if constexpr (block >= 0) {
+              using Block = std::tuple_element_t<block, sf_config::CovarianceBlocks>;
+              const std::optional<double> value = blockInputValue<In>(msg);
+              const auto k = static_cast<std::size_t>(positionIn<Block>(In::index));
+              if (value) {
+                blocks[static_cast<std::size_t>(block)].value[k] = *value;
+                blocks[static_cast<std::size_t>(block)].present[k] = true;
+              }
+            } else {
+              readInput<In>(msg, sink, now);
+            }
+          }
         });
+        sendBlocks<Owner::index>(msg, blocks, sink, now, std::make_index_sequence<kBlocks>{});
       };
       readers.push_back(std::move(reader));
     }

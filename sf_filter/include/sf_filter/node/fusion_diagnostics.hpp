@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
@@ -55,6 +56,18 @@ class FusionDiagnostics {
   void addLossSource(InputLossSource source) {
     lossBefore_.emplace_back(before_.size(), 0);
     lossSources_.push_back(std::move(source));
+  }
+
+  /// Adds `key` with the current `value()` to every estimation report (counters kept by the
+  /// node, not the core: pose resets, say).
+  void addEstimationValue(std::string key, std::function<std::string()> value) {
+    estimationValues_.emplace_back(std::move(key), std::move(value));
+  }
+
+  /// Adds `key` with `value(i)` to input i's reports where it is not empty (counters kept by
+  /// the node: covariances that fell back to the header's R, say).
+  void addInputValue(std::string key, std::function<std::string(std::size_t)> value) {
+    inputValues_.emplace_back(std::move(key), std::move(value));
   }
 
   /// Publishes one report now.
@@ -114,6 +127,10 @@ class FusionDiagnostics {
                          " since the last report)");
       s.add("dropped before the filter", std::to_string(total));
     }
+    for (const auto& kv : inputValues_) {
+      const std::string value = kv.second(i);
+      if (!value.empty()) s.add(kv.first, value);
+    }
   }
 
   EstimationTotals totals() const {
@@ -141,6 +158,7 @@ class FusionDiagnostics {
     e.clock = ros::Time::now().toSec();
     e.clockStopped = !std::isnan(previousRosTime_) && e.clock == previousRosTime_;
     fill(estimationHealth(e, core_.nis()), s);
+    for (const auto& kv : estimationValues_) s.add(kv.first, kv.second());
   }
 
   const FusionEngine& core_;
@@ -148,6 +166,8 @@ class FusionDiagnostics {
   std::vector<InputCounters> before_;
   std::vector<InputLossSource> lossSources_;
   std::vector<std::vector<std::uint64_t>> lossBefore_;  ///< per source, per input
+  std::vector<std::pair<std::string, std::function<std::string()>>> estimationValues_;
+  std::vector<std::pair<std::string, std::function<std::string(std::size_t)>>> inputValues_;
   EstimationTotals beforeEstimation_;
   double previousClock_ = std::numeric_limits<double>::quiet_NaN();  ///< NaN: no report yet
   double previousRosTime_ = std::numeric_limits<double>::quiet_NaN();

@@ -8,11 +8,11 @@
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <memory>
-#include <cmath>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,12 +26,14 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <topic_tools/shape_shifter.h>
 
+#include <sf_msgs/SetPose.h>
+
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/definition/message_sink.hpp"
+#include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_diagnostics.hpp"
-#include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
 
 namespace sf_filter {
@@ -67,9 +69,20 @@ class FusionNode final : public MessageSink {
       for (const char* topic : {"set_pose", "initialpose"}) {
         setPoseSubscribers_.push_back(nh_.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
             topic, 10, [this, topic](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
-              onSetPose(topic, *m);
+              setPose(topic, *m);
             }));
       }
+      // robot_localization's ~set_pose service: the same reset, with its outcome returned.
+      setPoseService_ = pnh_.advertiseService<sf_msgs::SetPose::Request, sf_msgs::SetPose::Response>(
+          "set_pose",
+          [this](sf_msgs::SetPose::Request& request, sf_msgs::SetPose::Response& response) {
+            response.message = setPose("~set_pose", request.pose);
+            response.success = response.message.empty();
+            return true;
+          });
+      diagnostics_.addEstimationValue("poses set", [this] { return std::to_string(setPoses_); });
+      diagnostics_.addEstimationValue("poses refused",
+                                      [this] { return std::to_string(refusedPoses_); });
     }
     // What is lost before the core sees it is in the input's diagnostics too: a message of
     // another type on its topic, a value that cannot be rotated into the base frame.
@@ -87,6 +100,11 @@ class FusionNode final : public MessageSink {
     noFix.count = [this](std::size_t i) { return gps().noFix(i); };
     noFix.reason = [](std::size_t) { return std::string("GPS fix status below STATUS_FIX"); };
     diagnostics_.addLossSource(noFix);
+    // INPUT_COVARIANCE: messages whose covariance was unknown (all zero, -1 first) used R.
+    diagnostics_.addInputValue("covariance unknown, header R used", [this](std::size_t i) {
+      const std::uint64_t n = covarianceFallbacks(static_cast<Index>(i));
+      return n ? std::to_string(n) : std::string();
+    });
     if (aligner_) {
       InputLossSource unrotated;
       unrotated.count = [this](std::size_t i) { return aligner_->dropped(i); };
@@ -163,6 +181,17 @@ class FusionNode final : public MessageSink {
     }
   }
 
+  void measurementBlock(const Index* inputs, const double* values, const double* covariance,
+                        int count, double now, double stamp) override {
+    const Rejection r = core_.addMeasurementBlock(inputs, values, covariance, count, now, stamp);
+    if (r != Rejection::None) {
+      ROS_WARN_THROTTLE(5.0, "dropped a value of the covariance block of input %ld (%s): %s",
+                        static_cast<long>(inputs[0]),
+                        description_.inputs.at(static_cast<std::size_t>(inputs[0])).c_str(),
+                        toString(r));
+    }
+  }
+
   void control(Index index, double value) override {
     if (core_.addControl(index, value) != Rejection::None) {
       ROS_WARN_THROTTLE(5.0, "dropped a non-finite value of control %ld (%s)",
@@ -204,8 +233,7 @@ class FusionNode final : public MessageSink {
 
   void advance(double now) {
     const std::uint64_t failures = core_.estimationFailures();
-    const ClockEvent event =
-        core_.advanceTo(now, publishEstimate_);
+    const ClockEvent event = core_.advanceTo(now, publishEstimate_);
     if (event == ClockEvent::JumpedBackwards) {
       measured_ = false;
       ROS_WARN_THROTTLE(5.0,
@@ -251,9 +279,10 @@ class FusionNode final : public MessageSink {
     }
   }
 
-  /// set_pose / initialpose: the pose part of the belief (POSE_OUT's x, y, heading) and its
-  /// covariance block (x, y, yaw slots of the message's 6 x 6 covariance) are replaced.
-  void onSetPose(const char* topic, const geometry_msgs::PoseWithCovarianceStamped& m) {
+  /// set_pose, initialpose and ~set_pose: the pose part of the belief (POSE_OUT's x, y,
+  /// heading) and its covariance block (x, y, yaw slots of the message's 6 x 6 covariance) are
+  /// replaced. Returns why the pose was refused (the belief then is as it was), empty if set.
+  std::string setPose(const char* topic, const geometry_msgs::PoseWithCovarianceStamped& m) {
     advance(ros::Time::now().toSec());
     const auto& q = m.pose.pose.orientation;
     const double yaw = sf_config::extractors::eulerAngles({q.x, q.y, q.z, q.w}).yaw;
@@ -263,21 +292,32 @@ class FusionNode final : public MessageSink {
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) covariance(r, c) = m.pose.covariance[slot[r] * 6 + slot[c]];
     }
-    try {
-      if (!core_.setPose(*description_.pose, pose, covariance)) {
-        ROS_WARN("%s: the %s cannot be re-initialised; pose ignored", topic,
-                 description_.method.c_str());
-        return;
+    std::string refused;
+    if (!(std::isfinite(pose[0]) && std::isfinite(pose[1]) && std::isfinite(pose[2]))) {
+      refused = "the pose's x, y or orientation is not finite";
+    } else if (!covariance.allFinite()) {
+      refused = "the pose's covariance block (x, y, yaw) is not finite";
+    } else {
+      try {
+        if (!core_.setPose(*description_.pose, pose, covariance)) {
+          refused = "the " + description_.method + " cannot be re-initialised";
+        }
+      } catch (const std::exception& e) {
+        refused =
+            std::string("the pose's covariance block (x, y, yaw) is not a covariance: ") + e.what();
       }
-    } catch (const std::exception& e) {
-      ROS_ERROR("%s: pose refused: %s", topic, e.what());
-      return;
+    }
+    if (!refused.empty()) {
+      ++refusedPoses_;
+      ROS_ERROR("%s: pose refused: %s", topic, refused.c_str());
+      return refused;
     }
     ++setPoses_;
     measured_ = true;  // a pose given by the user is a real pose: odometry and tf follow
     ROS_INFO("%s: pose set to x %.3f, y %.3f, yaw %.3f (variances %.3g, %.3g, %.3g); %llu so far",
              topic, pose[0], pose[1], pose[2], covariance(0, 0), covariance(1, 1), covariance(2, 2),
              static_cast<unsigned long long>(setPoses_));
+    return {};
   }
 
   /// Logs an input's timing out and its return once each.
@@ -367,6 +407,8 @@ class FusionNode final : public MessageSink {
     if (description_.pose) {
       ROS_INFO("  odometry -> %s, tf %s -> %s%s", odometry_.getTopic().c_str(), frameId_.c_str(),
                childFrameId_.c_str(), publishTf_ ? "" : " (tf disabled)");
+      ROS_INFO("  pose resets <- %s, %s, service %s", nh_.resolveName("set_pose").c_str(),
+               nh_.resolveName("initialpose").c_str(), setPoseService_.getService().c_str());
     }
   }
 
@@ -396,14 +438,15 @@ class FusionNode final : public MessageSink {
   std::map<std::string, WrongType> wrongType_;  ///< by resolved topic name
   std::vector<ros::Subscriber> subscribers_;
   std::vector<ros::Subscriber> setPoseSubscribers_;
-  std::uint64_t setPoses_ = 0;
+  ros::ServiceServer setPoseService_;
+  std::uint64_t setPoses_ = 0, refusedPoses_ = 0;
   std::vector<ros::Publisher> outputs_;
   ros::Publisher state_, odometry_;
   ros::Timer timer_;
   tf2_ros::TransformBroadcaster broadcaster_;
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
-  int queueSize_ = 1000;  ///< ~queue_size: of every subscription and publication
+  int queueSize_ = 1000;   ///< ~queue_size: of every subscription and publication
   bool measured_ = false;  ///< an estimate used a measured value (since the last reset)
   std::uint64_t skippedGaps_ = 0;
   std::uint64_t gatedReported_ = 0;

@@ -102,6 +102,13 @@ class BagReplay final : public MessageSink {
       ++summary_.dropped;
     }
   }
+  void measurementBlock(const Index* inputs, const double* values, const double* covariance,
+                        int count, double now, double stamp) override {
+    if (core_.addMeasurementBlock(inputs, values, covariance, count, now, stamp) !=
+        Rejection::None) {
+      ++summary_.dropped;
+    }
+  }
   void control(Index index, double value) override {
     if (events_) events_->control(index, value);
     if (core_.addControl(index, value) != Rejection::None) ++summary_.dropped;

@@ -1,11 +1,12 @@
 // The fusion core's per-input options (sf_filter/core/input_options.hpp) as the configuration
 // header sets them: alignment policy, gate and alignment by stamp (input_alignment.hpp), sensor
-// timeout and plausible range (input_faults.hpp).
+// timeout and plausible range (input_faults.hpp), and whether it is an angle (angles.hpp).
 #pragma once
 
 #include <cstddef>
 #include <vector>
 
+#include "sf_filter/config/detail/angles.hpp"
 #include "sf_filter/config/detail/input_alignment.hpp"
 #include "sf_filter/config/detail/input_faults.hpp"
 #include "sf_filter/core/input_options.hpp"
@@ -22,6 +23,7 @@ inline std::vector<::sf_filter::InputOptions> defaultInputOptions() {
     inputs[i].timeout = kInputTimeoutsMs[i] / 1000.0;
     inputs[i].minimum = kInputRanges[i].minimum;
     inputs[i].maximum = kInputRanges[i].maximum;
+    inputs[i].angle = kAngleInputs[i];
   }
   return inputs;
 }

@@ -14,18 +14,23 @@
 // its control points, as the paper says), and the two weights it quotes for Fig. 2 (0.821,
 // 0.163) are of this form: w1^n and n w1^(n-1) w2 with w1 + w2 = 1. A small omega gives
 // z^(k) almost all the weight (the substitute follows the filter's prediction); a larger
-// one pulls it towards the stored samples.
+// one pulls it towards the stored samples. For an angle input the samples are unwrapped, and
+// z^(k) moved to within pi of the newest, before the curve is evaluated, and the substitute
+// is wrapped (unwrapped_angles.hpp).
 #pragma once
 
 #include "sf_filter/core/alignment/hold_primitives.hpp"
 #include "sf_filter/core/alignment/sample_history.hpp"
+#include "sf_filter/core/alignment/unwrapped_angles.hpp"
 
 namespace sf_filter {
 
 class GapFilling {
  public:
   /// omega > 0 [s], 1 <= samples <= SampleHistory::kCapacity (AlignmentPolicy validates them).
-  GapFilling(double omega, int samples) : omega_(omega), history_(samples) {}
+  /// `angle`: the samples are angles in radians.
+  GapFilling(double omega, int samples, bool angle = false)
+      : omega_(omega), angle_(angle), history_(samples) {}
 
   /// Algorithm 1, line 4: the low-rate input was sampled at `time`.
   void sampled(double time, double value) { history_.push(time, value); }
@@ -36,12 +41,9 @@ class GapFilling {
   /// Algorithm 1, lines 7-9: the substitute at time t (after the newest sample) given the
   /// filter's predicted measurement z^(k) = h(x(k|k-1)). Requires ready().
   double value(double t, double predicted) const {
-    const int n = history_.size();
-    const double oldest = history_[n - 1].time;
-    const double span = t + omega_ - oldest;
-    const double w1 = (t - oldest) / span, w2 = omega_ / span;
-    return bernsteinCombination(n, w1, w2,
-                                [&](int i) { return i == 0 ? predicted : history_[i - 1].value; });
+    if (!angle_) return fill(history_, t, predicted);
+    const SampleHistory u = unwrappedAngles(history_);
+    return estimation::wrapAngle(fill(u, t, unwrappedAngle(predicted, u[0].value)));
   }
 
   void clear() { history_.clear(); }
@@ -50,7 +52,18 @@ class GapFilling {
   const SampleHistory& history() const { return history_; }
 
  private:
+  /// Eqs. (7)-(11) on the samples `h`.
+  double fill(const SampleHistory& h, double t, double predicted) const {
+    const int n = h.size();
+    const double oldest = h[n - 1].time;
+    const double span = t + omega_ - oldest;
+    const double w1 = (t - oldest) / span, w2 = omega_ / span;
+    return bernsteinCombination(n, w1, w2,
+                                [&](int i) { return i == 0 ? predicted : h[i - 1].value; });
+  }
+
   double omega_;
+  bool angle_;
   SampleHistory history_;
 };
 

@@ -2,6 +2,8 @@
 // (InputPeriod) into the value the filter gets, by the input's policy (alignment_policy.hpp),
 // and keeps the HOLD or FILL history between periods. The fusion core decides in between
 // whether the measured value passes the input's gate; only then does it enter the history.
+// An angle input is averaged on the circle (period_average.hpp) and extrapolated unwrapped
+// (unwrapped_angles.hpp); its mean and substitutes are wrapped to (-pi, pi].
 #pragma once
 
 #include <cstdint>
@@ -23,23 +25,36 @@ struct AlignedValue {
 
 class InputAligner {
  public:
-  explicit InputAligner(const AlignmentPolicy& policy)
+  /// `angle`: the input measures an angle in radians.
+  explicit InputAligner(const AlignmentPolicy& policy, bool angle = false)
       : policy_(policy),
-        hold_(policy.primitive, policy.order),
-        fill_(policy.omega, policy.samples > 0 ? policy.samples : 1) {}
+        hold_(policy.primitive, policy.order, angle),
+        fill_(policy.omega, policy.samples > 0 ? policy.samples : 1, angle) {}
 
   const AlignmentPolicy& policy() const { return policy_; }
 
   /// The value measured in the period: the mean (AVERAGE) or the newest value; none if
-  /// nothing arrived.
+  /// nothing arrived. Angles without a mean direction (spread evenly around the circle) give
+  /// the newest value.
   std::optional<AlignedValue> measured(const InputPeriod& period) const {
     if (period.empty()) return std::nullopt;
-    if (policy_.kind == AlignmentKind::Average) {
+    if (policy_.kind == AlignmentKind::Average && period.average().hasMean()) {
       const PeriodAverage& a = period.average();
       return AlignedValue{a.mean(),
                           a.hasVariance() ? std::optional<double>(a.meanVariance()) : std::nullopt};
     }
     return AlignedValue{period.newest().value(), period.newest().variance()};
+  }
+
+  /// The derivative of measured(period)'s value by the period's `ordinal`-th reading (1 for
+  /// the first), whose value was `value`: the mean's weight for AVERAGE, 1 for the newest
+  /// reading and 0 for the others under the other policies. Used to carry the covariances
+  /// between inputs of one message into the aligned values. Requires a measured value.
+  double weightOf(const InputPeriod& period, std::uint32_t ordinal, double value) const {
+    if (policy_.kind == AlignmentKind::Average && period.average().hasMean()) {
+      return period.average().weightOf(value);
+    }
+    return ordinal == period.count() ? 1.0 : 0.0;
   }
 
   /// Values of the period that measured() leaves out: all but the newest for LAST and

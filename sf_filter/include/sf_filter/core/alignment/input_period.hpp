@@ -17,9 +17,10 @@ namespace sf_filter {
 
 class InputPeriod {
  public:
-  /// `samplesKept`: how many of the period's samples the input's policy needs (0: none).
-  explicit InputPeriod(int samplesKept = 0)
-      : samples_(samplesKept), keepSamples_(samplesKept > 0) {}
+  /// `samplesKept`: how many of the period's samples the input's policy needs (0: none);
+  /// `angle`: the values are angles in radians (averaged on the circle).
+  explicit InputPeriod(int samplesKept = 0, bool angle = false)
+      : average_(angle), samples_(samplesKept), keepSamples_(samplesKept > 0) {}
 
   /// `time`: where the value belongs (its stamp or arrival); `arrival`: when it arrived
   /// (default: `time`).

@@ -1,19 +1,23 @@
 // HOLD alignment: Armesto et al.'s multi-rate hold (Algorithm 1). Every sample of the input
 // is shifted into a history of the newest order + 1 samples (lines 3-5); in a period without
 // a sample the hold extrapolates the history to the period's time with its primitive function
-// (lines 7-10, hold_primitives.hpp) instead of leaving the input missing.
+// (lines 7-10, hold_primitives.hpp) instead of leaving the input missing. An angle input's
+// history is unwrapped before and the value wrapped after (unwrapped_angles.hpp).
 #pragma once
 
 #include "sf_filter/core/alignment/hold_primitives.hpp"
 #include "sf_filter/core/alignment/sample_history.hpp"
+#include "sf_filter/core/alignment/unwrapped_angles.hpp"
 
 namespace sf_filter {
 
 class MultiRateHold {
  public:
   /// 0 <= order <= kMaxHoldOrder (AlignmentPolicy validates it; larger orders are clamped).
-  MultiRateHold(HoldPrimitive primitive, int order)
+  /// `angle`: the samples are angles in radians.
+  MultiRateHold(HoldPrimitive primitive, int order, bool angle = false)
       : primitive_(primitive),
+        angle_(angle),
         order_(order < 0               ? 0
                : order > kMaxHoldOrder ? kMaxHoldOrder
                                        : order),
@@ -26,7 +30,10 @@ class MultiRateHold {
   bool ready() const { return !history_.empty(); }
 
   /// Lines 7-10: the extrapolated value at t (after the newest sample). Requires ready().
-  double value(double t) const { return holdValue(primitive_, history_, order_, t); }
+  double value(double t) const {
+    if (!angle_) return holdValue(primitive_, history_, order_, t);
+    return estimation::wrapAngle(holdValue(primitive_, unwrappedAngles(history_), order_, t));
+  }
 
   void clear() { history_.clear(); }
 
@@ -36,6 +43,7 @@ class MultiRateHold {
 
  private:
   HoldPrimitive primitive_;
+  bool angle_;
   int order_;
   SampleHistory history_;
 };
