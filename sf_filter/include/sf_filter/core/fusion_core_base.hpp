@@ -29,12 +29,15 @@ class FusionCoreBase {
   static constexpr double kMinPeriod = FusionCoreOptions::kMinPeriod;
   static constexpr double kMaxPeriod = FusionCoreOptions::kMaxPeriod;
   static constexpr std::uint64_t kMaxCatchUpLimit = FusionCoreOptions::kMaxCatchUpLimit;
+  static constexpr std::uint64_t kMaxQueuedLimit = FusionCoreOptions::kMaxQueuedLimit;
   /// The largest variance a measurement may carry (sf_filter::kMaxVariance, 1e100).
   static constexpr double kMaxVariance = sf_filter::kMaxVariance;
 
   /// A measurement of input `input` received at `now`, with the variance the message carried
   /// (if any). `stamp` (NaN when the message has no header) must not run backwards per input;
-  /// it places the value in its period if the input is aligned by stamp.
+  /// it places the value in its period if the input is aligned by stamp. While the clock stands
+  /// still, a value aligned by arrival is placed no earlier than the newest stamp accepted
+  /// since (fusion_core.hpp, "Clock stalls").
   Rejection addMeasurement(Index input, double now, double value,
                            std::optional<double> variance = std::nullopt,
                            double stamp = std::numeric_limits<double>::quiet_NaN());
@@ -75,6 +78,10 @@ class FusionCoreBase {
   /// Restarts of the filter from its initial belief after Options::maxConsecutiveFailures
   /// rejected steps in a row (not counting reset() and clock jumps backwards).
   std::uint64_t filterResets() const { return filterResets_; }
+  /// Periods after the current one, up to the newest holding a value or control that arrived
+  /// ahead of the clock (0: none): what a forward jump of the clock estimates one by one before
+  /// it skips the rest of the gap.
+  std::uint64_t queuedAhead() const;
   /// Periods that have ended by `now` (minus the lag) and are not estimated yet: what
   /// advanceTo(now) would estimate, or skip when more than maxCatchUpPeriods().
   std::uint64_t periodsDue(double now) const;
@@ -178,6 +185,15 @@ class FusionCoreBase {
                                           bool canPredict);
   void restartSchedule(double now);
   void openWindow();
+  /// Whether a stamp of input `input` is further ahead than maxFutureStamp of the clock reading
+  /// `now` and of the newest stamp every other input sent while the clock stood still.
+  bool tooFarAhead(Index input, double stamp, double now) const;
+  /// The open period of time t (ring.openPeriodOf), remembered as queued when it lies ahead.
+  std::uint64_t placeValue(double t, bool& estimated, bool& beyond);
+  /// The time a value aligned by arrival (or a control) belongs to: its arrival, but no
+  /// earlier than a stamp accepted while the clock stood still.
+  double arrivalTime(double now) const;
+  void clearLeadStamps();
 
   FusionCoreOptions options_;
   RingPtr ring_;
@@ -186,7 +202,11 @@ class FusionCoreBase {
   Eigen::VectorXd control_;  ///< the controls in force (of the last estimated period)
   NisWindow nis_;
   Index present_ = 0, substituted_ = 0;
-  double clock_ = 0.0;      ///< last reading passed to readClock
+  double clock_ = 0.0;  ///< last reading passed to readClock
+  /// Per input: its newest stamp accepted while the clock stood still, ahead of the clock
+  /// (-inf: none since the clock last moved). Stamps stand in for a stalled clock.
+  std::vector<double> leadStamps_;
+  double leadStamp_ = -std::numeric_limits<double>::infinity();  ///< the largest of them
   double startTime_ = 0.0;  ///< clock reading the schedule (re)started at
   double maxStepSeconds_ = 0.0;
   double estimatorSeconds_ = 0.0;

@@ -30,8 +30,11 @@ class FusionEngineOf final : public FusionEngine {
       : core_(std::move(filter), options) {}
 
   ClockEvent advanceTo(double now, EstimateCallback onEstimate) override {
-    return core_.advanceTo(now,
-                           [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
+    return core_.advanceTo(now, [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
+  }
+  ClockEvent runTo(double now, std::uint64_t maxPeriods, EstimateCallback onEstimate) override {
+    return core_.runTo(now, maxPeriods,
+                       [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
   }
   ClockEvent skipGap(double now, EstimateCallback onEstimate) override {
     return core_.skipGap(now, [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
@@ -70,9 +73,7 @@ class FusionEngineOf final : public FusionEngine {
 
   EstimateRef lastEstimate() const override { return view(core_.lastEstimate()); }
   const InputCounters& counters(Index input) const override { return core_.counters(input); }
-  const InputOptions& inputOptions(Index input) const override {
-    return core_.inputOptions(input);
-  }
+  const InputOptions& inputOptions(Index input) const override { return core_.inputOptions(input); }
   Index inputCount() const override { return core_.inputCount(); }
   bool timedOut(Index input) const override { return core_.timedOut(input); }
   double clock() const override { return core_.clock(); }
