@@ -34,8 +34,8 @@
 
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/definition/message_sink.hpp"
-#include "sf_filter/node/estimate_messages.hpp"
 #include "sf_filter/definition/node_description.hpp"
+#include "sf_filter/node/estimate_messages.hpp"
 #include "sf_filter/replay/atomic_output.hpp"
 
 namespace sf_filter {
@@ -187,20 +187,13 @@ class BagReplay final : public MessageSink {
 
   /// Advances the core's clock to the message time `now` as the online node's ros::Timer
   /// would: the timer estimates every period while rosbag play's clock runs through a gap
-  /// between messages, so a gap longer than Options::maxCatchUpPeriods periods (which the
-  /// core would skip with one estimate) is crossed in steps of one period less than that,
-  /// each estimating every period it ends. Shorter gaps take one step, as before. A gap of
-  /// more than kMaxGapPeriods periods (a recording paused or two recordings in one bag) is
-  /// crossed as the online node crosses a clock jump: one estimate, the missed periods
-  /// skipped (counted in the summary), never millions of empty periods.
+  /// between messages, so the core runs to `now` (FusionCore::runTo) estimating every period
+  /// up to kMaxGapPeriods. A longer gap (a recording paused or two recordings in one bag) is
+  /// crossed by the core's own gap rule, as the online node crosses a clock jump: one estimate,
+  /// the missed periods skipped (counted in the summary), never millions of empty periods.
   template <class Write>
   void advanceClock(double now, Write& write) {
-    if (clockStarted_ && now - core_.clock() <= kMaxGapPeriods * core_.period()) {
-      const std::uint64_t periods = core_.maxCatchUpPeriods();
-      const double step = static_cast<double>(periods > 1 ? periods - 1 : 1) * core_.period();
-      while (now - core_.clock() > step) core_.advanceTo(core_.clock() + step, write);
-    }
-    if (core_.advanceTo(now, write) == ClockEvent::SkippedGap) {
+    if (core_.runTo(now, kMaxGapPeriods, write) == ClockEvent::SkippedGap) {
       if (summary_.skippedGaps++ == 0 || summary_.skippedGaps % 1000 == 0) {
         std::cerr << "warning: a gap of more than " << kMaxGapPeriods
                   << " periods in the bag before " << std::fixed << std::setprecision(3) << now
@@ -208,11 +201,10 @@ class BagReplay final : public MessageSink {
                   << " so far)" << std::defaultfloat << std::endl;
       }
     }
-    clockStarted_ = true;
   }
 
   /// The longest gap between messages estimated period by period.
-  static constexpr double kMaxGapPeriods = 10000.0;
+  static constexpr std::uint64_t kMaxGapPeriods = 10000;
 
   static constexpr const char* kTf = "/tf";
   static constexpr const char* kTfStatic = "/tf_static";
@@ -432,7 +424,6 @@ class BagReplay final : public MessageSink {
   std::map<std::string, ExpectedType> expectedTypes_;
   TransformSink transformSink_;
   ReplaySummary summary_;
-  bool clockStarted_ = false;  ///< the core's clock has had its first reading
 };
 
 }  // namespace sf_filter
