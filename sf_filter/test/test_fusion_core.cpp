@@ -379,10 +379,7 @@ TEST(FusionCore, AStalledClockEstimatesTheQueuedPeriodsWhenItJumps) {
   ASSERT_EQ(out.estimates.size(), static_cast<std::size_t>(kPeriods));
   Train reference = makeTrain();
   for (int k = 0; k < kPeriods; ++k) {
-    Measurement<2> z;
-    z.value << speed(k), acceleration(k);
-    z.available << true, true;
-    reference.estimate(z);
+    reference.estimate(speedAndAcceleration(speed(k), acceleration(k)));
     EXPECT_NEAR(out.estimates[k].time, kPeriod * (k + 1), 1e-9);
     expectSameBelief(out.estimates[k], reference);
   }
@@ -391,12 +388,13 @@ TEST(FusionCore, AStalledClockEstimatesTheQueuedPeriodsWhenItJumps) {
   EXPECT_EQ(core.counters(0).future, 0u);
 }
 
-// The limits of R3. A sensor whose clock runs ahead cannot carry itself further ahead: only
-// another input's stamps vouch for a stalled clock, so alone its values more than
-// maxFutureStamp ahead are dropped as before. Once the clock moves again it is the time: a
-// stamp ahead of it (a sensor clock 0.3 s fast) does not move the other values. Beyond the
-// ring's capacity (maxQueuedPeriods) values go into its last period and the rest of the gap
-// is skipped with one estimate.
+// The limits of R3. One input alone whose stamps run ahead is a sensor clock running ahead,
+// not a stalled clock: its values stay where they arrive, and it cannot carry itself further
+// ahead (only another input's stamps vouch for a stalled clock), so its values more than
+// maxFutureStamp ahead are dropped as before. Once the clock moves again it is the time: the
+// stamps that stood in for it no longer move the values arriving. Beyond the ring's capacity
+// (maxQueuedPeriods) values go into its last period and the rest of the gap is skipped with one
+// estimate.
 TEST(FusionCore, StampsStandInForTheClockOnlyWhileItStandsStillAndWithinTheRing) {
   Core::Options options;
   options.period = kPeriod;
@@ -414,14 +412,33 @@ TEST(FusionCore, StampsStandInForTheClockOnlyWhileItStandsStillAndWithinTheRing)
     Collector out;
     core.advanceTo(0.0, out);
     core.advanceTo(0.01, out);
-    core.addMeasurement(1, 0.01, 0.0, std::nullopt, 0.31);  // 0.3 s ahead: in period 4
+    core.addMeasurement(1, 0.01, 0.5, std::nullopt, 0.31);  // a sensor clock 0.3 s fast
     core.advanceTo(0.02, out);
-    core.addMeasurement(0, 0.02, 2.0);  // the clock moved: period 1
+    core.addMeasurement(0, 0.02, 2.0);
     core.advanceTo(0.1, out);
     ASSERT_EQ(out.estimates.size(), 1u);
     Train reference = makeTrain();
-    reference.estimate(speedOnly(2.0));
+    reference.estimate(speedAndAcceleration(2.0, 0.5));  // both in period 1, where they arrived
     expectSameBelief(out.estimates[0], reference);
+  }
+  {
+    Core core(makeTrain(), options);
+    Collector out;
+    core.advanceTo(0.0, out);
+    // The clock stands still: the first stamp ahead (one input alone) stays where it arrives,
+    // the second input's stamp ahead says that the clock stalls, and its value is queued.
+    core.addMeasurement(1, 0.0, 0.5, std::nullopt, 0.21);  // period 1
+    core.addMeasurement(0, 0.0, 1.0, std::nullopt, 0.25);  // period 3
+    core.advanceTo(0.02, out);                             // the clock moves again
+    core.addMeasurement(0, 0.02, 2.0);                     // period 1, not 3
+    core.advanceTo(0.3, out);
+    ASSERT_EQ(out.estimates.size(), 3u);
+    Train reference = makeTrain();
+    reference.estimate(speedAndAcceleration(2.0, 0.5));
+    expectSameBelief(out.estimates[0], reference);
+    reference.estimate(Measurement<2>::missing());
+    reference.estimate(speedOnly(1.0));
+    expectSameBelief(out.estimates[2], reference);
   }
   {
     options.maxQueuedPeriods = 20;

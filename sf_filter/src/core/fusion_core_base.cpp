@@ -122,6 +122,7 @@ Rejection FusionCoreBase::addMeasurement(Index input, double now, double value,
   const InputOptions& o = inputOptions(input);
   ++c.received;
   c.lastArrival = now;
+  noteReading(now);
   if (!std::isfinite(value)) {
     ++c.nonFinite;
     return Rejection::NonFinite;
@@ -151,18 +152,20 @@ Rejection FusionCoreBase::addMeasurement(Index input, double now, double value,
       return Rejection::FutureStamp;
     }
     c.lastStamp = stamp;
-    // A value is never sent before it is stamped: a stamp ahead of the clock's reading tells
-    // that the clock stands still while the values come (rosbag play catching up publishes
-    // them without /clock), and stands in for it until the clock moves again. Only when stamps
-    // are checked against the clock (a finite maxFutureStamp): they are then on its time base.
-    if (stamp > clock_ && std::isfinite(options_.maxFutureStamp)) {
+    // A value is never sent before it is stamped: stamps of two inputs ahead of the clock's
+    // reading tell that the clock stands still while the values come (rosbag play catching up
+    // publishes them without /clock); one input alone may only have a clock running ahead.
+    // Only when stamps are checked against the clock (a finite maxFutureStamp): they are then
+    // on its time base.
+    if (stamp > reading_ && std::isfinite(options_.maxFutureStamp)) {
       double& lead = leadStamps_[static_cast<std::size_t>(input)];
+      if (std::isinf(lead)) ++leaders_;
       if (stamp > lead) lead = stamp;
       if (stamp > leadStamp_) leadStamp_ = stamp;
     }
   }
   const bool byStamp = o.alignByStamp && !std::isnan(stamp);
-  const double arrival = arrivalTime(now);
+  const double arrival = arrivalTime(now, stamp);
   const double time = byStamp ? stamp : arrival;
   bool estimated = false, beyond = false;
   const std::uint64_t k = placeValue(time, estimated, beyond);
@@ -193,7 +196,12 @@ std::uint64_t FusionCoreBase::placeValue(double t, bool& estimated, bool& beyond
   return k;
 }
 
-double FusionCoreBase::arrivalTime(double now) const { return now < leadStamp_ ? leadStamp_ : now; }
+double FusionCoreBase::arrivalTime(double now, double stamp) const {
+  if (leaders_ < 2) return now;  // the clock is the time
+  // Stalled: a stamped value at its stamp, anything else after the newest stamp.
+  const double time = std::isnan(stamp) ? leadStamp_ : stamp;
+  return now < time ? time : now;
+}
 
 std::uint64_t FusionCoreBase::queuedAhead() const {
   const std::uint64_t current = ring_->schedule.index();
@@ -207,14 +215,15 @@ Rejection FusionCoreBase::addControl(Index control, double value) {
     return Rejection::NonFinite;
   }
   bool estimated = false, beyond = false;
-  Ring::OpenPeriod& slot = ring_->slotOf(placeValue(arrivalTime(clock_), estimated, beyond));
+  Ring::OpenPeriod& slot = ring_->slotOf(
+      placeValue(arrivalTime(clock_, std::numeric_limits<double>::quiet_NaN()), estimated, beyond));
   slot.control(control) = value;
   slot.controlSet(control) = true;
   return Rejection::None;
 }
 
 FusionCoreBase::ClockStep FusionCoreBase::readClock(double now) {
-  if (now > clock_) clearLeadStamps();  // the clock moves: it is the time again
+  noteReading(now);
   clock_ = now;
   const double lag = options_.maxMeasurementLag;
   PeriodSchedule& schedule = ring_->schedule;
@@ -390,13 +399,21 @@ void FusionCoreBase::restartSchedule(double now) {
   startTime_ = now;
   ring_->schedule.start(now - options_.maxMeasurementLag);
   ring_->newestPlaced = 0;
+  reading_ = now;
   clearLeadStamps();
   openWindow();
+}
+
+void FusionCoreBase::noteReading(double now) {
+  if (now <= reading_) return;
+  reading_ = now;
+  clearLeadStamps();  // the clock moves: it is the time again
 }
 
 void FusionCoreBase::clearLeadStamps() {
   for (double& lead : leadStamps_) lead = -std::numeric_limits<double>::infinity();
   leadStamp_ = -std::numeric_limits<double>::infinity();
+  leaders_ = 0;
 }
 
 /// Assigns the slots to the open periods from the current one on. A slot still holding an

@@ -19,14 +19,15 @@
 // end, so with a lag the estimates come out `lag` late but refer to the right instants. Controls
 // are taken by arrival: period k uses the latest control received before its end.
 //
-// Clock stalls (issue 15 R3). A value is never sent before it is stamped: while the clock's
-// reading stands still, a stamp ahead of it stands in for the clock (only with a finite
-// maxFutureStamp, i.e. stamps on the clock's time base). The value goes into the period of its
-// stamp and every value aligned by arrival, and every control, arriving after it into the
-// period of the newest such stamp; the ring keeps Options::maxQueuedPeriods periods ahead of
-// the clock for them. When the clock jumps, crossGap() estimates every period holding queued
-// values one by one, also beyond maxCatchUpPeriods, as the offline replay (whose clock is the
-// recorded time) does, and skips only the rest of the gap. A stamp more than maxFutureStamp
+// Clock stalls (issue 15 R3). A value is never sent before it is stamped: when the stamps of
+// two inputs run ahead of the clock's reading (one input alone may only have a fast clock), the
+// clock stands still and the stamps stand in for it until it moves (only with a finite
+// maxFutureStamp, i.e. stamps on the clock's time base). A stamped value then goes into the
+// period of its stamp, an unstamped value or a control into the period of the newest stamp;
+// the ring keeps Options::maxQueuedPeriods periods ahead of the clock for them. When the clock
+// jumps, crossGap() estimates every period holding queued values one by one, also beyond
+// maxCatchUpPeriods, as the offline replay (whose clock is the recorded time) does, and skips
+// only the rest of the gap. A stamp more than maxFutureStamp
 // ahead of the clock and of every other input's stamps sent while it stood still is dropped:
 // an input's own stamps never vouch for a stalled clock. Once the clock moves it is the time.
 //

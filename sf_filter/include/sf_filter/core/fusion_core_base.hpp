@@ -130,7 +130,10 @@ class FusionCoreBase {
   };
   ClockStep readClock(double now);
   bool scheduleStarted() const;
-  void setClock(double now) { clock_ = now; }
+  void setClock(double now) {
+    noteReading(now);
+    clock_ = now;
+  }
   /// After the one estimate that crosses a gap of `due` periods to the clock's reading: the
   /// schedule moves on by whole periods so that the reading lies in the current one.
   void skipPeriods(std::uint64_t due);
@@ -190,10 +193,14 @@ class FusionCoreBase {
   bool tooFarAhead(Index input, double stamp, double now) const;
   /// The open period of time t (ring.openPeriodOf), remembered as queued when it lies ahead.
   std::uint64_t placeValue(double t, bool& estimated, bool& beyond);
-  /// The time a value aligned by arrival (or a control) belongs to: its arrival, but no
-  /// earlier than a stamp accepted while the clock stood still.
-  double arrivalTime(double now) const;
+  /// The time a value aligned by arrival (or a control: `stamp` NaN) belongs to: its arrival,
+  /// or while two inputs' stamps say that the clock stands still, no earlier than its own stamp
+  /// (a stamped value) or the newest stamp (anything else).
+  double arrivalTime(double now, double stamp) const;
   void clearLeadStamps();
+  /// A clock reading (advanceTo's, or an arrival's): one later than all before means the clock
+  /// moves, and the lead stamps are forgotten.
+  void noteReading(double now);
 
   FusionCoreOptions options_;
   RingPtr ring_;
@@ -207,6 +214,9 @@ class FusionCoreBase {
   /// (-inf: none since the clock last moved). Stamps stand in for a stalled clock.
   std::vector<double> leadStamps_;
   double leadStamp_ = -std::numeric_limits<double>::infinity();  ///< the largest of them
+  int leaders_ = 0;  ///< inputs with a lead stamp: two or more mean the clock stands still
+  /// The latest clock reading seen, by readClock() or as an arrival time.
+  double reading_ = -std::numeric_limits<double>::infinity();
   double startTime_ = 0.0;  ///< clock reading the schedule (re)started at
   double maxStepSeconds_ = 0.0;
   double estimatorSeconds_ = 0.0;
