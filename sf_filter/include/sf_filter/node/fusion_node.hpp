@@ -7,12 +7,13 @@
 // checking their type itself, so that a publisher of the wrong type is reported, not ignored.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <memory>
-#include <cmath>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,10 +29,10 @@
 
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/definition/message_sink.hpp"
+#include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_diagnostics.hpp"
-#include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
 
 namespace sf_filter {
@@ -94,21 +95,24 @@ class FusionNode final : public MessageSink {
   /// Subscribes the reader's topic as serialized messages; each message of the expected type
   /// is handed to the reader, which gives every used field to measurement() or control().
   void subscribe(const TopicReader& reader) {
-    subscribers_.push_back(nh_.subscribe<topic_tools::ShapeShifter>(
-        reader.topic, queueSize_, [this, reader](const topic_tools::ShapeShifter::ConstPtr& msg) {
-          const double now = ros::Time::now().toSec();
-          advance(now);
-          if (!hasExpectedType(reader, *msg)) return;
-          buffer_.resize(msg->size());
-          ros::serialization::OStream stream(buffer_.data(), msg->size());
-          msg->write(stream);
-          try {
-            reader.read(buffer_.data(), msg->size(), *this, now);
-          } catch (const ros::Exception& e) {
-            ROS_ERROR_THROTTLE(5.0, "topic %s: a message could not be decoded: %s",
-                               reader.topic.c_str(), e.what());
-          }
-        }));
+    using Event = ros::MessageEvent<topic_tools::ShapeShifter const>;
+    const boost::function<void(const Event&)> callback = [this, reader](const Event& event) {
+      const topic_tools::ShapeShifter::ConstPtr& msg = event.getConstMessage();
+      const double now = arrival(event.getReceiptTime());
+      advance(now);
+      if (!hasExpectedType(reader, *msg)) return;
+      buffer_.resize(msg->size());
+      ros::serialization::OStream stream(buffer_.data(), msg->size());
+      msg->write(stream);
+      try {
+        reader.read(buffer_.data(), msg->size(), *this, now);
+      } catch (const ros::Exception& e) {
+        ROS_ERROR_THROTTLE(5.0, "topic %s: a message could not be decoded: %s",
+                           reader.topic.c_str(), e.what());
+      }
+    };
+    subscribers_.push_back(
+        nh_.subscribe<topic_tools::ShapeShifter, const Event&>(reader.topic, queueSize_, callback));
   }
 
   /// Starts the fixed-rate schedule once the clock is valid (sim time waits for /clock, saying
@@ -197,10 +201,20 @@ class FusionNode final : public MessageSink {
     return false;
   }
 
+  /// The arrival time of a message: when roscpp's receiving thread read it (its receipt time, on
+  /// ROS time), not when its callback runs - on a loaded machine the callback can run periods
+  /// later, after the clock moved on, and by then the value would count for a later period
+  /// than the offline replay gives it. Never before the core's last clock reading (a reading
+  /// before the current period would be a clock jump backwards); the callback's time when the
+  /// receipt time is not set.
+  double arrival(const ros::Time& receipt) const {
+    if (receipt.isZero()) return ros::Time::now().toSec();
+    return std::max(receipt.toSec(), core_.clock());
+  }
+
   void advance(double now) {
     const std::uint64_t failures = core_.estimationFailures();
-    const ClockEvent event =
-        core_.advanceTo(now, publishEstimate_);
+    const ClockEvent event = core_.advanceTo(now, publishEstimate_);
     if (event == ClockEvent::JumpedBackwards) {
       measured_ = false;
       ROS_WARN_THROTTLE(5.0,
@@ -398,7 +412,7 @@ class FusionNode final : public MessageSink {
   tf2_ros::TransformBroadcaster broadcaster_;
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
-  int queueSize_ = 1000;  ///< ~queue_size: of every subscription and publication
+  int queueSize_ = 1000;   ///< ~queue_size: of every subscription and publication
   bool measured_ = false;  ///< an estimate used a measured value (since the last reset)
   std::uint64_t skippedGaps_ = 0;
   std::uint64_t gatedReported_ = 0;
