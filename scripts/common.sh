@@ -36,6 +36,7 @@ SF_DEB_PACKAGES=(
   python3-diagnostic-msgs
   cmake g++
   clang libclang-rt-14-dev
+  stress-ng
 )
 
 sf_log() { printf '[sf_pkg] %s\n' "$*" >&2; }
