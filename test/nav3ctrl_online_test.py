@@ -115,11 +115,17 @@ class Nav3ctrlOnlineTest(unittest.TestCase):
         ev_off = evaluate.evaluate(offline, truth)
 
         # online against offline, at the online stamps inside the offline range
-        gaps = []
+        gaps, gap_times = [], []
         for t, x, y in zip(online.t, online.x, online.y):
             ref = evaluate.interpolate(offline, t)
             if ref is not None:
                 gaps.append(math.hypot(x - ref[0], y - ref[1]))
+                gap_times.append(t - truth.t[0])
+        # where the online path left the offline one (for a failure under load): the largest
+        # growth of the gap from one estimate to the next, and its bag time
+        step, at = max(((b - a, t) for a, b, t in zip(gaps, gaps[1:], gap_times[1:])),
+                       default=(0.0, 0.0))
+        print("largest growth of the online - offline gap: %.4f m at %.1f s of the bag" % (step, at))
         self.assertGreater(len(gaps), 0.9 * len(offline.t), "too few online estimates")
         final_gap = math.hypot(online.x[-1] - offline.x[-1], online.y[-1] - offline.y[-1])
         print("online: %d estimates, final error %.4f m, RMSE %.4f m; offline: %d estimates, "
