@@ -43,6 +43,7 @@ SF_DEB_PACKAGES=(
   libgeographiclib-dev
   cmake g++
   clang libclang-rt-14-dev
+  stress-ng
 )
 
 sf_log() { printf '[sf_pkg] %s\n' "$*" >&2; }

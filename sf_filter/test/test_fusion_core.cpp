@@ -347,4 +347,118 @@ TEST(FusionCore, AGapOfAnyLengthCostsOneEstimate) {
   }
 }
 
+// Issue 15 R3: rosbag play on a loaded machine falls behind and then publishes its messages
+// without /clock until it has caught up, so the node's clock stands still at 0 while 16 s of
+// stamped values arrive, and then jumps 160 periods (more than maxCatchUpPeriods = 100). The
+// stamps stand in for the stalled clock: each value is queued in its own period and the jump
+// estimates the 160 periods one by one, as the offline replay of the recording does (its clock
+// is the recorded time). Reference: the Kalman filter stepped by hand with each period's pair.
+// Before, every value went into the period of its arrival (the first) and the jump cost one
+// estimate, their average; with the node's 0.5 s tolerance the values more than 0.5 s ahead
+// of the clock were even dropped as future stamps.
+TEST(FusionCore, AStalledClockEstimatesTheQueuedPeriodsWhenItJumps) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.maxFutureStamp = 0.5;  // the node's default
+  Core core(makeTrain(), options);
+  Collector out;
+  core.advanceTo(0.0, out);
+  constexpr int kPeriods = 160;  // 16 s
+  auto speed = [](int k) { return 0.1 * k; };
+  auto acceleration = [](int k) { return 1.0 + 0.01 * k; };
+  for (int k = 0; k < kPeriods; ++k) {
+    core.advanceTo(0.0, out);  // the node reads the stalled clock at every message
+    EXPECT_EQ(core.addMeasurement(0, 0.0, speed(k), std::nullopt, kPeriod * k + 0.05),
+              sf_filter::Rejection::None);
+    EXPECT_EQ(core.addMeasurement(1, 0.0, acceleration(k), std::nullopt, kPeriod * k + 0.06),
+              sf_filter::Rejection::None);
+  }
+  EXPECT_TRUE(out.estimates.empty());
+  EXPECT_EQ(core.queuedAhead(), static_cast<std::uint64_t>(kPeriods - 1));
+  EXPECT_EQ(core.advanceTo(16.0, out), sf_filter::ClockEvent::Normal);
+  ASSERT_EQ(out.estimates.size(), static_cast<std::size_t>(kPeriods));
+  Train reference = makeTrain();
+  for (int k = 0; k < kPeriods; ++k) {
+    reference.estimate(speedAndAcceleration(speed(k), acceleration(k)));
+    EXPECT_NEAR(out.estimates[k].time, kPeriod * (k + 1), 1e-9);
+    expectSameBelief(out.estimates[k], reference);
+  }
+  EXPECT_EQ(core.skippedGaps(), 0u);
+  EXPECT_EQ(core.counters(0).used, static_cast<std::uint64_t>(kPeriods));
+  EXPECT_EQ(core.counters(0).future, 0u);
+}
+
+// The limits of R3. One input alone whose stamps run ahead is a sensor clock running ahead,
+// not a stalled clock: its values stay where they arrive, and it cannot carry itself further
+// ahead (only another input's stamps vouch for a stalled clock), so its values more than
+// maxFutureStamp ahead are dropped as before. Once the clock moves again it is the time: the
+// stamps that stood in for it no longer move the values arriving. Beyond the ring's capacity
+// (maxQueuedPeriods) values go into its last period and the rest of the gap is skipped with one
+// estimate.
+TEST(FusionCore, StampsStandInForTheClockOnlyWhileItStandsStillAndWithinTheRing) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.maxFutureStamp = 0.5;
+  {
+    Core core(makeTrain(), options);
+    Collector out;
+    core.advanceTo(0.0, out);
+    EXPECT_EQ(core.addMeasurement(0, 0.0, 1.0, std::nullopt, 0.4), sf_filter::Rejection::None);
+    EXPECT_EQ(core.addMeasurement(0, 0.0, 1.0, std::nullopt, 0.8),
+              sf_filter::Rejection::FutureStamp);
+  }
+  {
+    Core core(makeTrain(), options);
+    Collector out;
+    core.advanceTo(0.0, out);
+    core.advanceTo(0.01, out);
+    core.addMeasurement(1, 0.01, 0.5, std::nullopt, 0.31);  // a sensor clock 0.3 s fast
+    core.advanceTo(0.02, out);
+    core.addMeasurement(0, 0.02, 2.0);
+    core.advanceTo(0.1, out);
+    ASSERT_EQ(out.estimates.size(), 1u);
+    Train reference = makeTrain();
+    reference.estimate(speedAndAcceleration(2.0, 0.5));  // both in period 1, where they arrived
+    expectSameBelief(out.estimates[0], reference);
+  }
+  {
+    Core core(makeTrain(), options);
+    Collector out;
+    core.advanceTo(0.0, out);
+    // The clock stands still: the first stamp ahead (one input alone) stays where it arrives,
+    // the second input's stamp ahead says that the clock stalls, and its value is queued.
+    core.addMeasurement(1, 0.0, 0.5, std::nullopt, 0.21);  // period 1
+    core.addMeasurement(0, 0.0, 1.0, std::nullopt, 0.25);  // period 3
+    core.advanceTo(0.02, out);                             // the clock moves again
+    core.addMeasurement(0, 0.02, 2.0);                     // period 1, not 3
+    core.advanceTo(0.3, out);
+    ASSERT_EQ(out.estimates.size(), 3u);
+    Train reference = makeTrain();
+    reference.estimate(speedAndAcceleration(2.0, 0.5));
+    expectSameBelief(out.estimates[0], reference);
+    reference.estimate(Measurement<2>::missing());
+    reference.estimate(speedOnly(1.0));
+    expectSameBelief(out.estimates[2], reference);
+  }
+  {
+    options.maxQueuedPeriods = 20;
+    Core core(makeTrain(), options);
+    Collector out;
+    core.advanceTo(0.0, out);
+    for (int k = 0; k < 160; ++k) {
+      core.addMeasurement(0, 0.0, 1.0, std::nullopt, kPeriod * k + 0.05);
+      core.addMeasurement(1, 0.0, 0.0, std::nullopt, kPeriod * k + 0.06);
+    }
+    // The ring holds the current period and 20 + 3 more (32 slots: 31 after the current).
+    const std::uint64_t queued = core.queuedAhead();
+    EXPECT_GE(queued, 20u);
+    EXPECT_LT(queued, 160u);
+    EXPECT_EQ(core.advanceTo(16.0, out), sf_filter::ClockEvent::SkippedGap);
+    EXPECT_EQ(out.estimates.size(), queued + 1);
+    EXPECT_EQ(core.skippedGaps(), 1u);
+    EXPECT_EQ(core.skippedPeriods(), 160u - queued - 1);
+    EXPECT_EQ(core.counters(0).aheadOfClock, 160u - queued - 1);
+  }
+}
+
 }  // namespace

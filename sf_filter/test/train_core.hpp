@@ -59,6 +59,14 @@ inline Measurement<2> speedOnly(double v, double variance = NAN) {
   return z;
 }
 
+/// A measurement with the speed (input 0) and the acceleration (input 1).
+inline Measurement<2> speedAndAcceleration(double v, double a) {
+  Measurement<2> z;
+  z.value << v, a;
+  z.available << true, true;
+  return z;
+}
+
 /// A measurement with only the acceleration (input 1).
 inline Measurement<2> accelerationOnly(double a) {
   Measurement<2> z;

@@ -67,6 +67,8 @@ struct FusionCoreBase::Ring {
   PeriodSchedule schedule;
   std::vector<InputAligner> aligners;
   std::vector<OpenPeriod> open;  ///< ring of the open periods, slot k % size for period k
+  /// The newest period a value or control was placed in (0: none since the schedule started).
+  std::uint64_t newestPlaced = 0;
 };
 
 namespace {
@@ -92,9 +94,12 @@ FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, I
   for (Index i = 0; i < inputs; ++i) {
     ring_->aligners.emplace_back(inputOptions(i).alignment, inputOptions(i).angle);
   }
-  // A power of two, so that the slot of a period is a bit mask away.
+  leadStamps_.assign(static_cast<std::size_t>(inputs), -std::numeric_limits<double>::infinity());
+  // A power of two, so that the slot of a period is a bit mask away. Beyond the periods the
+  // lag keeps open, maxQueuedPeriods slots hold values that arrive ahead of a stalled clock.
   const auto needed =
-      static_cast<std::size_t>(std::floor(options_.maxMeasurementLag / options_.period + 1e-9) + 3);
+      static_cast<std::size_t>(std::floor(options_.maxMeasurementLag / options_.period + 1e-9) + 3 +
+                               static_cast<double>(options_.maxQueuedPeriods));
   std::size_t slots = 1;
   while (slots < needed) slots *= 2;
   Ring::OpenPeriod empty;
@@ -201,6 +206,7 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
   const InputOptions& o = inputOptions(input);
   ++c.received;
   c.lastArrival = now;
+  noteReading(now);
   if (!std::isfinite(value)) {
     ++c.nonFinite;
     return Rejection::NonFinite;
@@ -225,24 +231,66 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
       ++c.duplicate;
       return Rejection::DuplicateStamp;
     }
-    if (stamp > now + options_.maxFutureStamp) {
+    if (tooFarAhead(input, stamp, now)) {
       ++c.future;
       return Rejection::FutureStamp;
     }
     c.lastStamp = stamp;
+    // A value is never sent before it is stamped: stamps of two inputs ahead of the clock's
+    // reading tell that the clock stands still while the values come (rosbag play catching up
+    // publishes them without /clock); one input alone may only have a clock running ahead.
+    // Only when stamps are checked against the clock (a finite maxFutureStamp): they are then
+    // on its time base.
+    if (stamp > reading_ && std::isfinite(options_.maxFutureStamp)) {
+      double& lead = leadStamps_[static_cast<std::size_t>(input)];
+      if (std::isinf(lead)) ++leaders_;
+      if (stamp > lead) lead = stamp;
+      if (stamp > leadStamp_) leadStamp_ = stamp;
+    }
   }
   const bool byStamp = o.alignByStamp && !std::isnan(stamp);
-  const double time = byStamp ? stamp : now;
+  const double arrival = arrivalTime(now, stamp);
+  const double time = byStamp ? stamp : arrival;
   bool estimated = false, beyond = false;
-  const std::uint64_t k = ring_->openPeriodOf(time, estimated, beyond);
+  const std::uint64_t k = placeValue(time, estimated, beyond);
   if (byStamp && estimated) {
     ++c.late;
     return Rejection::TooLate;
   }
-  if (byStamp && beyond) ++c.aheadOfClock;
-  ring_->slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time, now);
+  if (beyond) ++c.aheadOfClock;
+  ring_->slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time, arrival);
   period = k;
   return Rejection::None;
+}
+
+bool FusionCoreBase::tooFarAhead(Index input, double stamp, double now) const {
+  // Another input's stamp vouches for a stalled clock; an input's own stamps do not, so a
+  // sensor whose clock runs ahead cannot carry itself further ahead value by value.
+  double reference = now;
+  for (std::size_t j = 0; j < leadStamps_.size(); ++j) {
+    if (j != static_cast<std::size_t>(input) && leadStamps_[j] > reference) {
+      reference = leadStamps_[j];
+    }
+  }
+  return stamp > reference + options_.maxFutureStamp;
+}
+
+std::uint64_t FusionCoreBase::placeValue(double t, bool& estimated, bool& beyond) {
+  const std::uint64_t k = ring_->openPeriodOf(t, estimated, beyond);
+  if (k > ring_->newestPlaced) ring_->newestPlaced = k;
+  return k;
+}
+
+double FusionCoreBase::arrivalTime(double now, double stamp) const {
+  if (leaders_ < 2) return now;  // the clock is the time
+  // Stalled: a stamped value at its stamp, anything else after the newest stamp.
+  const double time = std::isnan(stamp) ? leadStamp_ : stamp;
+  return now < time ? time : now;
+}
+
+std::uint64_t FusionCoreBase::queuedAhead() const {
+  const std::uint64_t current = ring_->schedule.index();
+  return ring_->newestPlaced > current ? ring_->newestPlaced - current : 0;
 }
 
 Rejection FusionCoreBase::addControl(Index control, double value) {
@@ -252,13 +300,15 @@ Rejection FusionCoreBase::addControl(Index control, double value) {
     return Rejection::NonFinite;
   }
   bool estimated = false, beyond = false;
-  Ring::OpenPeriod& slot = ring_->slotOf(ring_->openPeriodOf(clock_, estimated, beyond));
+  Ring::OpenPeriod& slot = ring_->slotOf(
+      placeValue(arrivalTime(clock_, std::numeric_limits<double>::quiet_NaN()), estimated, beyond));
   slot.control(control) = value;
   slot.controlSet(control) = true;
   return Rejection::None;
 }
 
 FusionCoreBase::ClockStep FusionCoreBase::readClock(double now) {
+  noteReading(now);
   clock_ = now;
   const double lag = options_.maxMeasurementLag;
   PeriodSchedule& schedule = ring_->schedule;
@@ -400,6 +450,8 @@ void FusionCoreBase::clearInputs() {
   innovations_.restartWindows();
   present_ = substituted_ = 0;
   consecutiveFailures_ = 0;
+  ring_->newestPlaced = 0;
+  clearLeadStamps();
 }
 
 const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Index inputs,
@@ -427,6 +479,11 @@ const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Ind
   if (o.nisWindow > 1000000) {
     throw estimation::ParameterError("NIS window is longer than 1e6 periods");
   }
+  if (o.maxQueuedPeriods > kMaxQueuedLimit) {
+    throw estimation::ParameterError("maximum queued periods must be at most " +
+                                     std::to_string(kMaxQueuedLimit) + ", got " +
+                                     std::to_string(o.maxQueuedPeriods));
+  }
   if (o.maxMeasurementLag / o.period > 10000.0) {
     throw estimation::ParameterError("maximum measurement lag is more than 10000 periods");
   }
@@ -453,7 +510,22 @@ const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Ind
 void FusionCoreBase::restartSchedule(double now) {
   startTime_ = now;
   ring_->schedule.start(now - options_.maxMeasurementLag);
+  ring_->newestPlaced = 0;
+  reading_ = now;
+  clearLeadStamps();
   openWindow();
+}
+
+void FusionCoreBase::noteReading(double now) {
+  if (now <= reading_) return;
+  reading_ = now;
+  clearLeadStamps();  // the clock moves: it is the time again
+}
+
+void FusionCoreBase::clearLeadStamps() {
+  for (double& lead : leadStamps_) lead = -std::numeric_limits<double>::infinity();
+  leadStamp_ = -std::numeric_limits<double>::infinity();
+  leaders_ = 0;
 }
 
 /// Assigns the slots to the open periods from the current one on. A slot still holding an

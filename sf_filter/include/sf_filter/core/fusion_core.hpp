@@ -19,6 +19,18 @@
 // end, so with a lag the estimates come out `lag` late but refer to the right instants. Controls
 // are taken by arrival: period k uses the latest control received before its end.
 //
+// Clock stalls (issue 15 R3). A value is never sent before it is stamped: when the stamps of
+// two inputs run ahead of the clock's reading (one input alone may only have a fast clock), the
+// clock stands still and the stamps stand in for it until it moves (only with a finite
+// maxFutureStamp, i.e. stamps on the clock's time base). A stamped value then goes into the
+// period of its stamp, an unstamped value or a control into the period of the newest stamp;
+// the ring keeps Options::maxQueuedPeriods periods ahead of the clock for them. When the clock
+// jumps, crossGap() estimates every period holding queued values one by one, also beyond
+// maxCatchUpPeriods, as the offline replay (whose clock is the recorded time) does, and skips
+// only the rest of the gap. A stamp more than maxFutureStamp
+// ahead of the clock and of every other input's stamps sent while it stood still is dropped:
+// an input's own stamps never vouch for a stalled clock. Once the clock moves it is the time.
+//
 // Faults (doc/reliability.md): a value is checked on arrival - finite, its variance finite and
 // positive and at most kMaxVariance (1e100), inside the input's plausible range, its stamp not
 // older than, equal to or too far ahead of the previous one / the clock - and dropped and counted
@@ -36,6 +48,7 @@
 // belief (filterResets()).
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <string>
@@ -111,10 +124,7 @@ class FusionCore : public FusionCoreBase {
     const ClockStep step = readClock(now);
     if (step.event == ClockEvent::JumpedBackwards) reset();
     if (step.event == ClockEvent::SkippedGap) {
-      estimatePeriod();
-      onEstimate(last_);
-      skipPeriods(step.due);
-      return step.event;
+      return crossGap(step.due, maxCatchUpPeriods(), onEstimate);
     }
     for (std::uint64_t k = 0; k < step.due && step.event == ClockEvent::Normal; ++k) {
       estimatePeriod();
@@ -123,24 +133,38 @@ class FusionCore : public FusionCoreBase {
     return step.event;
   }
 
+  /// advanceTo() for a clock that ran continuously to `now` (the offline replay, whose clock is
+  /// the recorded time of the next message, emulates the online node's timer running through a
+  /// gap between messages): every due period is estimated, up to `maxPeriods` (at most
+  /// kMaxCatchUpLimit) instead of maxCatchUpPeriods(); a longer gap is crossed as advanceTo()
+  /// crosses a jump (crossGap), never by estimating millions of empty periods.
+  template <class OnEstimate>
+  ClockEvent runTo(double now, std::uint64_t maxPeriods, OnEstimate&& onEstimate) {
+    const ClockStep step = readClock(now);
+    if (step.event == ClockEvent::JumpedBackwards) reset();
+    if (step.event == ClockEvent::JumpedBackwards || step.event == ClockEvent::Started) {
+      return step.event;
+    }
+    return crossGap(step.due, std::min(maxPeriods, kMaxCatchUpLimit), onEstimate);
+  }
+
   /// Crosses a forward gap to `now` at the cost of one period, whatever its length: estimates
   /// the current period (with what it holds, a prediction if nothing), calls onEstimate once,
   /// and moves the schedule on by whole periods (keeping the phase) so that now - lag lies in
   /// the current one; the periods in between are not estimated (counted by skippedPeriods()).
-  /// advanceTo() does this for a jump of more than maxCatchUpPeriods periods; an adapter that
-  /// steps through a gap itself (the offline replay emulating a running clock) calls it for a
-  /// gap it must not step through, e.g. one of more than kMaxCatchUpLimit periods. Nothing
-  /// happens (Normal) when no period is due, or before the schedule started.
+  /// Periods holding values that arrived ahead of the clock (queuedAhead()) are estimated
+  /// first, one by one, as advanceTo() does. advanceTo() crosses a jump of more than
+  /// maxCatchUpPeriods periods so; an adapter that steps through a gap itself (the offline
+  /// replay emulating a running clock) calls it for a gap it must not step through, e.g. one of
+  /// more than kMaxCatchUpLimit periods. Nothing happens (Normal) when no period is due, or
+  /// before the schedule started.
   template <class OnEstimate>
   ClockEvent skipGap(double now, OnEstimate&& onEstimate) {
     if (!scheduleStarted()) return advanceTo(now, onEstimate);
     const std::uint64_t due = periodsDue(now);
     if (due == 0) return ClockEvent::Normal;
     setClock(now);
-    estimatePeriod();
-    onEstimate(last_);
-    skipPeriods(due);
-    return ClockEvent::SkippedGap;
+    return crossGap(due, 0, onEstimate);
   }
 
   /// Back to the initial belief; pending values, the alignment histories and the control
@@ -194,6 +218,33 @@ class FusionCore : public FusionCoreBase {
     FusionCore& core_;
     bool predicted_ = false;
   };
+
+  /// Crosses a gap of `due` periods to the clock's reading: the one rule of advanceTo(),
+  /// runTo() and skipGap(). The periods that hold values queued ahead of the clock (up to the
+  /// ring's capacity, Options::maxQueuedPeriods) are estimated one by one, as a running clock
+  /// would have; the rest of the gap is estimated period by period if it is no longer than
+  /// `limit` periods, and otherwise crossed with one estimate, the periods after it skipped.
+  template <class OnEstimate>
+  ClockEvent crossGap(std::uint64_t due, std::uint64_t limit, OnEstimate& onEstimate) {
+    if (due == 0) return ClockEvent::Normal;
+    const std::uint64_t queued = std::min(queuedAhead(), due - 1);
+    for (std::uint64_t k = 0; k < queued; ++k) {
+      estimatePeriod();
+      onEstimate(last_);
+    }
+    const std::uint64_t rest = due - queued;
+    if (rest <= limit) {
+      for (std::uint64_t k = 0; k < rest; ++k) {
+        estimatePeriod();
+        onEstimate(last_);
+      }
+      return ClockEvent::Normal;
+    }
+    estimatePeriod();
+    onEstimate(last_);
+    skipPeriods(rest);
+    return ClockEvent::SkippedGap;
+  }
 
   /// Back to the initial belief, keeping the count of the repairs made so far.
   void restartFilter() {

@@ -30,12 +30,15 @@ class FusionCoreBase {
   static constexpr double kMinPeriod = FusionCoreOptions::kMinPeriod;
   static constexpr double kMaxPeriod = FusionCoreOptions::kMaxPeriod;
   static constexpr std::uint64_t kMaxCatchUpLimit = FusionCoreOptions::kMaxCatchUpLimit;
+  static constexpr std::uint64_t kMaxQueuedLimit = FusionCoreOptions::kMaxQueuedLimit;
   /// The largest variance a measurement may carry (sf_filter::kMaxVariance, 1e100).
   static constexpr double kMaxVariance = sf_filter::kMaxVariance;
 
   /// A measurement of input `input` received at `now`, with the variance the message carried
   /// (if any). `stamp` (NaN when the message has no header) must not run backwards per input;
-  /// it places the value in its period if the input is aligned by stamp.
+  /// it places the value in its period if the input is aligned by stamp. While the clock stands
+  /// still, a value aligned by arrival is placed no earlier than the newest stamp accepted
+  /// since (fusion_core.hpp, "Clock stalls").
   Rejection addMeasurement(Index input, double now, double value,
                            std::optional<double> variance = std::nullopt,
                            double stamp = std::numeric_limits<double>::quiet_NaN());
@@ -94,6 +97,10 @@ class FusionCoreBase {
   /// Restarts of the filter from its initial belief after Options::maxConsecutiveFailures
   /// rejected steps in a row (not counting reset() and clock jumps backwards).
   std::uint64_t filterResets() const { return filterResets_; }
+  /// Periods after the current one, up to the newest holding a value or control that arrived
+  /// ahead of the clock (0: none): what a forward jump of the clock estimates one by one before
+  /// it skips the rest of the gap.
+  std::uint64_t queuedAhead() const;
   /// Periods that have ended by `now` (minus the lag) and are not estimated yet: what
   /// advanceTo(now) would estimate, or skip when more than maxCatchUpPeriods().
   std::uint64_t periodsDue(double now) const;
@@ -149,7 +156,10 @@ class FusionCoreBase {
   };
   ClockStep readClock(double now);
   bool scheduleStarted() const;
-  void setClock(double now) { clock_ = now; }
+  void setClock(double now) {
+    noteReading(now);
+    clock_ = now;
+  }
   /// After the one estimate that crosses a gap of `due` periods to the clock's reading: the
   /// schedule moves on by whole periods so that the reading lies in the current one.
   void skipPeriods(std::uint64_t due);
@@ -218,6 +228,19 @@ class FusionCoreBase {
                                           bool canPredict);
   void restartSchedule(double now);
   void openWindow();
+  /// Whether a stamp of input `input` is further ahead than maxFutureStamp of the clock reading
+  /// `now` and of the newest stamp every other input sent while the clock stood still.
+  bool tooFarAhead(Index input, double stamp, double now) const;
+  /// The open period of time t (ring.openPeriodOf), remembered as queued when it lies ahead.
+  std::uint64_t placeValue(double t, bool& estimated, bool& beyond);
+  /// The time a value aligned by arrival (or a control: `stamp` NaN) belongs to: its arrival,
+  /// or while two inputs' stamps say that the clock stands still, no earlier than its own stamp
+  /// (a stamped value) or the newest stamp (anything else).
+  double arrivalTime(double now, double stamp) const;
+  void clearLeadStamps();
+  /// A clock reading (advanceTo's, or an arrival's): one later than all before means the clock
+  /// moves, and the lead stamps are forgotten.
+  void noteReading(double now);
 
   FusionCoreOptions options_;
   RingPtr ring_;
@@ -227,7 +250,14 @@ class FusionCoreBase {
   Eigen::VectorXd control_;  ///< the controls in force (of the last estimated period)
   InnovationRecord innovations_;
   Index present_ = 0, substituted_ = 0;
-  double clock_ = 0.0;      ///< last reading passed to readClock
+  double clock_ = 0.0;  ///< last reading passed to readClock
+  /// Per input: its newest stamp accepted while the clock stood still, ahead of the clock
+  /// (-inf: none since the clock last moved). Stamps stand in for a stalled clock.
+  std::vector<double> leadStamps_;
+  double leadStamp_ = -std::numeric_limits<double>::infinity();  ///< the largest of them
+  int leaders_ = 0;  ///< inputs with a lead stamp: two or more mean the clock stands still
+  /// The latest clock reading seen, by readClock() or as an arrival time.
+  double reading_ = -std::numeric_limits<double>::infinity();
   double startTime_ = 0.0;  ///< clock reading the schedule (re)started at
   double maxStepSeconds_ = 0.0;
   double estimatorSeconds_ = 0.0;

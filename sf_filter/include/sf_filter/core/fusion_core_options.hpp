@@ -19,12 +19,21 @@ struct FusionCoreOptions {
   static constexpr double kMaxPeriod = 3600.0;
   /// Upper bound of maxCatchUpPeriods: one advanceTo() never estimates more periods.
   static constexpr std::uint64_t kMaxCatchUpLimit = 100000;
+  /// Upper bound of maxQueuedPeriods (the ring of open periods holds one slot per period).
+  static constexpr std::uint64_t kMaxQueuedLimit = 100000;
 
   double period = 0.1;  ///< estimation period [s], kMinPeriod .. kMaxPeriod
   /// A forward clock jump longer than this many periods is skipped (one estimate) instead
   /// of estimating every missed period, so a stalled clock never floods the output.
   /// 1 .. kMaxCatchUpLimit.
   std::uint64_t maxCatchUpPeriods = 100;
+  /// How many periods beyond the clock's current one can hold values that arrived ahead of
+  /// the clock (a stalled clock whose values kept coming: fusion_core.hpp, "Clock stalls"). A
+  /// forward jump of the clock estimates those periods one by one even beyond
+  /// maxCatchUpPeriods; a value further ahead goes into the last of them (counted as
+  /// InputCounters::aheadOfClock). 0 .. kMaxQueuedLimit; the ring of open periods has this
+  /// many slots more (a few kB each).
+  std::uint64_t maxQueuedPeriods = 1000;
   /// One entry per input, or none: every input AVERAGE, by arrival time, without gate.
   std::vector<InputOptions> inputs;
   /// How long after its end a period stays open for stamped values [s] (fusion_core.hpp).

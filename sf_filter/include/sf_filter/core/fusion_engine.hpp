@@ -90,6 +90,9 @@ class FusionEngine {
   virtual std::uint64_t skippedGaps() const = 0;
   virtual std::uint64_t skippedPeriods() const = 0;
   virtual std::uint64_t periodsDue(double now) const = 0;
+  /// FusionCore::runTo: advanceTo for a clock that ran to `now`, every period estimated up to
+  /// `maxPeriods`.
+  virtual ClockEvent runTo(double now, std::uint64_t maxPeriods, EstimateCallback onEstimate) = 0;
   /// FusionCore::skipGap: crosses a forward gap to `now` with one estimate.
   virtual ClockEvent skipGap(double now, EstimateCallback onEstimate) = 0;
   virtual const std::string& lastFailure() const = 0;

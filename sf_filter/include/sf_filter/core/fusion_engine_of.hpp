@@ -32,6 +32,10 @@ class FusionEngineOf final : public FusionEngine {
   ClockEvent advanceTo(double now, EstimateCallback onEstimate) override {
     return core_.advanceTo(now, [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
   }
+  ClockEvent runTo(double now, std::uint64_t maxPeriods, EstimateCallback onEstimate) override {
+    return core_.runTo(now, maxPeriods,
+                       [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
+  }
   ClockEvent skipGap(double now, EstimateCallback onEstimate) override {
     return core_.skipGap(now, [&](const typename Core::Estimate& e) { onEstimate(view(e)); });
   }

@@ -7,6 +7,7 @@
 // checking their type itself, so that a publisher of the wrong type is reported, not ignored.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -117,21 +118,24 @@ class FusionNode final : public MessageSink {
   /// Subscribes the reader's topic as serialized messages; each message of the expected type
   /// is handed to the reader, which gives every used field to measurement() or control().
   void subscribe(const TopicReader& reader) {
-    subscribers_.push_back(nh_.subscribe<topic_tools::ShapeShifter>(
-        reader.topic, queueSize_, [this, reader](const topic_tools::ShapeShifter::ConstPtr& msg) {
-          const double now = ros::Time::now().toSec();
-          advance(now);
-          if (!hasExpectedType(reader, *msg)) return;
-          buffer_.resize(msg->size());
-          ros::serialization::OStream stream(buffer_.data(), msg->size());
-          msg->write(stream);
-          try {
-            reader.read(buffer_.data(), msg->size(), *this, now);
-          } catch (const ros::Exception& e) {
-            ROS_ERROR_THROTTLE(5.0, "topic %s: a message could not be decoded: %s",
-                               reader.topic.c_str(), e.what());
-          }
-        }));
+    using Event = ros::MessageEvent<topic_tools::ShapeShifter const>;
+    const boost::function<void(const Event&)> callback = [this, reader](const Event& event) {
+      const topic_tools::ShapeShifter::ConstPtr& msg = event.getConstMessage();
+      const double now = arrival(event.getReceiptTime());
+      advance(now);
+      if (!hasExpectedType(reader, *msg)) return;
+      buffer_.resize(msg->size());
+      ros::serialization::OStream stream(buffer_.data(), msg->size());
+      msg->write(stream);
+      try {
+        reader.read(buffer_.data(), msg->size(), *this, now);
+      } catch (const ros::Exception& e) {
+        ROS_ERROR_THROTTLE(5.0, "topic %s: a message could not be decoded: %s",
+                           reader.topic.c_str(), e.what());
+      }
+    };
+    subscribers_.push_back(
+        nh_.subscribe<topic_tools::ShapeShifter, const Event&>(reader.topic, queueSize_, callback));
   }
 
   /// Starts the fixed-rate schedule once the clock is valid (sim time waits for /clock, saying
@@ -229,6 +233,17 @@ class FusionNode final : public MessageSink {
                        reader.datatype.c_str(), reader.md5sum.c_str(),
                        static_cast<unsigned long long>(w.count));
     return false;
+  }
+
+  /// The arrival time of a message: when roscpp's receiving thread read it (its receipt time, on
+  /// ROS time), not when its callback runs - on a loaded machine the callback can run periods
+  /// later, after the clock moved on, and by then the value would count for a later period
+  /// than the offline replay gives it. Never before the core's last clock reading (a reading
+  /// before the current period would be a clock jump backwards); the callback's time when the
+  /// receipt time is not set.
+  double arrival(const ros::Time& receipt) const {
+    if (receipt.isZero()) return ros::Time::now().toSec();
+    return std::max(receipt.toSec(), core_.clock());
   }
 
   void advance(double now) {
