@@ -7,7 +7,7 @@
 // the gyro's z is read directly and the tf2 rotation is switched off: the level mount makes
 // reading z exact, and the figures of doc/real_robot.md were made so. (The replay accepts
 // the bag's tf1 /tf, whose tf/tfMessage has tf2_msgs/TFMessage's md5sum, and tf2 strips
-// its leading slashes, so the rotation would work too.)
+// its leading slashes; a copy keeping the rotation has not been measured.)
 // Included (not copied) so that every other line is provably the shipped header's.
 #include "diff_drive_odom_imu.h"
 
