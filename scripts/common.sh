@@ -98,6 +98,11 @@ sf_setup_workspace() {
   SF_WS="$(cd "${SF_WS}" && pwd -P)"
   sf_link_into_workspace "$SF_REPO_ROOT" "${SF_WS}/src/${SF_PACKAGE}"
   sf_link_into_workspace "$SF_REPO_ROOT/sf_msgs" "${SF_WS}/src/sf_msgs"
+  # Debian's catkin snapshots the environment of the tests (build/catkin_generated/
+  # setup_cached.sh) at the first configure and puts only folders that exist then on
+  # PYTHONPATH; sf_msgs' Python module is generated later, so without this folder every test
+  # that imports sf_msgs fails in a fresh workspace ("No module named 'sf_msgs'").
+  mkdir -p "${SF_WS}/devel/lib/python3/dist-packages"
 }
 
 # Run catkin_make in the workspace. The output goes to $SF_WS/<logname>;
