@@ -4,7 +4,7 @@ changes the offline replay's, without a rebuild (test/tuned_params_online.test).
 
 The test identifies Q and R of test/configs/tune_cart_kf.h on a simulated cart bag
 (tools/sim/cart_sim.py, seed 1), loads the written file into the node's namespace with
-`rosparam load`, starts the node (sf_test_tune_cart_kf), plays a second cart bag (seed 2,
+`rosparam load`, starts the node (sf_tune_cart_kf), plays a second cart bag (seed 2,
 readings in mid-period: --mid-period) with `rosbag play --clock --hz=1000`, and compares
 the states the node publishes on ~state with the offline replay of the same bag given the
 file by --params.
@@ -35,7 +35,7 @@ sys.dont_write_bytecode = True
 import cart_sim  # noqa: E402
 from nav3ctrl_online_test import find_executable  # noqa: E402  (the workspace lookup)
 
-NODE = "sf_test_tune_cart_kf"
+NODE = "sf_tune_cart_kf"
 NAME = "cart_kf"
 PERIOD = 0.1
 ONLINE_PERIODS = 300

@@ -138,16 +138,16 @@ class NoiseTuningTest(unittest.TestCase):
         return params, path
 
     def test_kf_recovers_the_simulators_noise(self):
-        self.check_recovers_the_simulators_noise("sf_test_tune_cart_kf")
+        self.check_recovers_the_simulators_noise("sf_tune_cart_kf")
 
     def test_ukf_recovers_the_simulators_noise(self):
-        self.check_recovers_the_simulators_noise("sf_test_tune_cart_ukf")
+        self.check_recovers_the_simulators_noise("sf_tune_cart_ukf")
 
     def test_tuned_nis_is_inside_its_bounds_and_the_headers_is_not(self):
-        _, path = self.tune("sf_test_tune_cart_kf")
-        tuned = self.run_node("sf_test_tune_cart_kf", "--replay", self.bag, "--params", path)
+        _, path = self.tune("sf_tune_cart_kf")
+        tuned = self.run_node("sf_tune_cart_kf", "--replay", self.bag, "--params", path)
         self.assertEqual(tuned.returncode, 0, tuned.stderr)
-        header = self.run_node("sf_test_tune_cart_kf", "--replay", self.bag)
+        header = self.run_node("sf_tune_cart_kf", "--replay", self.bag)
         self.assertEqual(header.returncode, 0, header.stderr)
         got, before = nis_lines(tuned.stdout), nis_lines(header.stdout)
         print(tuned.stdout, header.stdout)
@@ -161,17 +161,17 @@ class NoiseTuningTest(unittest.TestCase):
     def test_the_nis_lines_leave_the_summary_parseable(self):
         # tools/eval parse the summary line (the one with " estimates, ") and its timing; the
         # NIS lines come after the per-input counter lines and must not be taken for it
-        proc = self.run_node("sf_test_tune_cart_kf", "--replay", self.bag)
+        proc = self.run_node("sf_tune_cart_kf", "--replay", self.bag)
         self.assertEqual(proc.returncode, 0, proc.stderr)
         lines = proc.stdout.splitlines()
         self.assertEqual(evaluate.summary_line(proc.stdout), lines[0])
         self.assertIsNotNone(evaluate.parse_summary_timing(lines[0]))
-        self.assertTrue(lines[1].startswith("sf_test_tune_cart_kf: input 0: 3000 received"))
-        self.assertTrue(lines[3].startswith("sf_test_tune_cart_kf: NIS all inputs: mean "))
+        self.assertTrue(lines[1].startswith("sf_tune_cart_kf: input 0: 3000 received"))
+        self.assertTrue(lines[3].startswith("sf_tune_cart_kf: NIS all inputs: mean "))
         self.assertEqual(len(lines), 6)
 
     def test_yaml_changes_the_replay_and_equals_the_same_values_given_otherwise(self):
-        params, path = self.check_recovers_the_simulators_noise("sf_test_tune_cart_kf")
+        params, path = self.check_recovers_the_simulators_noise("sf_tune_cart_kf")
         csv_tuned = os.path.join(self.tmp.name, "tuned.csv")
         csv_header = os.path.join(self.tmp.name, "header.csv")
         csv_copy = os.path.join(self.tmp.name, "copy.csv")
@@ -182,7 +182,7 @@ class NoiseTuningTest(unittest.TestCase):
                                                    "measurement_noise_covariance")}, f)
         for csv, extra in ((csv_tuned, ["--params", path]), (csv_header, []),
                            (csv_copy, ["--params", copy])):
-            proc = self.run_node("sf_test_tune_cart_kf", "--replay", self.bag, "--csv", csv, *extra)
+            proc = self.run_node("sf_tune_cart_kf", "--replay", self.bag, "--csv", csv, *extra)
             self.assertEqual(proc.returncode, 0, proc.stderr)
         with open(csv_tuned) as a, open(csv_header) as b, open(csv_copy) as c:
             tuned, header, copied = a.read(), b.read(), c.read()
@@ -201,20 +201,20 @@ class NoiseTuningTest(unittest.TestCase):
         for free, message in (("Q.2", "Q has diagonal entries Q.0 .. Q.1"),
                               ("S", "'S' is not Q, R, P0"),
                               ("R.x", "R has diagonal entries R.0 .. R.1")):
-            proc = self.run_node("sf_test_tune_cart_kf", "--tune", self.bag, "--free", free)
+            proc = self.run_node("sf_tune_cart_kf", "--tune", self.bag, "--free", free)
             self.assertEqual(proc.returncode, 2, proc.stdout + proc.stderr)
             self.assertIn(message, proc.stderr)
-        proc = self.run_node("sf_test_tune_cart_kf", "--tune", self.bag, "--csv", "x.csv")
+        proc = self.run_node("sf_tune_cart_kf", "--tune", self.bag, "--csv", "x.csv")
         self.assertEqual(proc.returncode, 2)
         self.assertIn("--tune writes no estimates", proc.stderr)
         for option, value, message in (
                 ("--tune-range", "1", "--tune-range must be a finite factor above 1"),
                 ("--tune-range", "ten", "--tune-range 'ten' is not a finite number"),
                 ("--max-evaluations", "2.5", "--max-evaluations must be a whole number")):
-            proc = self.run_node("sf_test_tune_cart_kf", "--tune", self.bag, option, value)
+            proc = self.run_node("sf_tune_cart_kf", "--tune", self.bag, option, value)
             self.assertEqual(proc.returncode, 2, proc.stdout + proc.stderr)
             self.assertIn(message, proc.stderr)
-        proc = self.run_node("sf_test_tune_cart_kf", "--replay", self.bag, "--free", "Q")
+        proc = self.run_node("sf_tune_cart_kf", "--replay", self.bag, "--free", "Q")
         self.assertEqual(proc.returncode, 2)
         self.assertIn("--free and --out belong to --tune", proc.stderr)
 
