@@ -176,8 +176,11 @@ class FusionNode final : public MessageSink {
       ros::WallDuration(0.01).sleep();
     }
     advance(ros::Time::now().toSec());
-    timer_ = nh_.createTimer(ros::Duration(core_.period()),
-                             [this](const ros::TimerEvent& e) { advance(timerReading(e)); });
+    // The period's end as scheduled, not the time the callback runs: after a pause of the
+    // node the callback can run while values read before it wait in the queue (JumpHold).
+    timer_ = nh_.createTimer(ros::Duration(core_.period()), [this](const ros::TimerEvent& e) {
+      advance(e.current_expected.toSec());
+    });
     // A clock that stops right after a held jump (the end of a bag) cannot end the hold: a
     // hold seen by two ticks of this wall timer is over, since everything read before it
     // started has been handled (one callback queue, in order).
@@ -279,18 +282,6 @@ class FusionNode final : public MessageSink {
   double arrival(const ros::Time& receipt) const {
     if (receipt.isZero()) return ros::Time::now().toSec();
     return std::max(receipt.toSec(), core_.clock());
-  }
-
-  /// The clock reading of a timer callback: the period's end as scheduled, not the time the
-  /// callback runs - after a pause of the node the callback can run while values read before
-  /// it wait in the queue (JumpHold) - and never before the core's last reading (roscpp's
-  /// scheduled ends lag the clock when callbacks ran late; such a reading would look like the
-  /// clock running backwards). The time the callback runs, when that is before the core's
-  /// last reading: the clock did run backwards (a restarted bag).
-  double timerReading(const ros::TimerEvent& e) const {
-    const double now = e.current_real.toSec();
-    if (now < core_.clock()) return now;
-    return std::max(e.current_expected.toSec(), core_.clock());
   }
 
   /// Advances the core to the clock reading `now`, unless it is a jump to hold (JumpHold).
