@@ -73,24 +73,6 @@ TEST(FusionCore, UsesTheLatestControlValue) {
   EXPECT_DOUBLE_EQ(out.estimates.at(1).state(0), 4.0);
 }
 
-// A control received at a given time (the online node's controls read while it held a jump of
-// the clock, jump_hold.hpp) counts from that time's period; a time before the clock's last
-// reading counts as that reading.
-TEST(FusionCore, AControlGivenATimeCountsFromThatTimesPeriod) {
-  Core core = makeCore();
-  Collector out;
-  core.advanceTo(0.0, out);
-  core.advanceTo(0.01, out);
-  EXPECT_EQ(core.addControl(0, 2.0, 0.15), sf_filter::Rejection::None);  // period 2
-  EXPECT_EQ(core.addControl(0, 5.0, -1.0), sf_filter::Rejection::None);  // period 1
-  core.advanceTo(0.2, out);
-  ASSERT_EQ(out.estimates.size(), 2u);
-  // x = A x + B u without measurements: (0, 0) + (5, 0), then (5 + 0.1 * 0, 0) + (2, 0).
-  EXPECT_DOUBLE_EQ(out.estimates[0].state(0), 5.0);
-  EXPECT_DOUBLE_EQ(out.estimates[1].state(0), 7.0);
-  EXPECT_DOUBLE_EQ(out.estimates[1].state(1), 0.0);
-}
-
 TEST(FusionCore, KeepsAFixedRateScheduleWithoutDrift) {
   Core core = makeCore();
   Collector out;
