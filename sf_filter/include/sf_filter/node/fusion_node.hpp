@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -31,7 +30,6 @@
 #include <sf_msgs/SetPose.h>
 
 #include "sf_filter/core/fusion_engine.hpp"
-#include "sf_filter/core/jump_hold.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
@@ -55,7 +53,6 @@ class FusionNode final : public MessageSink {
         description_(std::move(description)),
         engine_(std::move(engine)),
         core_(*engine_),
-        hold_(core_.period()),
         aligner_(aligner),
         diagnostics_(nh_, pnh_, core_, description_.inputs, diagnosticPeriod),
         diagnosticPeriod_(diagnosticPeriod),
@@ -88,8 +85,6 @@ class FusionNode final : public MessageSink {
       diagnostics_.addEstimationValue("poses refused",
                                       [this] { return std::to_string(refusedPoses_); });
     }
-    diagnostics_.addEstimationValue("clock jumps held (node paused)",
-                                    [this] { return std::to_string(hold_.holds()); });
     // What is lost before the core sees it is in the input's diagnostics too: a message of
     // another type on its topic, a value that cannot be rotated into the base frame.
     InputLossSource wrongType;
@@ -176,38 +171,23 @@ class FusionNode final : public MessageSink {
       ros::WallDuration(0.01).sleep();
     }
     advance(ros::Time::now().toSec());
-    // The period's end as scheduled, not the time the callback runs: after a pause of the
-    // node the callback can run while values read before it wait in the queue (JumpHold).
-    timer_ = nh_.createTimer(ros::Duration(core_.period()), [this](const ros::TimerEvent& e) {
-      advance(e.current_expected.toSec());
-    });
-    // A clock that stops right after a held jump (the end of a bag) cannot end the hold: a
-    // hold seen by two ticks of this wall timer is over, since everything read before it
-    // started has been handled (one callback queue, in order).
-    releaseTimer_ = nh_.createWallTimer(ros::WallDuration(kHoldReleaseSeconds),
-                                        [this](const ros::WallTimerEvent&) {
-                                          if (!hold_.holding()) return;
-                                          if (holdSeenByTick_ == hold_.holds()) {
-                                            endHold(hold_.release());
-                                          }
-                                          holdSeenByTick_ = hold_.holds();
-                                        });
+    timer_ = nh_.createTimer(ros::Duration(core_.period()),
+                             [this](const ros::TimerEvent&) { advance(ros::Time::now().toSec()); });
   }
 
   void measurement(Index input, double now, double value, std::optional<double> variance,
                    double stamp) override {
-    if (hold_.holding() && !JumpHold::stamped(stamp)) {
-      hold_.keep({false, input, value, variance});
-      return;
+    const Rejection r = core_.addMeasurement(input, now, value, variance, stamp);
+    if (r != Rejection::None) {
+      ROS_WARN_THROTTLE(5.0, "dropped a value of input %ld (%s): %s", static_cast<long>(input),
+                        description_.inputs.at(static_cast<std::size_t>(input)).c_str(),
+                        toString(r));
     }
-    warnIfInputDropped(
-        input, core_.addMeasurement(input, hold_.placement(now, stamp), value, variance, stamp));
   }
 
   void measurementBlock(const Index* inputs, const double* values, const double* covariance,
                         int count, double now, double stamp) override {
-    const Rejection r = core_.addMeasurementBlock(inputs, values, covariance, count,
-                                                  hold_.placement(now, stamp), stamp);
+    const Rejection r = core_.addMeasurementBlock(inputs, values, covariance, count, now, stamp);
     if (r != Rejection::None) {
       ROS_WARN_THROTTLE(5.0, "dropped a value of the covariance block of input %ld (%s): %s",
                         static_cast<long>(inputs[0]),
@@ -217,31 +197,13 @@ class FusionNode final : public MessageSink {
   }
 
   void control(Index index, double value) override {
-    if (hold_.holding()) {
-      hold_.keep({true, index, value, std::nullopt});
-      return;
-    }
-    warnIfControlDropped(index, core_.addControl(index, value));
-  }
-
- private:
-  void warnIfInputDropped(Index input, Rejection r) {
-    if (r != Rejection::None) {
-      ROS_WARN_THROTTLE(5.0, "dropped a value of input %ld (%s): %s", static_cast<long>(input),
-                        description_.inputs.at(static_cast<std::size_t>(input)).c_str(),
-                        toString(r));
-    }
-  }
-
-  void warnIfControlDropped(Index index, Rejection r) {
-    if (r != Rejection::None) {
+    if (core_.addControl(index, value) != Rejection::None) {
       ROS_WARN_THROTTLE(5.0, "dropped a non-finite value of control %ld (%s)",
                         static_cast<long>(index),
                         description_.controls.at(static_cast<std::size_t>(index)).c_str());
     }
   }
 
- public:
   std::optional<double> rotated(Index input, const std::string& frame, std::uint32_t sec,
                                 std::uint32_t nsec, const std::array<double, 3>& vector,
                                 int axis) override {
@@ -284,41 +246,7 @@ class FusionNode final : public MessageSink {
     return std::max(receipt.toSec(), core_.clock());
   }
 
-  /// Advances the core to the clock reading `now`, unless it is a jump to hold (JumpHold).
   void advance(double now) {
-    const bool held = hold_.holding();
-    if (!hold_.admit(now, core_.clock(), core_.periodsDue(now))) {
-      if (!held) {
-        ROS_INFO_THROTTLE(5.0,
-                          "the clock jumped %.3f s since the node last read it (the node was "
-                          "paused): its periods wait for the values read meanwhile (%llu jumps "
-                          "held so far)",
-                          now - core_.clock(), static_cast<unsigned long long>(hold_.holds()));
-      }
-      return;
-    }
-    if (held) {
-      endHold(now);
-    } else {
-      advanceCore(now);
-    }
-  }
-
-  /// After a held jump: the unstamped values and controls read meanwhile are placed, then the
-  /// core estimates the periods the jump crossed.
-  void endHold(double now) {
-    hold_.placeKept([this](const JumpHold::Kept& v, double time) {
-      if (v.control) {
-        warnIfControlDropped(v.index, core_.addControl(v.index, v.value, time));
-      } else {
-        warnIfInputDropped(v.index, core_.addMeasurement(v.index, time, v.value, v.variance,
-                                                         std::numeric_limits<double>::quiet_NaN()));
-      }
-    });
-    advanceCore(now);
-  }
-
-  void advanceCore(double now) {
     const std::uint64_t failures = core_.estimationFailures();
     const ClockEvent event = core_.advanceTo(now, publishEstimate_);
     if (event == ClockEvent::JumpedBackwards) {
@@ -503,10 +431,6 @@ class FusionNode final : public MessageSink {
   NodeDescription description_;
   std::unique_ptr<FusionEngine> engine_;
   FusionEngine& core_;
-  JumpHold hold_;  ///< a jump of the clock while the node was paused (jump_hold.hpp)
-  /// The hold count the release timer saw holding at its last tick.
-  std::uint64_t holdSeenByTick_ = 0;
-  static constexpr double kHoldReleaseSeconds = 0.05;  ///< wall time between its ticks
   FrameAligner* aligner_;
   FusionDiagnostics diagnostics_;
   double diagnosticPeriod_;  ///< [s] between diagnostic reports
@@ -534,7 +458,6 @@ class FusionNode final : public MessageSink {
   std::vector<ros::Publisher> outputs_;
   ros::Publisher state_, odometry_;
   ros::Timer timer_;
-  ros::WallTimer releaseTimer_;
   tf2_ros::TransformBroadcaster broadcaster_;
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
