@@ -1,6 +1,5 @@
 #include "sf_filter/core/fusion_core_base.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -294,7 +293,7 @@ std::uint64_t FusionCoreBase::queuedAhead() const {
   return ring_->newestPlaced > current ? ring_->newestPlaced - current : 0;
 }
 
-Rejection FusionCoreBase::addControl(Index control, double value, double time) {
+Rejection FusionCoreBase::addControl(Index control, double value) {
   if (control < 0 || control >= control_.size()) return Rejection::UnknownInput;
   if (!std::isfinite(value)) {
     ++controlNonFinite_;
@@ -302,8 +301,7 @@ Rejection FusionCoreBase::addControl(Index control, double value, double time) {
   }
   bool estimated = false, beyond = false;
   Ring::OpenPeriod& slot = ring_->slotOf(
-      placeValue(arrivalTime(std::max(time, clock_), std::numeric_limits<double>::quiet_NaN()),
-                 estimated, beyond));
+      placeValue(arrivalTime(clock_, std::numeric_limits<double>::quiet_NaN()), estimated, beyond));
   slot.control(control) = value;
   slot.controlSet(control) = true;
   return Rejection::None;

@@ -59,11 +59,7 @@ class FusionCoreBase {
                                 double stamp = std::numeric_limits<double>::quiet_NaN());
   /// A control value, received at the clock's last reading; a period uses the latest value of
   /// each control received before its end.
-  Rejection addControl(Index control, double value) { return addControl(control, value, clock_); }
-  /// The same, received at `time` (no earlier than the clock's last reading; a later time puts
-  /// it into a period ahead, as a value that arrived ahead of the clock): the online node gives
-  /// the controls it read while it held a jump of the clock (jump_hold.hpp) their times.
-  Rejection addControl(Index control, double value, double time);
+  Rejection addControl(Index control, double value);
 
   const InputCounters& counters(Index input) const {
     return counters_[static_cast<std::size_t>(input)];

@@ -64,8 +64,6 @@ class FusionEngine {
                                         const double* covariance, int count, double now,
                                         double stamp) = 0;
   virtual Rejection addControl(Index control, double value) = 0;
-  /// FusionCoreBase::addControl received at `time`.
-  virtual Rejection addControl(Index control, double value, double time) = 0;
   virtual void reset() = 0;
   /// Replaces the pose part of the current belief (set_pose, initialpose): the state
   /// variables `indices` (x, y, heading) get `xyYaw`, their 3 x 3 covariance block

@@ -50,9 +50,6 @@ class FusionEngineOf final : public FusionEngine {
   Rejection addControl(Index control, double value) override {
     return core_.addControl(control, value);
   }
-  Rejection addControl(Index control, double value, double time) override {
-    return core_.addControl(control, value, time);
-  }
   void reset() override { core_.reset(); }
   bool setPose(const std::array<int, 3>& indices, const std::array<double, 3>& xyYaw,
                const Eigen::Matrix3d& covariance) override {
