@@ -8,10 +8,7 @@ schedule starts at the first message. Online, a message belongs to the period in
 node receives it (the ROS time at which roscpp read it under rosbag play --clock; while the
 player catches up without /clock, the stamps stand in for the stalled clock, issue 15 R3) and
 the schedule starts at the first /clock the node sees: scheduling jitter moves a value into a neighbouring
-period, and the periods' phase differs. (When the node gets no CPU for longer than a period
-on a loaded machine, it holds the jump of its clock and places the values read after the pause
-over the pause, stamped ones by their stamps: sf_filter/core/jump_hold.hpp; before, the pause's
-values all fell into its last period.) Both amount to shifting inputs by at most one period
+period, and the periods' phase differs. Both amount to shifting inputs by at most one period
 T = 0.1 s, and shifting the inputs of a dead-reckoning filter by T shifts the estimated
 path in time by at most T, which moves a point on it by at most v_max T = 0.7 m/s * 0.1 s =
 0.07 m (0.7 m/s: the teleoperation bound of the bag, doc/bags.md). That is the bound DELTA
