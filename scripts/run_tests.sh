@@ -14,20 +14,65 @@ sf_prepare
 results="${SF_WS}/build/test_results"
 rm -rf "$results"
 
+# Three steps, so that what measures wall-clock behaviour runs alone (doc/reliability.md,
+# "Test order"): (1) every test executable and the sanitizer trees are built; (2) the tests
+# that do not depend on timing run two at a time; (3) the rostests, the soak and the
+# under-load check (which brings its own load, stress-ng) run one at a time. Under a plain
+# `catkin_make -j2 run_tests` a compiler or the fuzz run would compete with the 1 kHz nodes
+# of the online tests, a load nobody chose and no test asserts against.
+build_dir="${SF_WS}/build"
+make_targets="$(make -C "$build_dir" help 2>/dev/null | sed -n 's/^\.\.\. \([^ ]*\).*$/\1/p')"
+has_target() { grep -qx -- "$1" <<<"$make_targets"; }
+timed=(rostest soak load)
+groups=() timed_targets=() kept=()
+for target in $(grep "^run_tests_${SF_PACKAGE}_" <<<"$make_targets" | sort); do
+  # a group: run_tests_<pkg>_<group>, the prefix of its tests' own targets (and not itself a
+  # test of a group found before: sorted, a group comes before its tests)
+  grep -q "^${target}_" <<<"$make_targets" || continue
+  for group in "${kept[@]}"; do [[ "$target" == "${group}_"* ]] && continue 2; done
+  kept+=("$target")
+  if [[ " ${timed[*]} " == *" ${target#run_tests_${SF_PACKAGE}_} "* ]]; then
+    timed_targets+=("$target")
+  else
+    groups+=("$target")
+  fi
+done
+# Other packages of the workspace (sf_msgs): their whole run_tests target, in step 2.
+for target in $(grep -E "^run_tests_[A-Za-z0-9]+$" <<<"$make_targets"); do
+  [[ "$target" == "run_tests_${SF_PACKAGE}" ]] || groups+=("$target")
+done
+
 sf_log "running tests (log: ${SF_WS}/tests.log)"
 t0=$SECONDS
-cmd=(catkin_make -C "$SF_WS" -j"${SF_JOBS}" -k
-  -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -DSF_PKG_HEAVY_TESTS=ON run_tests)
-if [[ "$SF_VERBOSE" == 1 ]]; then
-  "${cmd[@]}" 2>&1 | tee "${SF_WS}/tests.log" && test_rc=0 || test_rc=$?
-else
-  # Show the tests' own output, not catkin/CMake/make chatter.
-  "${cmd[@]}" 2>&1 | tee "${SF_WS}/tests.log" | awk '
+base=(catkin_make -C "$SF_WS" -k -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3
+  -DSF_PKG_HEAVY_TESTS=ON)
+prebuild=(tests)
+if has_target sf_sanitizer_builds; then prebuild+=(sf_sanitizer_builds); fi
+# Show the tests' own output, not catkin/CMake/make chatter.
+filter() {
+  if [[ "$SF_VERBOSE" == 1 ]]; then
+    cat
+  else
+    awk '
     /^-- / || /^####/ || /^\[ *[0-9]+%\] (Built target|Linking|Building)/ { next }
     /^(Base path|Source space|Build space|Devel space|Install space):/ { next }
     /^(Removing test result files|Making|Generating)/ { next }
-    { print; fflush() }' && test_rc=0 || test_rc=$?
-fi
+    { print; fflush() }'
+  fi
+}
+run_steps() {
+  local rc=0
+  sf_log "step 1: building the tests (${prebuild[*]})"
+  "${base[@]}" -j"${SF_JOBS}" "${prebuild[@]}" || rc=$?
+  sf_log "step 2: ${groups[*]}"
+  "${base[@]}" -j"${SF_JOBS}" "${groups[@]}" || rc=$?
+  if ((${#timed_targets[@]})); then
+    sf_log "step 3, one at a time: ${timed_targets[*]}"
+    "${base[@]}" -j1 "${timed_targets[@]}" || rc=$?
+  fi
+  return "$rc"
+}
+run_steps 2>&1 | tee "${SF_WS}/tests.log" | filter && test_rc=0 || test_rc=$?
 sf_log "tests finished in $((SECONDS - t0)) s"
 if ((test_rc != 0)); then
   sf_log "ERROR: catkin_make run_tests failed (exit ${test_rc}); full log: ${SF_WS}/tests.log"

@@ -68,12 +68,14 @@ class Nav3ctrlOnlineTest(unittest.TestCase):
         received = []
         rospy.Subscriber("odometry/filtered", Odometry, lambda m: received.append(
             (m.header.stamp.to_sec(), m.pose.pose.position.x, m.pose.pose.position.y)))
+        # The bag is read before the player starts: reading it costs seconds of CPU, which on
+        # a loaded machine the node needs while the bag plays.
+        bag = rospy.get_param("~bag")
+        truth = evaluate.load_truth(bag)
         # The player starts once every topic it plays has a subscriber (--wait-for-subscribers):
         # the node's inputs, and ground_truth/pose, which only this test reads - so no estimate
         # is published before the test listens.
         rospy.Subscriber("ground_truth/pose", PoseStamped, lambda m: None)
-        bag = rospy.get_param("~bag")
-        truth = evaluate.load_truth(bag)
 
         # the bag ends at rest at the start: wait for an estimate at its end. The node estimates
         # every period that ended by its last clock reading, which is at least the last message

@@ -362,22 +362,53 @@ class ReplayFaultTest(unittest.TestCase):
         self.assertEqual(clean.returncode, 0, clean.stdout + clean.stderr)
 
     def test_interrupted_midway(self):
+        # The replay (a parent and the child that reads the bag, contained_run.hpp) is held
+        # stopped whenever the test looks at it, so the interrupt lands while the output is
+        # still being written however slowly this process runs: it is let run in slices of
+        # 2 ms until the partial CSV exists, and SIGINT is sent before it may go on.
         proc = subprocess.Popen(
             [self.exe, "--replay", SHIPPED, "--csv", self.csv, "--bag", self.bag],
-            stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
-        deadline = time.monotonic() + 30
-        while not os.path.exists(self.csv + ".partial") and time.monotonic() < deadline:
-            if proc.poll() is not None:
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True,
+            start_new_session=True)
+        group = proc.pid
+        deadline = time.monotonic() + 60
+        while True:
+            os.killpg(group, signal.SIGSTOP)
+            wait_until_stopped(group)
+            if os.path.exists(self.csv + ".partial") or proc.poll() is not None:
                 break
-            time.sleep(0.001)
-        if proc.poll() is not None:
-            proc.communicate()
-            self.skipTest("the replay finished before it could be interrupted")
-        proc.send_signal(signal.SIGINT)
+            self.assertLess(time.monotonic(), deadline, "no partial output after 60 s")
+            os.killpg(group, signal.SIGCONT)
+            time.sleep(0.002)
+        self.assertIsNone(proc.poll(), "the replay ended before it wrote a partial output")
+        os.killpg(group, signal.SIGINT)
+        os.killpg(group, signal.SIGCONT)
         out, err = proc.communicate(timeout=30)
         result = subprocess.CompletedProcess(proc.args, proc.returncode, out, err)
         self.assertFails(result, "interrupted", status=130)
 
+
+def wait_until_stopped(group, timeout=10.0):
+    """Waits until every live process of the process group is stopped (state T in /proc)."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        running = False
+        for pid in os.listdir("/proc"):
+            if not pid.isdigit():
+                continue
+            try:
+                with open("/proc/%s/stat" % pid) as f:
+                    fields = f.read().rsplit(")", 1)[1].split()
+            except OSError:
+                continue  # gone
+            # fields[0]: state, fields[2]: process group
+            if int(fields[2]) == group and fields[0] not in ("T", "t", "Z", "X"):
+                running = True
+                break
+        if not running:
+            return
+        time.sleep(0.0005)
+    raise AssertionError("process group %d did not stop" % group)
 
 if __name__ == "__main__":
     unittest.main()
