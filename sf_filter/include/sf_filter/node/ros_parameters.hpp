@@ -220,8 +220,8 @@ inline void forEachInputEntry(const ParameterSource& pnh, const std::string& nam
   const std::string expected = std::to_string(inputs) + " entries (one per TOPICS_IN entry)";
   if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
     throw ParameterOverrideError("parameter ~" + name + ": expected a list of " + expected +
-                                 " or a map from input names to entries, found " +
-                                 detail::describe(value));
+                                 ", found " + detail::describe(value) +
+                                 " (or a map from input names or indices to entries)");
   }
   if (static_cast<std::size_t>(value.size()) != inputs) {
     throw ParameterOverrideError("parameter ~" + name + ": expected " + expected + ", found " +
