@@ -383,7 +383,8 @@ inline sf_config::Parameters toFixedSize(const FilterParameters& r) {
   return p;
 }
 
-/// "topic field" per input; "topic member" for a FRAME_ALIGNED_INPUTS one.
+/// "topic field" per input; "topic member" for a FRAME_ALIGNED_INPUTS one; with INPUTS
+/// records "name: topic field".
 inline std::vector<std::string> inputNames() {
   std::vector<std::string> names;
   sf_config::forEachInput([&](auto in) {
@@ -400,6 +401,9 @@ inline std::vector<std::string> inputNames() {
                       (Derivation::differential ? " differential" : ""));
     } else {
       names.push_back(std::string(In::topic) + " " + std::string(In::field));
+    }
+    if constexpr (sf_config::kHasInputRecords) {
+      names.back() = std::string(sf_config::kInputNames[In::index]) + ": " + names.back();
     }
   });
   return names;
@@ -428,6 +432,7 @@ inline NodeDefinition nodeDefinition() {
   d.capabilities.hasStamp.assign(sf_config::kInputHasStamp.begin(),
                                  sf_config::kInputHasStamp.end());
   d.capabilities.names = description.inputs;
+  d.capabilities.keys.assign(sf_config::kInputNames.begin(), sf_config::kInputNames.end());
   d.estimationPeriodMs = sf_config::kEstimationPeriodMs;
   d.maxMeasurementLagMs = sf_config::kMaxMeasurementLagMs;
   d.inputOptions = sf_config::defaultInputOptions();
