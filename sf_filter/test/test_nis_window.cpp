@@ -102,11 +102,12 @@ TEST(NisWindow, HandComputedEffectivePeriodsGiveTheScaledChiSquareBand) {
 /// The fraction of `windows` disjoint full windows of kWindow periods flagged, with the NIS
 /// of each period from `next` (m degrees of freedom); with `independentBand`, against the
 /// bounds for independent periods, chi2^-1(q; D) / K (Boost's quantiles, not the code under
-/// test). The window slides through all periods as the node's does; the verdicts of every
-/// kWindow-th period (whose windows share no period) are counted.
+/// test); `autocorrelationHorizon` as NisWindow's (default: ten windows). The window slides through
+/// all periods as the node's does; the verdicts of every kWindow-th period (whose windows share no
+/// period) are counted.
 double flaggedFraction(const std::function<double()>& next, int m, int windows,
-                       bool independentBand) {
-  sf_filter::NisWindow window(kWindow);
+                       bool independentBand, double autocorrelationHorizon = -1.0) {
+  sf_filter::NisWindow window(kWindow, autocorrelationHorizon);
   const boost::math::chi_squared chi2(static_cast<double>(m * kWindow));
   const double lower = boost::math::quantile(chi2, kAlpha / 2) / kWindow,
                upper = boost::math::quantile(chi2, 1 - kAlpha / 2) / kWindow;
@@ -171,13 +172,15 @@ TEST(NisWindow, FlagsCorrelatedConsistentValuesAboutAsOftenAsIndependentOnes) {
   const double tolerance = binomialTolerance(kWindows);
   for (int m : {1, 3}) {
     for (double phi : {0.7, 0.9}) {
-      SquaredAr1 oldRun(m, phi, 21 + m), newRun(m, phi, 21 + m);
+      SquaredAr1 oldRun(m, phi, 21 + m), newRun(m, phi, 21 + m), oneWindowRun(m, phi, 21 + m);
       const double independent = flaggedFraction(oldRun, m, kWindows, true);
       const double corrected = flaggedFraction(newRun, m, kWindows, false);
+      // For doc/tuning.md: rho estimated over one window only (not asserted).
+      const double oneWindow = flaggedFraction(oneWindowRun, m, kWindows, false, kWindow);
       std::printf(
           "squared AR(1), m %d, phi %.1f: flagged %.4f with the independent band, %.4f "
-          "with the corrected one (nominal %.2f)\n",
-          m, phi, independent, corrected, kAlpha);
+          "with the corrected one (nominal %.2f; %.4f with rho over one window)\n",
+          m, phi, independent, corrected, kAlpha, oneWindow);
       EXPECT_GT(independent, 4 * kAlpha) << "m = " << m << ", phi = " << phi;
       EXPECT_LT(corrected, kAlpha + tolerance) << "m = " << m << ", phi = " << phi;
       EXPECT_GT(corrected, kAlpha / 2) << "m = " << m << ", phi = " << phi;

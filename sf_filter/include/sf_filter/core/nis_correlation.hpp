@@ -4,7 +4,7 @@
 // independent. On a robot they are not: wheel slip, a drifting gyro bias, a wheel that is
 // exact at standstill and noisy in motion make the NIS of neighbouring periods alike, and the
 // mean of K such values varies far more than chi-square(D)/K says (a window of 100 periods of
-// the shipped diff-drive bag, well tuned, left those bounds in 44 % of its periods).
+// the shipped diff-drive bag, tuned by --tune, left those bounds in 44 % of its periods).
 //
 // Model: the NIS per degree of freedom, u_k = eps_k / m_k, is a stationary AR(1) sequence with
 // lag-1 autocorrelation rho. The variance of the mean of n of its values is then that of n
@@ -18,15 +18,17 @@
 // the same confidence, with the degrees of freedom scaled by n_eff / n (a scaled chi-square
 // matched in mean and variance, Satterthwaite's approximation): nis_window.hpp.
 //
-// Why AR(1) with rho estimated this way (one choice, measured against the alternatives on
-// simulated squared AR(1) Gaussians, doc/tuning.md#the-nis-check-and-correlated-innovations):
-// - rho is the lag-1 autocorrelation of u, exponentially weighted over a horizon of several
-//   windows, not of the window alone. A window's own estimate from 100 values has a standard
-//   deviation of about 0.1 and is correlated with the window's mean (a quiet stretch of a
-//   squared process has both a low mean and a low autocorrelation), so the low windows got a
-//   narrow band: 8 to 9 % of them flagged at a nominal 5 %. Over ten windows: 3 to 5 %.
-//   Batch means over one window (10 batches of 10) estimate the variance from 9 degrees of
-//   freedom: noisier still.
+// Why AR(1) with rho estimated this way (doc/tuning.md#the-nis-check-and-correlated-innovations
+// has the flag rates on simulated NIS, from sf_filter/test/test_nis_window.cpp):
+// - The AR(1) factor needs one number, estimated from all neighbouring pairs and updated in
+//   O(1); batch means over one window (10 batches of 10) estimate the variance from 9
+//   degrees of freedom, far noisier.
+// - rho is the lag-1 autocorrelation of u, exponentially weighted over a horizon of ten
+//   windows, not of the judged window alone: from 100 values its standard deviation is about
+//   0.1 and it depends on the window's own values (a quiet stretch of a squared process has
+//   both a low mean and a low autocorrelation, so exactly the low windows would get a narrow
+//   band); over ten windows the band is steadier and nearly independent of the window it
+//   judges. Both flag consistent correlated NIS at 2.5 to 5 % (nominal 5 %).
 // - rho is clamped to [0, 1): NIS values of jointly Gaussian innovations cannot be negatively
 //   correlated (cov(y_j' A y_j, y_k' B y_k) = 2 tr(A C B C') >= 0 for C = cov(y_j, y_k)), so a
 //   negative estimate is sampling noise and counts as 0; n_eff is never more than n.
