@@ -14,9 +14,11 @@
 // at start (its odometry heading is 0 there). The odom origin is the start, so the first fix
 // is the datum. The recording has no absolute heading (its IMU's orientation covariance is
 // 1e6, its magnetometer topic was not kept), so the offset is a parameter; tools/eval/
-// gps_holdout.py measures it from the first fused fixes. The variance of each fix is its
-// position_covariance (covariance type APPROXIMATED on this recording: 0.81 to 1.96 m^2);
-// R's 2.0 m^2 is used only for a fix whose covariance type is UNKNOWN.
+// gps_holdout.py measures it from the first fused fixes. The covariance of each fix is its
+// position_covariance turned into the odom frame (covariance type APPROXIMATED on this
+// recording: its diagonal, equal east and north variances of 0.81 to 1.96 m^2, so x and y
+// stay uncorrelated at any offset); R's 2.0 m^2 is used only for a fix whose covariance type
+// is UNKNOWN.
 //
 // Why the scale state: the wheels of this robot report about 15 % more distance than the GPS
 // track has (27.6 m against 24.0 m, doc/real_robot.md), a systematic error that no white

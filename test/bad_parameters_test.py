@@ -80,6 +80,11 @@ CASES = [
     ("input_alignment", "LAST", "parameter ~input_alignment: expected a list of 2 entries "
      "(one per TOPICS_IN entry), found a string"),
     ("align_by_stamp", [False, "yes"], "parameter ~align_by_stamp entry 1: expected true or false"),
+    # A map names inputs by INPUTS record name or index; this header has no records.
+    ("input_gate", {"gyro": 1.0}, "parameter ~input_gate entry gyro: input 'gyro' is neither an "
+     "input index nor an input name (this header has no INPUTS records)"),
+    ("input_gate", {"5": 1.0}, "parameter ~input_gate entry 5: input index out of range, "
+     "expected 0 to 1"),
     ("frame_id", 5, "parameter ~frame_id: expected a string, found an integer (5)"),
     ("publish_tf", "no", "parameter ~publish_tf: expected a boolean, found a string"),
     ("queue_size", "big", "parameter ~queue_size: expected an integer, found a string"),

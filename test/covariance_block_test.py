@@ -2,38 +2,20 @@
 """INPUT_COVARIANCE_BLOCK through the node (test/covariance_block.test): a Kalman filter of a
 position held still (x0 = 0, P0 = I, Q = 0, header R = 4 I) reads x and y of
 geometry_msgs/PoseWithCovarianceStamped with rows 0 and 1 of pose.covariance. A pose (1, 2)
-with the block [[1, .5], [.5, 1]] must give the update computed by hand below (the
+with the block [[1, .5], [.5, 1]] must give the update computed by hand (test/kalman_2d.py; the
 correlation moves y to 3.5 / 3.75 = 0.933; without it y would be 1); a second pose whose
 covariance is all zero (ROS's "unknown") must be fused with the header's R = 4 I.
 """
 
 import sys
-import time
 import unittest
 
 import rospy
 import rostest
-import rostopic
 from geometry_msgs.msg import PoseWithCovarianceStamped
 
-
-def inverse(m):
-    (a, b), (c, d) = m
-    det = a * d - b * c
-    return [[d / det, -b / det], [-c / det, a / det]]
-
-
-def product(m, n):
-    return [[sum(m[i][k] * n[k][j] for k in range(2)) for j in range(2)] for i in range(2)]
-
-
-def update(x, P, z, R):
-    """One Kalman update with H = I: K = P (P + R)^-1, x + K (z - x), (I - K) P."""
-    K = product(P, inverse([[P[i][j] + R[i][j] for j in range(2)] for i in range(2)]))
-    y = [z[0] - x[0], z[1] - x[1]]
-    x = [x[i] + K[i][0] * y[0] + K[i][1] * y[1] for i in range(2)]
-    IK = [[(1.0 if i == j else 0.0) - K[i][j] for j in range(2)] for i in range(2)]
-    return x, product(IK, P)
+from kalman_2d import update
+from node_test_helpers import subscribe_states, wait_for
 
 
 def pose(x, y, block):
@@ -51,19 +33,7 @@ def pose(x, y, block):
 
 class CovarianceBlockTest(unittest.TestCase):
     def setUp(self):
-        self.states = []
-        # The state's message class as the node publishes it (waits for the topic), so that
-        # the test does not name the package that defines it.
-        state_class, _, _ = rostopic.get_topic_class("/pose_block/state", blocking=True)
-        rospy.Subscriber("/pose_block/state", state_class, self.states.append)
-
-    def wait_for(self, predicate, seconds):
-        deadline = time.monotonic() + seconds
-        while time.monotonic() < deadline:
-            if predicate():
-                return True
-            time.sleep(0.02)
-        return False
+        self.states = subscribe_states("/pose_block/state")
 
     def measured_after(self, count):
         """The states of periods that had both inputs, once there are more than `count`."""
@@ -78,19 +48,19 @@ class CovarianceBlockTest(unittest.TestCase):
 
     def test_correlated_then_unknown_covariance(self):
         publisher = rospy.Publisher("/pose", PoseWithCovarianceStamped, queue_size=1)
-        self.assertTrue(self.wait_for(lambda: publisher.get_num_connections() >= 1, 20.0),
+        self.assertTrue(wait_for(lambda: publisher.get_num_connections() >= 1, 20.0),
                         "the node did not subscribe to /pose")
-        self.assertTrue(self.wait_for(lambda: self.states, 20.0), "no ~state from the node")
+        self.assertTrue(wait_for(lambda: self.states, 20.0), "no ~state from the node")
         x, P = [0.0, 0.0], [[1.0, 0.0], [0.0, 1.0]]
         block = [[1.0, 0.5], [0.5, 1.0]]
         publisher.publish(pose(1.0, 2.0, block))
-        self.assertTrue(self.wait_for(lambda: self.measured_after(0), 5.0), "no measured period")
+        self.assertTrue(wait_for(lambda: self.measured_after(0), 5.0), "no measured period")
         x, P = update(x, P, [1.0, 2.0], block)
         self.assertAlmostEqual(x[1], 3.5 / 3.75, places=12)  # the hand computation itself
         self.check(self.measured_after(0)[0], x, P)
         # Unknown covariance (all zero): the header's R.
         publisher.publish(pose(2.0, -1.0, [[0.0, 0.0], [0.0, 0.0]]))
-        self.assertTrue(self.wait_for(lambda: self.measured_after(1), 5.0),
+        self.assertTrue(wait_for(lambda: self.measured_after(1), 5.0),
                         "no second measured period")
         x, P = update(x, P, [2.0, -1.0], [[4.0, 0.0], [0.0, 4.0]])
         self.check(self.measured_after(1)[1], x, P)

@@ -7,13 +7,13 @@ unknown, header R used" once all three were received, and nothing before an unkn
 """
 
 import sys
-import time
 import unittest
 
 import rospy
 import rostest
-from diagnostic_msgs.msg import DiagnosticArray
 from sensor_msgs.msg import Imu
+
+from node_test_helpers import subscribe_diagnostics, wait_for
 
 KEY = "covariance unknown, header R used"
 
@@ -30,16 +30,7 @@ def imu(first, yaw_variance, stamp):
 
 class CovarianceFallbackTest(unittest.TestCase):
     def setUp(self):
-        self.reports = []
-        rospy.Subscriber("/diagnostics", DiagnosticArray, self.reports.append)
-
-    def wait_for(self, predicate, seconds):
-        deadline = time.monotonic() + seconds
-        while time.monotonic() < deadline:
-            if predicate():
-                return True
-            time.sleep(0.02)
-        return False
+        self.reports = subscribe_diagnostics()
 
     def input0(self):
         """The values of input 0's newest report, None before one."""
@@ -51,18 +42,18 @@ class CovarianceFallbackTest(unittest.TestCase):
 
     def test_unknown_covariances_are_counted(self):
         publisher = rospy.Publisher("/imu/data", Imu, queue_size=10)
-        self.assertTrue(self.wait_for(lambda: publisher.get_num_connections() >= 1, 20.0),
+        self.assertTrue(wait_for(lambda: publisher.get_num_connections() >= 1, 20.0),
                         "the node did not subscribe to /imu/data")
         start = rospy.Time.now()
         publisher.publish(imu(0.01, 0.02, start))  # known
-        self.assertTrue(self.wait_for(
+        self.assertTrue(wait_for(
             lambda: (self.input0() or {}).get("received") == "1", 10.0),
             "the known message was not reported received: %s" % self.input0())
         self.assertNotIn(KEY, self.input0())
         for k, first in enumerate((0.0, -1.0)):  # all zero; ROS's "unknown"
             # A stamp of its own per message (a repeated stamp is dropped).
             publisher.publish(imu(first, 0.0, start + rospy.Duration(0.001 * (k + 1))))
-        self.assertTrue(self.wait_for(lambda: (self.input0() or {}).get(KEY) == "2", 10.0),
+        self.assertTrue(wait_for(lambda: (self.input0() or {}).get(KEY) == "2", 10.0),
                         "input 0's report: %s" % self.input0())
 
 

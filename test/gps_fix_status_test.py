@@ -11,8 +11,10 @@ import unittest
 
 import rospy
 import rostest
-from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
+from diagnostic_msgs.msg import DiagnosticStatus
 from sensor_msgs.msg import NavSatFix, NavSatStatus
+
+from node_test_helpers import subscribe_diagnostics
 
 REASON = "GPS fix status below STATUS_FIX"
 INPUTS = ("/fix longitude east", "/fix latitude north")
@@ -31,8 +33,7 @@ def fix(status):
 
 class GpsFixStatusTest(unittest.TestCase):
     def setUp(self):
-        self.reports = []
-        rospy.Subscriber("/diagnostics", DiagnosticArray, self.reports.append)
+        self.reports = subscribe_diagnostics()
         self.publisher = rospy.Publisher("/fix", NavSatFix, queue_size=10)
 
     def wait_for(self, predicate, seconds, publish=None):

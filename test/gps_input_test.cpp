@@ -3,7 +3,8 @@
 // on serialized messages. A fix without a valid status is dropped and counted, the first valid
 // fix is the datum, a fix 100 m north (WGS84 meridian radius of curvature at its height) is
 // 100 m along the odom axis the yaw offset says, with the fix's own variances turned alike,
-// and a fix whose covariance type is unknown falls back to the header's R, counted.
+// and a fix whose covariance type is unknown falls back to the header's R, counted; a fix of
+// known covariance type gives east and north together with their covariance in the odom frame.
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -91,6 +92,47 @@ TEST(GpsInput, StatusDatumYawOffsetAndCovariance) {
   EXPECT_FALSE(sink.values[1].variance);
   EXPECT_EQ(sink.covarianceFallbacks(kEastInput), 1u);
   EXPECT_EQ(sink.covarianceFallbacks(kNorthInput), 1u);
+  EXPECT_EQ(sink.blocks.size(), 2u);  // the two fixes of known covariance, not this one
+}
+
+TEST(GpsInput, CovarianceOfEastAndNorthReachesTheSinkTurned) {
+  const auto d = sf_filter::generated::nodeDefinition();
+  const sf_filter::TopicReader& fix = readerOf(d, "/fix");
+  RecordingSink sink;
+  sink.gps().setOptions({std::nullopt, kPi / 6});  // c = sqrt 3 / 2, s = 1 / 2
+  const double c = std::sqrt(3.0) / 2, s = 0.5;
+  feed(fix, navSatFix(kLat, 1.0), sink, 0.0);  // the datum
+  sink.values.clear();
+  sink.blocks.clear();
+
+  // KNOWN: east 1, north 2, their covariance 0.5; R = Rot S Rot^T by hand (local_frame.hpp):
+  // xx = c^2 + 2 c s 0.5 + 2 s^2, yy = s^2 - 2 c s 0.5 + 2 c^2, xy = -c s + (c^2 - s^2) 0.5 + 2 c s.
+  sensor_msgs::NavSatFix known = navSatFix(hundredMetresNorth(), 2.0, 0, 3);
+  known.position_covariance = {1.0, 0.5, 0.0, 0.5, 2.0, 0.0, 0.0, 0.0, 3.24};
+  feed(fix, known, sink, 0.0);
+  ASSERT_EQ(sink.blocks.size(), 1u);
+  const sf_test::Block& b = sink.blocks[0];
+  ASSERT_EQ(b.inputs, (std::vector<long>{kEastInput, kNorthInput}));
+  EXPECT_NEAR(b.covariance[0], c * c + c * s + 2 * s * s, 1e-12);
+  EXPECT_NEAR(b.covariance[3], s * s - c * s + 2 * c * c, 1e-12);
+  EXPECT_NEAR(b.covariance[1], c * s + 0.5 * (c * c - s * s), 1e-12);
+  EXPECT_EQ(b.covariance[1], b.covariance[2]);
+  // The values: 100 m north is x = 100 s, y = 100 c.
+  ASSERT_EQ(sink.values.size(), 2u);
+  EXPECT_NEAR(sink.values[0].value, 100.0 * s, 1e-3);
+  EXPECT_NEAR(sink.values[1].value, 100.0 * c, 1e-3);
+  EXPECT_EQ(sink.values[0].stamp, 2.0);
+
+  // DIAGONAL_KNOWN: the off-diagonal entries are ignored; the unequal variances turned still
+  // correlate x and y: xy = c s (2 - 1).
+  known.position_covariance_type = 2;
+  known.header.stamp = ros::Time(3.0);
+  feed(fix, known, sink, 0.0);
+  ASSERT_EQ(sink.blocks.size(), 2u);
+  EXPECT_NEAR(sink.blocks[1].covariance[0], c * c + 2 * s * s, 1e-12);
+  EXPECT_NEAR(sink.blocks[1].covariance[3], s * s + 2 * c * c, 1e-12);
+  EXPECT_NEAR(sink.blocks[1].covariance[1], c * s, 1e-12);
+  EXPECT_EQ(sink.covarianceFallbacks(kEastInput), 0u);
 }
 
 }  // namespace

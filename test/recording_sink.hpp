@@ -24,6 +24,12 @@ struct Value {
   double stamp;
 };
 
+/// The inputs of one measurementBlock and their covariance (row-major).
+struct Block {
+  std::vector<long> inputs;
+  std::vector<double> covariance;
+};
+
 /// Records what the readers hand over.
 class RecordingSink final : public sf_filter::MessageSink {
  public:
@@ -31,12 +37,24 @@ class RecordingSink final : public sf_filter::MessageSink {
                    double stamp) override {
     values.push_back({static_cast<long>(input), value, variance, stamp});
   }
+  /// Records the block, then its values alone with their variances (MessageSink's default).
+  void measurementBlock(const estimation::Index* inputs, const double* values,
+                        const double* covariance, int count, double now, double stamp) override {
+    Block b;
+    for (int r = 0; r < count; ++r) {
+      b.inputs.push_back(static_cast<long>(inputs[r]));
+      for (int c = 0; c < count; ++c) b.covariance.push_back(covariance[r * count + c]);
+    }
+    blocks.push_back(b);
+    MessageSink::measurementBlock(inputs, values, covariance, count, now, stamp);
+  }
   void control(estimation::Index, double) override {}
   std::optional<double> rotated(estimation::Index, const std::string&, std::uint32_t, std::uint32_t,
                                 const std::array<double, 3>&, int) override {
     return std::nullopt;
   }
   std::vector<Value> values;
+  std::vector<Block> blocks;
 };
 
 template <class M>

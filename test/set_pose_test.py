@@ -11,16 +11,16 @@ was; the estimation diagnostics count both.
 
 import math
 import sys
-import time
 import unittest
 
 import rosservice
 import rospy
 import rostest
-from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import PoseWithCovarianceStamped
 from roslib.message import get_service_class
 from nav_msgs.msg import Odometry
+
+from node_test_helpers import subscribe_diagnostics, wait_for
 
 
 SERVICE = "/derived_inputs/set_pose"
@@ -55,21 +55,12 @@ class SetPoseTest(unittest.TestCase):
         # The node publishes its state every period from the start; odometry only once a
         # period had a measured value or a pose was set (no pose at the origin before).
         rospy.Subscriber("/derived_inputs/state", rospy.AnyMsg, self.states.append)
-        self.diagnostics = []
-        rospy.Subscriber("/diagnostics", DiagnosticArray, self.diagnostics.append)
-
-    def wait_for(self, predicate, seconds):
-        deadline = time.monotonic() + seconds
-        while time.monotonic() < deadline:
-            if predicate():
-                return True
-            time.sleep(0.02)
-        return False
+        self.diagnostics = subscribe_diagnostics()
 
     def send(self, topic, message):
         """Publishes `message` on `topic` once the node listens; returns the time it did."""
         publisher = rospy.Publisher(topic, PoseWithCovarianceStamped, queue_size=1, latch=True)
-        self.assertTrue(self.wait_for(lambda: publisher.get_num_connections() >= 1, 20.0),
+        self.assertTrue(wait_for(lambda: publisher.get_num_connections() >= 1, 20.0),
                         "the node did not subscribe to " + topic)
         sent = rospy.Time.now()
         publisher.publish(message)
@@ -83,7 +74,7 @@ class SetPoseTest(unittest.TestCase):
         return service(pose=message)
 
     def check(self, topic, x, y, yaw, covariance):
-        self.assertTrue(self.wait_for(lambda: self.states, 20.0), "no ~state from the node")
+        self.assertTrue(wait_for(lambda: self.states, 20.0), "no ~state from the node")
         message = pose_message(x, y, yaw, covariance)
         if topic == SERVICE:
             rospy.wait_for_service(SERVICE, timeout=20.0)
@@ -96,7 +87,7 @@ class SetPoseTest(unittest.TestCase):
 
         def arrived():
             return [m for m in self.odometry if m.header.stamp > sent + rospy.Duration(0.15)]
-        self.assertTrue(self.wait_for(lambda: len(arrived()) >= 1, 5.0),
+        self.assertTrue(wait_for(lambda: len(arrived()) >= 1, 5.0),
                         "no odometry after the pose was sent on " + topic)
         odom = arrived()[0]
         p = odom.pose.pose
@@ -143,13 +134,13 @@ class SetPoseTest(unittest.TestCase):
         self.assertFalse(response.success)
         self.assertIn("covariance", response.message.lower())
         refused = rospy.Time.now()
-        self.assertTrue(self.wait_for(
+        self.assertTrue(wait_for(
             lambda: [m for m in self.odometry if m.header.stamp > refused], 5.0))
         after = [m for m in self.odometry if m.header.stamp > refused][0].pose.pose.position
         self.assertAlmostEqual(after.x, 0.5, places=6)
         self.assertAlmostEqual(after.y, 1.5, places=6)
         # Three poses set (two topics, one service call), one refused.
-        self.assertTrue(self.wait_for(lambda: self.pose_counts(refused) is not None, 10.0),
+        self.assertTrue(wait_for(lambda: self.pose_counts(refused) is not None, 10.0),
                         "no estimation diagnostics after the refused pose")
         self.assertEqual(self.pose_counts(refused), (3, 1))
 

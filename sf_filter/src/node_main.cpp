@@ -100,21 +100,6 @@ std::string inputCountersLine(const sf_filter::FusionEngine& core, const std::ve
   return line.str();
 }
 
-/// The input index of a replay option: an integer (its range is checked by the override).
-long inputIndex(const std::string& text) {
-  std::size_t used = 0;
-  long index = -1;
-  try {
-    index = std::stol(text, &used);
-  } catch (const std::logic_error&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size()) {
-    throw std::invalid_argument("input index '" + text + "' is not an integer");
-  }
-  return index;
-}
-
 /// The number of option `option`, all of `text`; a clear error otherwise.
 double numberOption(const std::string& option, const std::string& text) {
   std::size_t used = 0;
@@ -254,6 +239,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       "radians), for a bag without /tf_static.\n"
       "POLICY: AVERAGE, LAST, SAMPLED, 'HOLD LAGRANGE|BEZIER|TAYLOR ORDER [VARIANCE]' or\n"
       "'FILL OMEGA N [VARIANCE]'; THRESHOLD 0 removes a gate (doc/alignment_policies.md).\n"
+      "INPUT: the input's index, or its record name in a header with INPUTS records.\n"
       "--tune: identifies the free noise entries from the bag by the prediction-error method\n"
       "(minimum of sum(log det S + NIS) over in-memory replays; KF, EKF, UKF) and writes them\n"
       "with --out as a YAML file of private parameters for the node and --params\n"
@@ -396,7 +382,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                                       (arg == "--align" ? "POLICY" : "THRESHOLD"));
         }
         try {
-          const long input = inputIndex(given.substr(0, equals));
+          const long input = sf_filter::inputIndexOf(given.substr(0, equals), can);
           if (arg == "--align") {
             sf_filter::overrideAlignment(inputs, input, given.substr(equals + 1), can);
           } else {
@@ -408,8 +394,8 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       } else if (arg == "--align-by-stamp" || arg == "--align-by-arrival") {
         const std::string given = value();
         try {
-          sf_filter::overrideAlignByStamp(inputs, inputIndex(given), arg == "--align-by-stamp",
-                                          can);
+          sf_filter::overrideAlignByStamp(inputs, sf_filter::inputIndexOf(given, can),
+                                          arg == "--align-by-stamp", can);
         } catch (const std::invalid_argument& e) {
           throw std::invalid_argument(arg + " " + given + ": " + e.what());
         }

@@ -466,21 +466,29 @@ TEST(FusionCoreFaults, ABurstOfTenSigmaOutliersIsGatedWithinTheStatedBound) {
 
 // --- NIS ------------------------------------------------------------------------------------
 
-TEST(NisWindow, BoundsAreTheChiSquareQuantiles) {
+TEST(NisWindow, BoundsAreTheChiSquareQuantilesForUncorrelatedPeriods) {
   // Tables of the chi-square distribution: chi2^-1(0.025; 1) = 0.000982069,
   // chi2^-1(0.975; 1) = 5.023886; chi2^-1(0.025; 100) = 74.22193, chi2^-1(0.975; 100) = 129.5612.
   sf_filter::NisWindow one(1);
   one.add(1.0, 1);
   EXPECT_NEAR(one.bounds().lower, 0.000982069, 1e-8);
   EXPECT_NEAR(one.bounds().upper, 5.023886, 1e-5);
+  // Alternating values: a negative lag-1 autocorrelation, which counts as none (n_eff = K).
   sf_filter::NisWindow window(50);
-  for (int k = 0; k < 120; ++k) window.add(k < 70 ? 100.0 : 1.0, 2);  // the first 70 fall out
+  for (int k = 0; k < 120; ++k) window.add(k % 2 ? 0.5 : 1.5, 2);
   EXPECT_TRUE(window.full());
   EXPECT_EQ(window.degreesOfFreedom(), 100);
   EXPECT_NEAR(window.mean(), 1.0, 1e-12);
+  EXPECT_LT(window.autocorrelation(), 0.0);
+  EXPECT_EQ(window.effectivePeriods(), 50.0);
   EXPECT_NEAR(window.bounds().lower, 74.22193 / 50, 1e-5);
   EXPECT_NEAR(window.bounds().upper, 129.5612 / 50, 1e-4);
   EXPECT_TRUE(window.inconsistent());  // mean 1 with 2 dof per period: expected 2
+  // The oldest periods leave a full window.
+  sf_filter::NisWindow sliding(50);
+  for (int k = 0; k < 120; ++k) sliding.add(k < 70 ? 100.0 : 1.0, 2);
+  EXPECT_EQ(sliding.degreesOfFreedom(), 100);
+  EXPECT_NEAR(sliding.mean(), 1.0, 1e-12);
   sf_filter::NisWindow notFull(50);
   notFull.add(100.0, 1);
   EXPECT_FALSE(notFull.inconsistent());  // judged only on a full window
@@ -517,18 +525,29 @@ TEST(FusionCoreNis, TheNisOfAPeriodIsTheInnovationsMahalanobisDistance) {
 TEST(NisSeries, JudgesEveryPeriodOfAFullWindowAndKeepsTheRunsTotals) {
   sf_filter::NisSeries series(50);
   for (int k = 0; k < 120; ++k) series.add(k < 70 ? 100.0 : 2.0, 2);
-  // Judged from the 50th period on (71 periods); inconsistent while a value 100 is in the
-  // window (periods 50 .. 119 hold one: mean >= (49 * 2 + 100) / 50 = 3.96 > 2.59), so only the
-  // last, with 50 values of 2, is consistent.
+  // Judged from the 50th period on (71 periods; k = 49 .. 119, 0-based). Up to period 69 the
+  // values are constant (no autocorrelation: n_eff = 50) and the mean 100 is far above its
+  // bounds. From the step on, the lag-1 autocorrelation over the window's horizon of 500
+  // periods is above 0.98 (the step dominates the values' variance), so the window counts as
+  // its floor of 5 independent periods, nu = 100 * 5 / 50 = 10: bounds 2 chi2^-1(q; 10) / 10 =
+  // [2 * 3.246973 / 10, 2 * 20.48318 / 10] = [0.6494, 4.0966] (tables). A window holding j
+  // values 100 (j = 119 - k in period k) has the mean (100 j + 2 (50 - j)) / 50: above
+  // 4.0966 for j >= 2 (5.92 at j = 2, period 117), inside for j = 1 (3.96, period 118) and
+  // j = 0 (period 119). Inconsistent: periods 49 to 117 (0-based), 69 of 71 (the
+  // independent-period bounds [1.484, 2.591] would also flag period 118).
   EXPECT_EQ(series.judgedPeriods(), 71u);
-  EXPECT_EQ(series.inconsistentPeriods(), 70u);
+  EXPECT_EQ(series.inconsistentPeriods(), 69u);
   EXPECT_EQ(series.periods(), 120u);
   EXPECT_EQ(series.degreesOfFreedom(), 240);
   EXPECT_NEAR(series.mean(), (70 * 100.0 + 50 * 2.0) / 120, 1e-12);
-  // The run's bounds: chi2^-1(0.025; 240) / 120 = 198.984 / 120, chi2^-1(0.975; 240) =
-  // 284.802 (tables; Wilson-Hilferty gives the same to 0.01).
-  EXPECT_NEAR(series.bounds().lower, 198.984 / 120, 1e-3);
-  EXPECT_NEAR(series.bounds().upper, 284.802 / 120, 1e-3);
+  // The run's bounds: u = NIS / 2 is 50 (70 times), then 1 (50 times); with every period
+  // alike, <u> = 3550 / 120, <u^2> = 175050 / 120, the 119 neighbours' <u_k u_k-1> =
+  // (69 * 2500 + 50 + 49) / 119: rho = 0.98571 (by hand), n_eff = 120 * 0.01429 / 1.98571 =
+  // 0.86, floored at 5: nu = 240 * 5 / 120 = 10, the same bounds as the window's.
+  EXPECT_NEAR(series.autocorrelation(), 0.98571, 1e-5);
+  EXPECT_EQ(series.effectivePeriods(), 5.0);
+  EXPECT_NEAR(series.bounds().lower, 2 * 3.246973 / 10, 1e-5);
+  EXPECT_NEAR(series.bounds().upper, 2 * 20.48318 / 10, 1e-4);
   series.restartWindow();
   EXPECT_EQ(series.window().size(), 0u);
   EXPECT_EQ(series.periods(), 120u);

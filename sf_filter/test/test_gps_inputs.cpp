@@ -2,6 +2,7 @@
 // counter, datum from the first valid fix or from the parameter, the fix's covariance by its
 // type (unknown: the header's R), a missing altitude. Positions are checked against the
 // published WGS84 radius of curvature (a point 100 m north: latitude step 100 m / M).
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -119,6 +120,39 @@ TEST(GpsInputs, CovarianceByType) {
   const GpsSample unknown = *gps.sample(0, kEast, fix(kLat, kLon, kAlt, 1, 0));
   EXPECT_FALSE(unknown.variance);
   EXPECT_TRUE(unknown.covarianceUnknown);
+  EXPECT_FALSE(gps.odomCovariance(fix(kLat, kLon, kAlt, 1, 0)));
+}
+
+TEST(GpsInputs, CovarianceBetweenAxesByType) {
+  GpsInputs gps;
+  GpsOptions options;
+  options.yawOffset = kPi / 6;  // c = sqrt 3 / 2, s = 1 / 2
+  gps.setOptions(options);
+  Fix f = fix(kLat, kLon, kAlt, 1, 3);
+  f.covariance = {1.0, 0.5, 0.0, 0.5, 2.0, 0.0, 0.0, 0.0, 3.24};
+  // KNOWN (3): the whole ENU covariance turned (local_frame.hpp):
+  //   xx = c^2 1 + 2 c s 0.5 + s^2 2 = 0.75 + 0.4330127 + 0.5
+  //   yy = s^2 1 - 2 c s 0.5 + c^2 2 = 0.25 - 0.4330127 + 1.5
+  //   xy = -c s 1 + (c^2 - s^2) 0.5 + c s 2 = c s + 0.25
+  const double c = std::sqrt(3.0) / 2, s = 0.5;
+  std::array<double, 9> odom = *gps.odomCovariance(f);
+  EXPECT_NEAR(odom[0], 1.25 + c * s, 1e-12);
+  EXPECT_NEAR(odom[4], 1.75 - c * s, 1e-12);
+  EXPECT_NEAR(odom[1], c * s + 0.25, 1e-12);
+  EXPECT_EQ(odom[3], odom[1]);
+  EXPECT_NEAR(odom[8], 3.24, 1e-12);
+  // The samples' variances are its diagonal.
+  EXPECT_NEAR(*gps.sample(0, kEast, f)->variance, odom[0], 1e-15);
+  EXPECT_NEAR(*gps.sample(1, kNorth, f)->variance, odom[4], 1e-15);
+  // APPROXIMATED (1), DIAGONAL_KNOWN (2): the off-diagonal entries are not meant; the
+  // diagonal alone turned still correlates x and y: xy = c s (2 - 1).
+  for (int type : {1, 2}) {
+    f.covarianceType = type;
+    odom = *gps.odomCovariance(f);
+    EXPECT_NEAR(odom[0], 0.75 + 0.5, 1e-12) << type;
+    EXPECT_NEAR(odom[4], 0.25 + 1.5, 1e-12) << type;
+    EXPECT_NEAR(odom[1], c * s, 1e-12) << type;
+  }
 }
 
 TEST(GpsInputs, MissingAltitudeAndPosition) {

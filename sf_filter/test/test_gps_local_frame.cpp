@@ -6,6 +6,7 @@
 // the odom frame against hand-computed rotations.
 #include <array>
 #include <cmath>
+#include <cstddef>
 
 #include <gtest/gtest.h>
 
@@ -104,22 +105,48 @@ TEST(LocalFrame, YawOffsetTurnsEastNorthIntoOdom) {
 }
 
 TEST(LocalFrame, CovarianceTurnsWithTheYawOffset) {
+  // Rot S Rot^T with Rot = ((c, s, 0), (-s, c, 0), (0, 0, 1)), written out by hand per case.
   // East variance 1, north 4, up 9, no correlation: a quarter turn swaps x and y.
   const std::array<double, 9> diagonal{1, 0, 0, 0, 4, 0, 0, 0, 9};
-  auto v = LocalFrame(Datum{}, kPi / 2).odomVariances(diagonal);
+  auto v = LocalFrame(Datum{}, kPi / 2).odomCovariance(diagonal);
   EXPECT_NEAR(v[0], 4.0, 1e-12);
-  EXPECT_NEAR(v[1], 1.0, 1e-12);
-  EXPECT_NEAR(v[2], 9.0, 1e-12);
-  // Without an offset the diagonal is kept.
-  v = LocalFrame(Datum{}, 0.0).odomVariances(diagonal);
-  EXPECT_NEAR(v[0], 1.0, 1e-12);
-  EXPECT_NEAR(v[1], 4.0, 1e-12);
+  EXPECT_NEAR(v[4], 1.0, 1e-12);
+  EXPECT_NEAR(v[8], 9.0, 1e-12);
+  EXPECT_NEAR(v[1], 0.0, 1e-12);
+  // Without an offset the matrix is kept.
+  v = LocalFrame(Datum{}, 0.0).odomCovariance(diagonal);
+  for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(v[k], diagonal[k], 1e-12) << k;
+  // 30 degrees (c = sqrt 3 / 2, s = 1 / 2): a diagonal with unequal variances gets a
+  // covariance of x and y: xx = c^2 1 + s^2 4 = 1.75, yy = s^2 1 + c^2 4 = 3.25,
+  // xy = -c s 1 + s c 4 = 3 sqrt 3 / 4.
+  v = LocalFrame(Datum{}, rad(30)).odomCovariance(diagonal);
+  EXPECT_NEAR(v[0], 1.75, 1e-12);
+  EXPECT_NEAR(v[4], 3.25, 1e-12);
+  EXPECT_NEAR(v[1], 3.0 * std::sqrt(3.0) / 4, 1e-12);
+  EXPECT_EQ(v[1], v[3]);  // exactly symmetric: the fusion core checks it
+  EXPECT_NEAR(v[2], 0.0, 1e-12);
+  EXPECT_NEAR(v[5], 0.0, 1e-12);
+  // Equal variances stay uncorrelated at any offset.
+  v = LocalFrame(Datum{}, rad(30)).odomCovariance({2, 0, 0, 0, 2, 0, 0, 0, 9});
+  EXPECT_NEAR(v[0], 2.0, 1e-12);
+  EXPECT_NEAR(v[1], 0.0, 1e-12);
   // Correlated east/north at 45 degrees: the variance along (1, 1) / sqrt 2 is
-  // (1 + 2 * 1.5 + 4) / 2 = 4, across it (1 - 3 + 4) / 2 = 1.
+  // (1 + 2 * 1.5 + 4) / 2 = 4, across it (1 - 3 + 4) / 2 = 1, and their covariance
+  // c s (4 - 1) + (c^2 - s^2) 1.5 = 1.5.
   const std::array<double, 9> correlated{1, 1.5, 0, 1.5, 4, 0, 0, 0, 9};
-  v = LocalFrame(Datum{}, kPi / 4).odomVariances(correlated);
+  v = LocalFrame(Datum{}, kPi / 4).odomCovariance(correlated);
   EXPECT_NEAR(v[0], 4.0, 1e-12);
-  EXPECT_NEAR(v[1], 1.0, 1e-12);
+  EXPECT_NEAR(v[4], 1.0, 1e-12);
+  EXPECT_NEAR(v[1], 1.5, 1e-12);
+  // Up's covariances turn with the horizontal axes: at a quarter turn x = north, y = -east.
+  // An unsymmetric input is taken as its symmetric part (east-north (1 + 2) / 2 = 1.5).
+  const std::array<double, 9> withUp{1, 1, 0.3, 2, 4, 0.6, 0.3, 0.6, 9};
+  v = LocalFrame(Datum{}, kPi / 2).odomCovariance(withUp);
+  EXPECT_NEAR(v[2], 0.6, 1e-12);   // x z = north up
+  EXPECT_NEAR(v[5], -0.3, 1e-12);  // y z = -east up
+  EXPECT_NEAR(v[1], -1.5, 1e-12);  // x y = -north east
+  EXPECT_EQ(v[2], v[6]);
+  EXPECT_EQ(v[5], v[7]);
 }
 
 }  // namespace

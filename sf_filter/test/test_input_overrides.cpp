@@ -81,6 +81,28 @@ TEST(InputOverrides, RefuseWhatTheInputOrMethodCannotDo) {
   EXPECT_FALSE(inputs[0].gated());
 }
 
+TEST(InputOverrides, InputsNamedByIndexOrRecordName) {
+  InputCapabilities can = predictingFilter();
+  // Thesis syntax: no record names, only indices.
+  EXPECT_EQ(sf_filter::inputIndexOf("1", can), 1);
+  EXPECT_EQ(errorOf([&] { sf_filter::inputIndexOf("wheel", can); }),
+            "input 'wheel' is neither an input index nor an input name (this header has no "
+            "INPUTS records)");
+  // INPUTS records: the record name or the index, and the override acts on that input.
+  can.keys = {"vision_x", "wheel"};
+  EXPECT_EQ(sf_filter::inputIndexOf("wheel", can), 1);
+  EXPECT_EQ(sf_filter::inputIndexOf("vision_x", can), 0);
+  EXPECT_EQ(sf_filter::inputIndexOf("0", can), 0);
+  EXPECT_EQ(errorOf([&] { sf_filter::inputIndexOf("Wheel", can); }),
+            "input 'Wheel' is neither an input index nor one of the input names vision_x, wheel");
+  EXPECT_EQ(errorOf([&] { sf_filter::inputIndexOf("1x", can); }),
+            "input '1x' is neither an input index nor one of the input names vision_x, wheel");
+  std::vector<InputOptions> inputs(2);
+  sf_filter::overrideGate(inputs, sf_filter::inputIndexOf("wheel", can), 4.0, can);
+  EXPECT_EQ(inputs[1].gateThreshold, 4.0);
+  EXPECT_FALSE(inputs[0].gated());
+}
+
 TEST(InputOverrides, LagMustBeFiniteAndNotNegative) {
   EXPECT_DOUBLE_EQ(sf_filter::checkedLagMs(0.0), 0.0);
   EXPECT_DOUBLE_EQ(sf_filter::checkedLagMs(25.0), 25.0);

@@ -1,13 +1,6 @@
 // EXPECT: DERIVED_INPUTS entry 0 ((0)(EAST)(ABSOLUTE)): TOPICS_IN entry 0 has a variance field; a GPS input takes its variance from the fix's position_covariance
 // Mistake: a variance field on a GPS input
-#include <sf_filter/config/diagonal.hpp>
-#include "fake_navsat.h"
+#include "gps_filter.inc"
 
-#define METHOD EXTENDED_KALMAN_FILTER
-#define STATE_TRANSITION_MODEL (x[0] + x[2] * T)(x[1] + x[3] * T)(x[2])(x[3])
-#define PROCESS_NOISE_COVARIANCE SF_DIAGONAL((0.01)(0.01)(0.1)(0.1))
-#define MEASUREMENT_NOISE_COVARIANCE ((2)(0))((0)(2))
-#define TOPICS_OUT ((x)(0))((y)(1))
-#define OBSERVATION_MODEL (x[0])(x[1])
 #define TOPICS_IN ((fix)(sensor_msgs::NavSatFix)(longitude)(position_covariance[0]))((fix)(sensor_msgs::NavSatFix)(latitude))
 #define DERIVED_INPUTS ((0)(EAST)(ABSOLUTE))((1)(NORTH)(ABSOLUTE))

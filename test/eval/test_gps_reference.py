@@ -284,5 +284,19 @@ class HuskyBagTest(unittest.TestCase):
         self.assertIn("fit: rotation 28.65 deg", buf.getvalue())   # 0.5 rad
 
 
+
+class CovarianceSummaryTest(unittest.TestCase):
+    def test_counts_types_correlations_and_unequal_variances(self):
+        diagonal = (0.81, 0, 0, 0, 0.81, 0, 0, 0, 3.24)
+        correlated = (1.0, 0.5, 0, 0.5, 1.0, 0, 0, 0, 4.0)
+        unequal = (1.0, 0, 0, 0, 2.0, 0, 0, 0, 4.0)
+        up_only = (1.0, 0, 0.2, 0, 1.0, 0, 0.2, 0, 4.0)
+        s = gr.covariance_summary([(1, diagonal), (1, diagonal), (3, correlated), (2, unequal),
+                                   (3, up_only), (0, (0.0,) * 9), (7, diagonal)])
+        self.assertEqual(s["types"], {"APPROXIMATED": 2, "KNOWN": 2, "DIAGONAL_KNOWN": 1,
+                                      "UNKNOWN": 1, "7": 1})
+        self.assertEqual(s["off_diagonal"], 2)
+        self.assertEqual(s["unequal_en"], 1)
+
 if __name__ == "__main__":
     unittest.main()

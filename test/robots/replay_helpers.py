@@ -11,15 +11,25 @@ REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
 import pioneer_nodes  # noqa: E402  (devel-space lookup)
 
+# The real Clearpath Husky recording with GPS (doc/bags.md).
+HUSKY_BAG = os.path.join(REPO, "bags", "husky_gps.bag")
+
+
+def built_lib_dir(*exe_names):
+    """The folder of the built executables `exe_names`: $SF_LIB_DIR (set by the CMake test
+    registration) or the sourced devel space's. Skips the test when one is not built."""
+    lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_nodes.find_lib_dir(exe_names[0])
+    for exe_name in exe_names:
+        if not os.access(os.path.join(lib_dir or "", exe_name), os.X_OK):
+            raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel space)"
+                                    % exe_name)
+    return lib_dir
+
 
 def replay_exe(exe_name, bag, csv_path, *extra):
-    """Runs `<exe> --replay BAG --csv CSV [extra]` from $SF_LIB_DIR (set by the CMake test
-    registration) or the sourced devel space; the finished process. Skips the test when the
-    executable is not built, fails it when the replay fails."""
-    lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_nodes.find_lib_dir(exe_name)
-    exe = os.path.join(lib_dir or "", exe_name)
-    if not os.access(exe, os.X_OK):
-        raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel space)" % exe_name)
+    """Runs `<exe> --replay BAG --csv CSV [extra]` from built_lib_dir(); the finished process.
+    Skips the test when the executable is not built, fails it when the replay fails."""
+    exe = os.path.join(built_lib_dir(exe_name), exe_name)
     proc = subprocess.run([exe, "--replay", bag, "--csv", csv_path] + list(extra),
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                           universal_newlines=True, timeout=120)

@@ -16,26 +16,16 @@ import sys
 import tempfile
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(os.path.dirname(HERE))
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from replay_helpers import HUSKY_BAG, built_lib_dir, read_rows  # noqa: E402  (and tools/eval)
 import gps_holdout as gh  # noqa: E402
-import pioneer_nodes  # noqa: E402
-from replay_helpers import read_rows  # noqa: E402
-
-HUSKY_BAG = os.path.join(REPO, "bags", "husky_gps.bag")
 
 
 class GpsHoldoutOnHusky(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_nodes.find_lib_dir("sf_husky")
-        for exe in (gh.GPS_NODE, gh.BASELINE_NODE):
-            if not os.access(os.path.join(lib_dir or "", exe), os.X_OK):
-                raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel "
-                                        "space)" % exe)
+        lib_dir = built_lib_dir(gh.GPS_NODE, gh.BASELINE_NODE)
         cls.tmp = tempfile.TemporaryDirectory()
         cls.result = gh.evaluate_holdout(HUSKY_BAG, lib_dir, cls.tmp.name, every=5)
         cls.rows = {r["label"].split(" (")[0]: r for r in cls.result["rows"]}

@@ -17,16 +17,11 @@ import sys
 import tempfile
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(os.path.dirname(HERE))
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from replay_helpers import HUSKY_BAG, built_lib_dir, read_rows  # noqa: E402  (and tools/eval)
 import gps_reference as gr  # noqa: E402
-import pioneer_nodes  # noqa: E402
-from replay_helpers import read_rows  # noqa: E402
 
-HUSKY_BAG = os.path.join(REPO, "bags", "husky_gps.bag")
 NODE = "sf_husky_skid_steer_gps"
 
 
@@ -40,10 +35,7 @@ def south(lat_deg, metres, height):
 class GpsParametersReplay(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_nodes.find_lib_dir(NODE)
-        cls.exe = os.path.join(lib_dir or "", NODE)
-        if not os.access(cls.exe, os.X_OK):
-            raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel space)" % NODE)
+        cls.exe = os.path.join(built_lib_dir(NODE), NODE)
         cls.first = next(f for f in gr.read_fixes(HUSKY_BAG) if gr.valid_fix(*f[1:4]))
 
     def setUp(self):

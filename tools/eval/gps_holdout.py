@@ -19,7 +19,9 @@ file.
 
 Every fix is taken into that odom frame, about the datum and turned by the offset
 (to_odom), and each track is compared with the held-out fixes there, at their header stamps
-(estimate interpolated linearly), with no further fitting. Printed as a markdown table:
+(estimate interpolated linearly), with no further fitting. Printed after a header (the
+split, the yaw offset, what the fixes' position_covariance holds: types, entries off the
+diagonal, unequal east and north variances) as a markdown table:
 per track the fixes compared and the RMSE, maximum and final horizontal error [m] on the
 held-out fixes, and the RMSE on the fused ones; rows:
   GPS node            the replay with the fused fixes
@@ -222,6 +224,11 @@ def main(argv=None):
                                     result["left_out"]))
     print("# yaw offset from the fused fixes of the first %g s: %.2f deg" %
           (args.calibration, math.degrees(result["yaw_offset"])))
+    covariances = gr.covariance_summary(gr.read_covariances(args.bag))
+    print("# fix covariances: %s; %d with entries off the diagonal, %d with unequal east and "
+          "north variances" % (", ".join("%d %s" % (n, t) for t, n in
+                                         sorted(covariances["types"].items())),
+                               covariances["off_diagonal"], covariances["unequal_en"]))
     print("# %s replay: %s" % (GPS_NODE, result["summary"].replace("\n", "\n#   ")))
     print()
     print("| track | held-out fixes | RMSE [m] | max [m] | final [m] | RMSE on fused fixes [m] |")

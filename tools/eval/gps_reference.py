@@ -130,6 +130,35 @@ def read_fixes(path, topic="/fix"):
     return out
 
 
+COVARIANCE_TYPES = ("UNKNOWN", "APPROXIMATED", "DIAGONAL_KNOWN", "KNOWN")
+
+
+def covariance_summary(covariances):
+    """What the fixes' position_covariance holds, from [(position_covariance_type, the 9
+    entries of position_covariance)]: {"types": {type name: count}, "off_diagonal": fixes
+    with an entry off the diagonal, "unequal_en": fixes whose east and north variances
+    differ}. Either gives a turned covariance a correlation of x and y (configuration.md,
+    "GPS"); without both it has none at any yaw offset."""
+    types = {}
+    off_diagonal = unequal = 0
+    for kind, c in covariances:
+        name = COVARIANCE_TYPES[kind] if 0 <= kind < len(COVARIANCE_TYPES) else str(kind)
+        types[name] = types.get(name, 0) + 1
+        off_diagonal += any(c[k] != 0.0 for k in (1, 2, 3, 5, 6, 7))
+        unequal += c[0] != c[4]
+    return {"types": types, "off_diagonal": off_diagonal, "unequal_en": unequal}
+
+
+def read_covariances(path, topic="/fix"):
+    """[(position_covariance_type, position_covariance)] of the NavSatFix messages on
+    `topic`."""
+    import rosbag  # Debian: python3-rosbag
+
+    with rosbag.Bag(path) as bag:
+        return [(msg.position_covariance_type, tuple(msg.position_covariance))
+                for _, msg, _ in bag.read_messages(topics=ev._topic_variants(topic))]
+
+
 def fit_rigid_2d(src, dst):
     """(theta, tx, ty): the rotation and shift that minimise sum |R(theta) p + t - q|^2 over
     the pairs p in src, q in dst (lists of (x, y)); closed form (2-D Kabsch without scale):

@@ -37,9 +37,20 @@ std::optional<GpsSample> GpsInputs::sample(std::size_t input, int axis, const Fi
   const std::array<double, 3> odom =
       frame_->toOdom(frame_->enu(fix.latitude, fix.longitude, altitude));
   const double value = (axis == 2 && !hasAltitude) ? kNaN : odom[static_cast<std::size_t>(axis)];
-  if (fix.covarianceType == kCovarianceTypeUnknown) return GpsSample{value, std::nullopt, true};
-  return GpsSample{value, frame_->odomVariances(fix.covariance)[static_cast<std::size_t>(axis)],
-                   false};
+  const std::optional<std::array<double, 9>> covariance = odomCovariance(fix);
+  if (!covariance) return GpsSample{value, std::nullopt, true};
+  const auto a = static_cast<std::size_t>(axis);
+  return GpsSample{value, (*covariance)[a * 3 + a], false};
+}
+
+std::optional<std::array<double, 9>> GpsInputs::odomCovariance(const Fix& fix) const {
+  if (fix.covarianceType == kCovarianceTypeUnknown) return std::nullopt;
+  std::array<double, 9> enu = fix.covariance;
+  if (fix.covarianceType != kCovarianceTypeKnown) {
+    // APPROXIMATED, DIAGONAL_KNOWN: only the variances are meant, whatever is off the diagonal.
+    enu = {fix.covariance[0], 0.0, 0.0, 0.0, fix.covariance[4], 0.0, 0.0, 0.0, fix.covariance[8]};
+  }
+  return LocalFrame(Datum{}, options_.yawOffset).odomCovariance(enu);
 }
 
 }  // namespace gps

@@ -3,6 +3,7 @@
 #include "sf_filter/gps/local_frame.hpp"
 
 #include <cmath>
+#include <cstddef>
 
 #include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/LocalCartesian.hpp>
@@ -25,11 +26,22 @@ std::array<double, 3> LocalFrame::toOdom(const std::array<double, 3>& enu) const
   return {c * enu[0] + s * enu[1], -s * enu[0] + c * enu[1], enu[2]};
 }
 
-std::array<double, 3> LocalFrame::odomVariances(const std::array<double, 9>& cov) const {
+std::array<double, 9> LocalFrame::odomCovariance(const std::array<double, 9>& cov) const {
   const double c = std::cos(yawOffset_), s = std::sin(yawOffset_);
-  const double ee = cov[0], en = 0.5 * (cov[1] + cov[3]), nn = cov[4];
-  return {c * c * ee + 2.0 * c * s * en + s * s * nn, s * s * ee - 2.0 * c * s * en + c * c * nn,
-          cov[8]};
+  const double rot[3][3] = {{c, s, 0.0}, {-s, c, 0.0}, {0.0, 0.0, 1.0}};
+  std::array<double, 9> out{};
+  for (std::size_t a = 0; a < 3; ++a) {
+    for (std::size_t b = a; b < 3; ++b) {
+      double sum = 0.0;
+      for (std::size_t k = 0; k < 3; ++k) {
+        for (std::size_t l = 0; l < 3; ++l) {
+          sum += rot[a][k] * 0.5 * (cov[k * 3 + l] + cov[l * 3 + k]) * rot[b][l];
+        }
+      }
+      out[a * 3 + b] = out[b * 3 + a] = sum;  // one value for both: the core wants symmetry
+    }
+  }
+  return out;
 }
 
 }  // namespace gps

@@ -70,6 +70,9 @@
 //   TOPICS_IN                   ((topic)(type)(field)) or ((topic)(type)(field)(variance_field))
 //                               per measurement input; m = number of entries. Several entries
 //                               may use the same topic (different fields).
+//   INPUTS                      instead of TOPICS_IN and the per-input macros: one record
+//                               ((name)(topic)(type)(field)(option, arguments)...) per input,
+//                               turned into those macros (input_records.hpp); not both.
 //   TOPICS_IN_CTRL              ((topic)(type)(field)) per control input u[i]; l = number of
 //                               entries (l = 0 without the macro).
 //   TOPICS_OUT                  ((topic)(state_index)) per published state variable,
@@ -248,6 +251,8 @@
 //   reported by the compiler itself, at the line of the configuration header.
 #pragma once
 
+// INPUTS records become the index-addressed macros first: everything below reads those.
+#include "sf_filter/config/input_records.hpp"
 #include "sf_filter/config/detail/validation.hpp"
 #include "sf_filter/config/methods.hpp"
 
@@ -267,6 +272,7 @@
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/input_alignment.hpp"
 #include "sf_filter/config/detail/input_faults.hpp"
+#include "sf_filter/config/detail/input_names.hpp"
 #include "sf_filter/config/detail/input_options.hpp"
 #include "sf_filter/config/detail/model.hpp"
 #include "sf_filter/config/detail/parameters.hpp"

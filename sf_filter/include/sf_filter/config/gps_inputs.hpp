@@ -6,8 +6,9 @@
 //
 // The field only has to be a member of the fix (longitude for EAST, latitude for NORTH and
 // altitude for UP read best): the value is derived from the whole fix, its position about the
-// datum in the odom frame, with the variance from its position_covariance (the node's
-// gps::GpsInputs, compiled once: sf_filter/gps/gps_inputs.hpp).
+// datum in the odom frame, with the covariance from its position_covariance (the node's
+// gps::GpsInputs, compiled once: sf_filter/gps/gps_inputs.hpp), correlations between the
+// fix's GPS inputs included.
 //
 // Generates, in namespace sf_config:
 //   template <int I> struct GpsDerivation {   // how TOPICS_IN entry I is read
@@ -19,7 +20,9 @@
 // Checked at compile time, each reported once and naming the macro and the entry: the message
 // is a NavSatFix (latitude, longitude, altitude, status.status, position_covariance,
 // position_covariance_type), the mode is ABSOLUTE, and the input has no other variance source
-// (INPUT_COVARIANCE entry or variance field: the fix's covariance is the GPS input's).
+// (INPUT_COVARIANCE entry or variance field: the fix's covariance is the GPS input's), and each
+// quantity is taken once per topic (a fix's GPS inputs are handed over together with their
+// covariances). input_covariance_blocks.hpp refuses a GPS input in an INPUT_COVARIANCE_BLOCK.
 // ROS-free; included by configuration.hpp after derived_inputs.hpp and input_covariance.hpp.
 #pragma once
 
@@ -51,13 +54,22 @@ constexpr bool messageFits() {
 
 template <int I>
 constexpr bool isGpsInput() {
-  if constexpr (I < 0 || I >= kMeasurementSize) {
-    return false;
-  } else {
-    constexpr int entry = derived_detail::entryOf(I);
-    return entry >= 0 &&
-           derived_detail::isGpsQuantity(derived_detail::kDerivedEntries[entry].quantity);
+  return I >= 0 && I < kMeasurementSize && derived_detail::isDerivedGps(I);
+}
+
+/// The input of an earlier DERIVED_INPUTS entry that takes the same GPS quantity from the same
+/// topic as entry k, -1 if none: one fix gives each of EAST, NORTH, UP once (its inputs are
+/// handed over together, with their covariances; two equal rows would not be a covariance).
+constexpr int sameAxisBefore(int k) {
+  const derived_detail::DerivedEntry& e = derived_detail::kDerivedEntries[k];
+  if (e.input < 0 || e.input >= kMeasurementSize) return -1;
+  for (int j = 0; j < k; ++j) {
+    const derived_detail::DerivedEntry& f = derived_detail::kDerivedEntries[j];
+    if (f.quantity == e.quantity && f.input >= 0 && f.input < kMeasurementSize &&
+        detail::firstIndexOf(kInputTopics, f.input) == detail::firstIndexOf(kInputTopics, e.input))
+      return f.input;
   }
+  return -1;
 }
 
 }  // namespace gps_detail
@@ -86,6 +98,9 @@ constexpr bool isGpsInput() {
                   SF_GPS_PREFIX(k, entry) ": TOPICS_IN entry " SF_PP_STR(BOOST_PP_SEQ_ELEM(0, entry)) \
                   " has a variance field; a GPS input takes its variance from the fix's "          \
                   "position_covariance (by its type), remove the variance field");                 \
+    static_assert(!gps || gps_detail::sameAxisBefore(k) < 0,                                       \
+                  SF_GPS_PREFIX(k, entry) ": an earlier entry already takes this quantity from "   \
+                  "the same topic's fix; each of EAST, NORTH and UP once per GPS topic");          \
   };
 // clang-format on
 

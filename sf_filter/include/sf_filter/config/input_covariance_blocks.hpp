@@ -22,8 +22,8 @@
 // Checked at compile time, each reported once and naming the macro: the entries' form, 1 to 6
 // inputs, one row per input, input indices in range, each input in one block and read from the
 // block's first input's topic, no variance field or INPUT_COVARIANCE entry as well, no
-// DIFFERENTIAL derived input, the member a square array of numbers and the rows below n,
-// each listed once.
+// DIFFERENTIAL derived input nor a GPS input, the member a square array of numbers and the rows
+// below n, each listed once.
 #pragma once
 
 #include <cstddef>
@@ -117,6 +117,10 @@ SF_PP_CHECK_LIST("INPUT_COVARIANCE_BLOCK", 3, 3, SF_ICB_FORMAT, INPUT_COVARIANCE
                   SF_ICB_PREFIX(k, entry) ": expected 1 to 6 inputs and one row of the message's " \
                   "covariance per input");                                                         \
     static_assert(inputsOk, SF_ICB_PREFIX(k, entry) ": " SF_ICB_INPUTS_RULE);                         \
+    static_assert(!covariance_block_detail::hasGpsInput(inputs),                                   \
+                  SF_ICB_PREFIX(k, entry) ": a GPS input (DERIVED_INPUTS EAST, NORTH, UP) takes "  \
+                  "its covariances from the fix's position_covariance, turned into the odom "      \
+                  "frame; remove it from the block");                                              \
     static_assert(unknown || Member::ok,                                                           \
                   SF_ICB_PREFIX(k, entry) ": member '" SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry))      \
                   "' of the message type of the block's inputs is not an array of numbers (e.g. " \
@@ -175,6 +179,14 @@ constexpr int firstSameTopicOf(int input, std::index_sequence<I...>) {
 template <std::size_t... I>
 constexpr bool differentialOf(int input, std::index_sequence<I...>) {
   return ((static_cast<int>(I) == input && Derivation<static_cast<int>(I)>::differential) || ...);
+}
+
+template <std::size_t K>
+constexpr bool hasGpsInput(const int (&inputs)[K]) {
+  for (std::size_t a = 0; a < K; ++a) {
+    if (derived_detail::isDerivedGps(inputs[a])) return true;
+  }
+  return false;
 }
 
 /// Checks the inputs of block `block` alone (earlier blocks are checked against it by

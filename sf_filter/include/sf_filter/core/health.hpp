@@ -192,6 +192,8 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
     s.add("NIS degrees of freedom", static_cast<std::uint64_t>(nis.degreesOfFreedom()));
     s.add("NIS mean", nis.mean());
     if (nis.size() > 0) {
+      s.add("NIS lag-1 autocorrelation", nis.autocorrelation());
+      s.add("NIS effective periods", nis.effectivePeriods());
       const NisBounds bounds = nis.bounds();
       s.add("NIS lower bound (2.5 %)", bounds.lower);
       s.add("NIS upper bound (97.5 %)", bounds.upper);

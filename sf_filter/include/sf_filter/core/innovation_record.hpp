@@ -1,6 +1,8 @@
 // What the innovations of a run say about the filter's tuning: the NIS of the whole estimate
 // and of each input alone, each judged period by period by the same sliding window and
-// chi-square bounds as the node's diagnostics (nis_window.hpp), with totals over the run; and
+// chi-square bounds as the node's diagnostics (nis_window.hpp), with totals over the run (whose
+// bounds count the run's periods as independent ones by the run's own lag-1 autocorrelation,
+// as the window does; nis_correlation.hpp); and
 // the prediction-error cost sum_k (log det S_k + y_k^T S_k^-1 y_k), twice the innovations'
 // negative log-likelihood up to a constant, which the noise identification minimises
 // (tuning/noise_tuning.hpp). The offline replay prints it in its summary; the node keeps it
@@ -37,8 +39,14 @@ class NisSeries {
   std::uint64_t periods() const { return periods_; }
   long degreesOfFreedom() const { return dof_; }
   double mean() const { return periods_ ? sum_ / static_cast<double>(periods_) : 0.0; }
+  /// The lag-1 autocorrelation of the NIS per degree of freedom over the whole run, and the
+  /// independent periods the run's mean is worth by it (nis_correlation.hpp).
+  double autocorrelation() const { return autocorrelation_.value(); }
+  double effectivePeriods() const {
+    return sf_filter::effectivePeriods(static_cast<double>(periods_), autocorrelation());
+  }
   /// Two-sided bounds on mean() at level 1 - alpha, for the whole run (a window of all its
-  /// periods). Requires periods() > 0.
+  /// periods, worth effectivePeriods()). Requires periods() > 0.
   NisBounds bounds(double alpha = 0.05) const;
   /// Periods with a full window, and those of them whose window mean lay outside its bounds
   /// (the diagnostics' "filter inconsistent" WARN).
@@ -50,18 +58,22 @@ class NisSeries {
 
  private:
   NisWindow window_;
+  LagOneAutocorrelation autocorrelation_;  ///< over the run (restartWindow() keeps it)
   double sum_ = 0.0;
   long dof_ = 0;
   std::uint64_t periods_ = 0, judged_ = 0, inconsistent_ = 0;
-  /// The window's bounds for `dof` degrees of freedom, computed once per value. Boost's
-  /// chi-square quantiles cost microseconds, and a full window's degrees of freedom change
-  /// whenever an input is missing in a period (a sensor slower than the period): every
-  /// possible value has its slot, allocated here at construction so that the node's periods
-  /// stay free of allocations (above kMaxCachedBounds slots only the last value is kept).
-  const NisBounds& windowBounds(long dof);
+  /// The full window's bounds, computed once per value of its effective degrees of freedom
+  /// (on their grid of 1/kEffectiveDofSteps) and of D. Boost's chi-square quantiles cost tens
+  /// of microseconds, and nu changes with the autocorrelation and whenever an input is
+  /// missing in a period (a sensor slower than the period): every possible nu has its slot,
+  /// allocated here at construction so that the node's periods stay free of allocations
+  /// (above kMaxCachedBounds slots only the last value is kept). A full window's bounds are
+  /// (D/K) times the band per degree of freedom of nu (chiSquareBandPerDof), which the slot keeps.
+  NisBounds windowBounds();
   static constexpr std::size_t kMaxCachedBounds = 1 << 16;
-  std::vector<NisBounds> boundsByDof_;  ///< index dof; lower < 0: not computed yet
-  long lastDof_ = -1;
+  /// index nu * kEffectiveDofSteps: the band per degree of freedom; lower < 0: not computed yet
+  std::vector<NisBounds> boundsByGridStep_;
+  long lastGridStep_ = -1;
   NisBounds lastBounds_;
 };
 

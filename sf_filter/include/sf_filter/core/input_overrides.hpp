@@ -23,12 +23,39 @@ struct InputCapabilities {
   bool canPredict = false;         ///< the method predicts its measurement (gates, FILL)
   std::vector<bool> hasStamp;      ///< per input: its message type has header.stamp
   std::vector<std::string> names;  ///< per input, for messages, e.g. "wheel data"
+  /// Per input, the name overrides may give instead of its index: its INPUTS record name
+  /// (doc/configuration.md); empty for a header in the thesis syntax (TOPICS_IN).
+  std::vector<std::string> keys;
 
   std::string describe(std::size_t input) const {
     return "input " + std::to_string(input) +
            (input < names.size() ? " (" + names[input] + ")" : std::string());
   }
 };
+
+/// The input an override names: its index ("2") or its INPUTS record name ("gyro_z"). Throws
+/// std::invalid_argument for anything else, listing the names there are.
+inline long inputIndexOf(const std::string& text, const InputCapabilities& can) {
+  for (std::size_t i = 0; i < can.keys.size(); ++i) {
+    if (!can.keys[i].empty() && can.keys[i] == text) return static_cast<long>(i);
+  }
+  std::size_t used = 0;
+  long index = -1;
+  try {
+    index = std::stol(text, &used);
+  } catch (const std::logic_error&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size()) {
+    std::string known;
+    for (const std::string& key : can.keys) known += (known.empty() ? "" : ", ") + key;
+    throw std::invalid_argument(
+        "input '" + text + "' is neither an input index nor " +
+        (known.empty() ? std::string("an input name (this header has no INPUTS records)")
+                       : "one of the input names " + known));
+  }
+  return index;
+}
 
 namespace override_detail {
 inline void checkIndex(const std::vector<InputOptions>& inputs, long input) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -101,21 +102,69 @@ std::optional<double> inputVariance(const Message& msg, MessageSink& sink) {
   }
 }
 
-/// Reads GPS input In (DERIVED_INPUTS EAST, NORTH, UP) from the fix `msg` into the sink: its
-/// position in the odom frame (gps::GpsInputs), nothing for a fix without a valid status.
+/// What one fix gave its topic's GPS inputs (DERIVED_INPUTS EAST, NORTH, UP), collected while
+/// the message is read and handed over together (sendGps).
+struct GpsValues {
+  std::optional<gps::Fix> fix;  ///< the message as a fix, once a GPS input has read it
+  std::array<estimation::Index, 3> inputs{};
+  std::array<int, 3> axes{};
+  std::array<gps::GpsSample, 3> samples{};
+  int count = 0;  ///< inputs with a sample (not dropped for the fix's status)
+};
+
+/// Reads GPS input In from the fix `msg` into `values`: its position in the odom frame
+/// (gps::GpsInputs), nothing for a fix without a valid status (counted there).
 template <class In, class Message>
-void readGpsInput(const Message& msg, MessageSink& sink, double now, double stamp) {
+void readGpsInput(const Message& msg, MessageSink& sink, GpsValues& values) {
   using Gps = sf_config::GpsDerivation<In::index>;
   if constexpr (Gps::valid) {
-    const std::optional<gps::GpsSample> s = sink.gps().sample(In::index, Gps::axis, Gps::fix(msg));
-    if (!s) return;
-    if (s->covarianceUnknown) sink.countCovarianceFallback(In::index);
-    sink.measurement(In::index, now, s->value, s->variance, stamp);
+    if (!values.fix) values.fix = Gps::fix(msg);
+    const std::optional<gps::GpsSample> s = sink.gps().sample(In::index, Gps::axis, *values.fix);
+    if (!s || values.count >= 3) return;  // the configuration allows one input per axis
+    const auto k = static_cast<std::size_t>(values.count++);
+    values.inputs[k] = In::index;
+    values.axes[k] = Gps::axis;
+    values.samples[k] = *s;
   }  // else not built: a static_assert of the configuration reported why
 }
 
-/// Reads input In from `msg` into the sink: a DERIVED_INPUTS quantity (a differential one
-/// from the change since the topic's previous message), or the field (or rotated vector).
+/// Hands one fix's GPS values to the sink: with a known covariance type together with their
+/// covariances in the odom frame (the fusion core carries them to the filter's R, correlation
+/// of x and y included); otherwise each alone, with the header's R (counted).
+inline void sendGps(const GpsValues& v, MessageSink& sink, double now, double stamp) {
+  if (v.count == 0) return;
+  const std::optional<std::array<double, 9>> odom = sink.gps().odomCovariance(*v.fix);
+  bool finite = true;
+  for (int k = 0; k < v.count; ++k) {
+    finite = finite && std::isfinite(v.samples[static_cast<std::size_t>(k)].value);
+  }
+  // A NaN value (no altitude for UP, no position) is dropped by the core alone; a block would
+  // drop the others with it.
+  if (odom && finite && v.count > 1) {
+    std::array<double, 3> values{};
+    std::array<double, 9> block{};
+    for (int r = 0; r < v.count; ++r) {
+      const auto i = static_cast<std::size_t>(r);
+      values[i] = v.samples[i].value;
+      for (int c = 0; c < v.count; ++c) {
+        const auto j = static_cast<std::size_t>(c);
+        block[i * static_cast<std::size_t>(v.count) + j] =
+            (*odom)[static_cast<std::size_t>(v.axes[i] * 3 + v.axes[j])];
+      }
+    }
+    sink.measurementBlock(v.inputs.data(), values.data(), block.data(), v.count, now, stamp);
+    return;
+  }
+  for (int k = 0; k < v.count; ++k) {
+    const gps::GpsSample& s = v.samples[static_cast<std::size_t>(k)];
+    if (s.covarianceUnknown) sink.countCovarianceFallback(v.inputs[static_cast<std::size_t>(k)]);
+    sink.measurement(v.inputs[static_cast<std::size_t>(k)], now, s.value, s.variance, stamp);
+  }
+}
+
+/// Reads input In (not a GPS input) from `msg` into the sink: a DERIVED_INPUTS quantity (a
+/// differential one from the change since the topic's previous message), or the field (or
+/// rotated vector).
 template <class In, class Message>
 void readInput(const Message& msg, MessageSink& sink, double now) {
   using Derivation = sf_config::Derivation<In::index>;
@@ -124,9 +173,7 @@ void readInput(const Message& msg, MessageSink& sink, double now) {
                 "input reads a quaternion or pose member, which is not rotated");
   [[maybe_unused]] const std::optional<double> variance = inputVariance<In>(msg, sink);
   const double stamp = stampOf(msg);
-  if constexpr (sf_config::GpsDerivation<In::index>::gps) {
-    readGpsInput<In>(msg, sink, now, stamp);
-  } else if constexpr (Derivation::derived) {
+  if constexpr (Derivation::derived) {
     if constexpr (Derivation::valid) {
       const sf_config::extractors::Pose pose = Derivation::pose(In::member(msg));
       if constexpr (Derivation::differential) {
@@ -244,11 +291,14 @@ inline std::vector<TopicReader> topicReaders() {
         const Message msg = deserialize<Message>(data, size);
         constexpr std::size_t kBlocks = std::tuple_size_v<sf_config::CovarianceBlocks>;
         std::array<BlockValues, kBlocks> blocks{};
+        GpsValues gpsValues;
         sf_config::forEachInput([&](auto in) {
           using In = decltype(in);
           if constexpr (In::first_same_topic == Owner::index) {
             constexpr int block = sf_config::blockOf(In::index);
-            if constexpr (block >= 0) {
+            if constexpr (sf_config::GpsDerivation<In::index>::gps) {
+              readGpsInput<In>(msg, sink, gpsValues);
+            } else if constexpr (block >= 0) {
               using Block = std::tuple_element_t<block, sf_config::CovarianceBlocks>;
               const std::optional<double> value = blockInputValue<In>(msg);
               const auto k = static_cast<std::size_t>(positionIn<Block>(In::index));
@@ -262,6 +312,7 @@ inline std::vector<TopicReader> topicReaders() {
           }
         });
         sendBlocks<Owner::index>(msg, blocks, sink, now, std::make_index_sequence<kBlocks>{});
+        sendGps(gpsValues, sink, now, stampOf(msg));
       };
       readers.push_back(std::move(reader));
     }
@@ -332,7 +383,8 @@ inline sf_config::Parameters toFixedSize(const FilterParameters& r) {
   return p;
 }
 
-/// "topic field" per input; "topic member" for a FRAME_ALIGNED_INPUTS one.
+/// "topic field" per input; "topic member" for a FRAME_ALIGNED_INPUTS one; with INPUTS
+/// records "name: topic field".
 inline std::vector<std::string> inputNames() {
   std::vector<std::string> names;
   sf_config::forEachInput([&](auto in) {
@@ -349,6 +401,9 @@ inline std::vector<std::string> inputNames() {
                       (Derivation::differential ? " differential" : ""));
     } else {
       names.push_back(std::string(In::topic) + " " + std::string(In::field));
+    }
+    if constexpr (sf_config::kHasInputRecords) {
+      names.back() = std::string(sf_config::kInputNames[In::index]) + ": " + names.back();
     }
   });
   return names;
@@ -377,6 +432,7 @@ inline NodeDefinition nodeDefinition() {
   d.capabilities.hasStamp.assign(sf_config::kInputHasStamp.begin(),
                                  sf_config::kInputHasStamp.end());
   d.capabilities.names = description.inputs;
+  d.capabilities.keys.assign(sf_config::kInputNames.begin(), sf_config::kInputNames.end());
   d.estimationPeriodMs = sf_config::kEstimationPeriodMs;
   d.maxMeasurementLagMs = sf_config::kMaxMeasurementLagMs;
   d.inputOptions = sf_config::defaultInputOptions();

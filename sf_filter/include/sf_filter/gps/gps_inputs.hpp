@@ -10,8 +10,10 @@
 // - The datum is the ~datum parameter if given, else the first fix with a valid status and a
 //   finite position (its NaN altitude taken as 0), kept until new settings (setOptions).
 // - position_covariance_type COVARIANCE_TYPE_UNKNOWN (0) gives no variance: the header's R
-//   is used and the caller counts the fallback; APPROXIMATED, DIAGONAL_KNOWN and KNOWN give
-//   the diagonal of the ENU covariance turned into the odom frame.
+//   is used and the caller counts the fallback. KNOWN (3) gives the whole ENU covariance,
+//   APPROXIMATED (1) and DIAGONAL_KNOWN (2) its diagonal only (the type says the rest is not
+//   known), turned into the odom frame (odomCovariance): the node hands the covariances
+//   between a fix's GPS inputs to the fusion core with their values (a covariance block).
 // ROS-free; compiled once in sf_fusion_core and unit-tested in test_gps_inputs.cpp.
 #pragma once
 
@@ -43,6 +45,7 @@ struct Fix {
 
 inline constexpr int kStatusFix = 0;              ///< sensor_msgs/NavSatStatus STATUS_FIX
 inline constexpr int kCovarianceTypeUnknown = 0;  ///< NavSatFix COVARIANCE_TYPE_UNKNOWN
+inline constexpr int kCovarianceTypeKnown = 3;    ///< NavSatFix COVARIANCE_TYPE_KNOWN
 
 /// One value of a GPS input and its variance.
 struct GpsSample {
@@ -64,6 +67,11 @@ class GpsInputs {
   /// turned by the yaw offset; 1: y, NORTH turned; 2: z, UP); nullopt for a fix without a
   /// valid status (counted). See above.
   std::optional<GpsSample> sample(std::size_t input, int axis, const Fix& fix);
+
+  /// The covariance of (x, y, z) in the odom frame (row-major 3x3) of a fix whose covariance
+  /// type is known, from the settings' yaw offset; nullopt for COVARIANCE_TYPE_UNKNOWN. The
+  /// variances of sample() are its diagonal.
+  std::optional<std::array<double, 9>> odomCovariance(const Fix& fix) const;
 
   /// Fixes of `input` dropped because their status was below STATUS_FIX.
   std::uint64_t noFix(std::size_t input) const { return input < noFix_.size() ? noFix_[input] : 0; }

@@ -33,9 +33,11 @@ class LocalFrame {
   /// (x, y, z) in the odom frame of an ENU vector (see above).
   std::array<double, 3> toOdom(const std::array<double, 3>& enu) const;
 
-  /// The variances of x, y, z in the odom frame of an ENU covariance (row-major 3x3, the
-  /// order of sensor_msgs/NavSatFix's position_covariance): the diagonal of R C R^T.
-  std::array<double, 3> odomVariances(const std::array<double, 9>& enuCovariance) const;
+  /// The covariance in the odom frame (x, y, z; row-major 3x3) of an ENU covariance C (the
+  /// order of sensor_msgs/NavSatFix's position_covariance): Rot S Rot^T with S = (C + C^T) / 2
+  /// and Rot the rotation of toOdom. The result is exactly symmetric. Unequal east and north
+  /// variances get a covariance of x and y from any offset that is not a multiple of pi / 2.
+  std::array<double, 9> odomCovariance(const std::array<double, 9>& enuCovariance) const;
 
  private:
   Datum datum_;

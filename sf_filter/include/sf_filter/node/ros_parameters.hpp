@@ -193,17 +193,35 @@ bool readScalarParameter(const ParameterSource& pnh, const std::string& name, T&
 
 namespace detail {
 
-/// Calls apply(k, entry) for each entry of the list parameter ~name if it is set; it must have
-/// one entry per input. A std::invalid_argument of apply is reported with the entry named.
+/// Calls apply(k, entry) for each entry of the parameter ~name if it is set: a list with one
+/// entry per input, or a map from input names (INPUTS records) or indices to entries, for the
+/// inputs it names. A std::invalid_argument of apply is reported with the entry named.
 inline void forEachInputEntry(const ParameterSource& pnh, const std::string& name,
-                              std::size_t inputs,
+                              std::size_t inputs, const InputCapabilities& can,
                               const std::function<void(long, XmlRpc::XmlRpcValue&)>& apply) {
   XmlRpc::XmlRpcValue value;
   if (!pnh.get(name, value)) return;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeStruct) {
+    for (auto& entry : value) {
+      try {
+        const long k = inputIndexOf(entry.first, can);
+        if (k < 0 || k >= static_cast<long>(inputs)) {
+          throw std::invalid_argument("input index out of range, expected 0 to " +
+                                      std::to_string(static_cast<long>(inputs) - 1));
+        }
+        apply(k, entry.second);
+      } catch (const std::invalid_argument& e) {
+        throw ParameterOverrideError("parameter ~" + name + " entry " + entry.first + ": " +
+                                     e.what());
+      }
+    }
+    return;
+  }
   const std::string expected = std::to_string(inputs) + " entries (one per TOPICS_IN entry)";
   if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
     throw ParameterOverrideError("parameter ~" + name + ": expected a list of " + expected +
-                                 ", found " + detail::describe(value));
+                                 ", found " + detail::describe(value) +
+                                 " (or a map from input names or indices to entries)");
   }
   if (static_cast<std::size_t>(value.size()) != inputs) {
     throw ParameterOverrideError("parameter ~" + name + ": expected " + expected + ", found " +
@@ -282,6 +300,8 @@ inline double loadPeriodMs(const ParameterSource& pnh, double headerPeriodMs) {
 
 /// The configuration header's per-input options and maximum measurement lag [ms] with the
 /// private parameters applied (doc/configuration.md):
+/// Each ~input_* parameter is a list with one entry per input or a map from input names
+/// (INPUTS records) or indices to entries, e.g. {gyro_z: 9.0}:
 ///   ~input_alignment      one policy per input, e.g. ["AVERAGE", "HOLD LAGRANGE 1"]
 ///   ~input_gate           one chi-square threshold per input, 0 for no gate
 ///   ~input_gate_sigma     or one threshold in standard deviations per input (k: k^2)
@@ -290,7 +310,7 @@ inline double loadPeriodMs(const ParameterSource& pnh, double headerPeriodMs) {
 inline void loadInputParameters(const ParameterSource& pnh, std::vector<InputOptions>& inputs,
                                 double& maxMeasurementLagMs, const InputCapabilities& can) {
   const std::size_t m = inputs.size();
-  detail::forEachInputEntry(pnh, "input_alignment", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+  detail::forEachInputEntry(pnh, "input_alignment", m, can, [&](long k, XmlRpc::XmlRpcValue& v) {
     if (v.getType() != XmlRpc::XmlRpcValue::TypeString) {
       throw std::invalid_argument("expected a policy string such as \"HOLD LAGRANGE 1\"");
     }
@@ -302,10 +322,10 @@ inline void loadInputParameters(const ParameterSource& pnh, std::vector<InputOpt
         "parameters ~input_gate (chi-square) and ~input_gate_sigma (standard deviations) are "
         "both set: give one of them");
   }
-  detail::forEachInputEntry(pnh, "input_gate", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+  detail::forEachInputEntry(pnh, "input_gate", m, can, [&](long k, XmlRpc::XmlRpcValue& v) {
     overrideGate(inputs, k, detail::numberEntry(v, "expected a number (0: no gate)"), can);
   });
-  detail::forEachInputEntry(pnh, "input_gate_sigma", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+  detail::forEachInputEntry(pnh, "input_gate_sigma", m, can, [&](long k, XmlRpc::XmlRpcValue& v) {
     const double sigma =
         detail::numberEntry(v, "expected a number of standard deviations (0: no gate)");
     if (!(sigma >= 0.0 && sigma <= kMaxGateSigma)) {
@@ -316,7 +336,7 @@ inline void loadInputParameters(const ParameterSource& pnh, std::vector<InputOpt
     }
     overrideGate(inputs, k, sigma * sigma, can);
   });
-  detail::forEachInputEntry(pnh, "align_by_stamp", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+  detail::forEachInputEntry(pnh, "align_by_stamp", m, can, [&](long k, XmlRpc::XmlRpcValue& v) {
     if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
       throw std::invalid_argument("expected true or false");
     }
@@ -351,7 +371,7 @@ inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
                                          std::vector<InputOptions>& inputs,
                                          const InputCapabilities& can) {
   const std::size_t m = inputs.size();
-  detail::forEachInputEntry(pnh, "input_timeout", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+  detail::forEachInputEntry(pnh, "input_timeout", m, can, [&](long k, XmlRpc::XmlRpcValue& v) {
     const double seconds = detail::numberEntry(v, "expected a number of s (0: no timeout)");
     double ms = 0.0;
     try {
@@ -361,7 +381,7 @@ inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
     }
     overrideTimeout(inputs, k, ms, can);
   });
-  detail::forEachInputEntry(pnh, "input_range", m, [&](long k, XmlRpc::XmlRpcValue& v) {
+  detail::forEachInputEntry(pnh, "input_range", m, can, [&](long k, XmlRpc::XmlRpcValue& v) {
     const char* expected = "expected [minimum, maximum] or [] for no range";
     if (v.getType() != XmlRpc::XmlRpcValue::TypeArray || (v.size() != 0 && v.size() != 2)) {
       throw std::invalid_argument(expected);

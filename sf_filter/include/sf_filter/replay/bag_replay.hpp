@@ -104,6 +104,7 @@ class BagReplay final : public MessageSink {
   }
   void measurementBlock(const Index* inputs, const double* values, const double* covariance,
                         int count, double now, double stamp) override {
+    if (events_) events_->measurementBlock(inputs, values, covariance, count, now, stamp);
     if (core_.addMeasurementBlock(inputs, values, covariance, count, now, stamp) !=
         Rejection::None) {
       ++summary_.dropped;

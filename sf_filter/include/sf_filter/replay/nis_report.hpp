@@ -1,8 +1,10 @@
 // The replay's NIS lines (doc/evaluation.md): per input and for all inputs together, the mean
-// NIS of the run with its chi-square verdict, and how often the node's diagnostics, judging a
-// sliding window of ~nis_window periods, would have reported the filter inconsistent. They
-// follow the summary and per-input counter lines, whose format tools parse, and name no
-// "estimates" so that a parser looking for the summary line does not take them for it.
+// NIS of the run with its chi-square verdict (the run's periods counted as the independent
+// periods they are worth by their lag-1 autocorrelation, nis_correlation.hpp), and how often the
+// node's diagnostics, judging a sliding window of ~nis_window periods, would have reported the
+// filter inconsistent. They follow the summary and per-input counter lines, whose format tools
+// parse, and name no "estimates" so that a parser looking for the summary line does not take them
+// for it.
 #pragma once
 
 #include <cstdio>
@@ -33,10 +35,12 @@ inline void printNisLine(std::ostream& out, const std::string& node, const std::
       static_cast<double>(series.degreesOfFreedom()) / static_cast<double>(series.periods());
   char text[512];
   std::snprintf(text, sizeof text,
-                "mean %.4g over %llu periods (expected %.4g), 95 %% bounds [%.4g, %.4g]: %s; "
+                "mean %.4g over %llu periods (expected %.4g; lag-1 autocorrelation %.3f, worth "
+                "%.4g independent periods), 95 %% bounds [%.4g, %.4g]: %s; "
                 "window of %zu periods inconsistent in %llu of %llu judged periods",
-                series.mean(), static_cast<unsigned long long>(series.periods()), expected, b.lower,
-                b.upper, nisVerdict(series.mean(), b).c_str(), series.window().capacity(),
+                series.mean(), static_cast<unsigned long long>(series.periods()), expected,
+                series.autocorrelation(), series.effectivePeriods(), b.lower, b.upper,
+                nisVerdict(series.mean(), b).c_str(), series.window().capacity(),
                 static_cast<unsigned long long>(series.inconsistentPeriods()),
                 static_cast<unsigned long long>(series.judgedPeriods()));
   out << text << "\n";

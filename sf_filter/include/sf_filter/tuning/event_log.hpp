@@ -1,10 +1,12 @@
 // What a bag gives the fusion core, kept in memory: the clock reading of every message and the
-// values and controls its topic readers took out of it (after tf rotation and derived inputs),
-// in the order the bag replay handed them to the core. Replaying the log into a fresh core
-// (replayEvents) repeats the bag replay's estimates exactly, without reading or deserialising
-// the bag again: the noise identification (noise_tuning.hpp) replays it hundreds of times.
+// values (alone or as a message's covariance block) and controls its topic readers took out of
+// it (after tf rotation and derived inputs), in the order the bag replay handed them to the core.
+// Replaying the log into a fresh core (replayEvents) repeats the bag replay's estimates exactly,
+// without reading or deserialising the bag again: the noise identification (noise_tuning.hpp)
+// replays it hundreds of times.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -21,6 +23,23 @@ class EventLog {
                    double stamp) {
     events_.push_back({Kind::Measurement, variance.has_value(), input, now, value,
                        variance.value_or(0.0), stamp});
+  }
+  /// The values of one message with their covariance block (MessageSink::measurementBlock:
+  /// INPUT_COVARIANCE_BLOCK, a GPS fix); `count` at most FusionCoreBase::kMaxBlockSize.
+  void measurementBlock(const Index* inputs, const double* values, const double* covariance,
+                        int count, double now, double stamp) {
+    Block b;
+    b.count = count;
+    for (int r = 0; r < count && r < kMaxBlock; ++r) {
+      b.inputs[static_cast<std::size_t>(r)] = inputs[r];
+      b.values[static_cast<std::size_t>(r)] = values[r];
+      for (int c = 0; c < count && c < kMaxBlock; ++c) {
+        b.covariance[static_cast<std::size_t>(r * count + c)] = covariance[r * count + c];
+      }
+    }
+    events_.push_back(
+        {Kind::Block, false, static_cast<Index>(blocks_.size()), now, 0.0, 0.0, stamp});
+    blocks_.push_back(b);
   }
   void control(Index control, double value) {
     events_.push_back({Kind::Control, false, control, 0.0, value, 0.0, 0.0});
@@ -42,6 +61,12 @@ class EventLog {
                               e.hasVariance ? std::optional<double>(e.variance) : std::nullopt,
                               e.stamp);
           break;
+        case Kind::Block: {
+          const Block& b = blocks_[static_cast<std::size_t>(e.index)];
+          core.addMeasurementBlock(b.inputs.data(), b.values.data(), b.covariance.data(), b.count,
+                                   e.now, e.stamp);
+          break;
+        }
         case Kind::Control:
           core.addControl(e.index, e.value);
           break;
@@ -50,14 +75,23 @@ class EventLog {
   }
 
  private:
-  enum class Kind : std::uint8_t { Clock, Measurement, Control };
+  enum class Kind : std::uint8_t { Clock, Measurement, Block, Control };
   struct Event {
     Kind kind;
     bool hasVariance;  ///< the message carried a variance (passed on as it came)
-    Index index;
+    Index index;       ///< the input, the control, or for a Block its place in blocks_
     double now, value, variance, stamp;
   };
+  static constexpr int kMaxBlock = 6;  ///< FusionCoreBase::kMaxBlockSize
+  /// One message's block (the generated readers never hand over more than kMaxBlock values).
+  struct Block {
+    int count = 0;
+    std::array<Index, kMaxBlock> inputs{};
+    std::array<double, kMaxBlock> values{};
+    std::array<double, kMaxBlock * kMaxBlock> covariance{};
+  };
   std::vector<Event> events_;
+  std::vector<Block> blocks_;
 };
 
 }  // namespace sf_filter

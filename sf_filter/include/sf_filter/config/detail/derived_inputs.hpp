@@ -118,5 +118,10 @@ constexpr bool isDerivedAngle(int input) {
   return isDerived(input) && isAngleQuantity(kDerivedEntries[entryOf(input)].quantity);
 }
 
+/// TOPICS_IN entry `input` is a derived EAST, NORTH or UP (a GPS input).
+constexpr bool isDerivedGps(int input) {
+  return isDerived(input) && isGpsQuantity(kDerivedEntries[entryOf(input)].quantity);
+}
+
 }  // namespace derived_detail
 }  // namespace sf_config
