@@ -593,9 +593,14 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
 /// start-up: any exception there is the one-line refusal of doc/filter_node.md, exit status 1.
 int nodeMain(int argc, char** argv, const NodeDefinition& def) {
   ros::init(argc, argv, "sf_filter");
+  // The handles outlive the refusal's log line: when the last one goes, ros::shutdown() ends
+  // rosconsole.
+  std::optional<ros::NodeHandle> nh, pnh;
   std::unique_ptr<sf_filter::FusionNodeInstance> node;
   try {
-    node = sf_filter::startFusionNode(ros::NodeHandle(), ros::NodeHandle("~"), def);
+    nh.emplace();
+    pnh.emplace("~");
+    node = sf_filter::startFusionNode(*nh, *pnh, def);
   } catch (const std::exception& e) {
     ROS_FATAL("%s: refusing to start: %s", ros::this_node::getName().c_str(), e.what());
     return EXIT_FAILURE;

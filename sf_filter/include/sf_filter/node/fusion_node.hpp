@@ -130,7 +130,7 @@ class FusionNode final : public MessageSink {
           early_.emplace_back(reader, event);
           return;
         }
-        startSchedule();
+        startSchedule(ros::Time::now().toSec());
       }
       receive(reader, event);
     };
@@ -139,16 +139,28 @@ class FusionNode final : public MessageSink {
   }
 
   /// Starts the fixed-rate schedule once the clock is valid and returns at once (a nodelet's
-  /// onInit must not block its manager). Under sim time before the first /clock message a wall
-  /// timer reports the wait: /diagnostics every ~diagnostic_period, a warning every 5 s.
+  /// onInit must not block its manager). On simulated time the schedule advances with each
+  /// /clock message, the first one starting it; a ros::Timer would make roscpp's timer thread
+  /// poll the simulated clock every millisecond of wall time, running or stopped (2-5 % of a
+  /// core, doc/node_benchmarks.md). Before the first /clock message the wait is reported:
+  /// /diagnostics every ~diagnostic_period, a warning every 5 s.
   void start() {
     waitingSince_ = ros::WallTime::now();
+    if (ros::Time::isSimTime()) {
+      clock_ = nh_.subscribe<rosgraph_msgs::Clock>("/clock", 10,
+                                                   [this](const rosgraph_msgs::Clock::ConstPtr& m) {
+                                                     if (!scheduled_)
+                                                       startSchedule(m->clock.toSec());
+                                                     advance(m->clock.toSec());
+                                                   });
+    }
     if (ros::Time::isValid()) {
-      startSchedule();
+      startSchedule(ros::Time::now().toSec());
       return;
     }
-    clockWait_ = nh_.createWallTimer(ros::WallDuration(0.01),
-                                     [this](const ros::WallTimerEvent&) { waitForClock(); });
+    reportWaiting();
+    clockWait_ = nh_.createWallTimer(ros::WallDuration(diagnosticPeriod_),
+                                     [this](const ros::WallTimerEvent&) { reportWaiting(); });
   }
 
   void measurement(Index input, double now, double value, std::optional<double> variance,
@@ -209,29 +221,20 @@ class FusionNode final : public MessageSink {
     }
   }
 
-  /// The wait of start(): reports it; once the clock is valid, starts the schedule.
-  void waitForClock() {
-    if (ros::Time::isValid()) {
-      clockWait_.stop();
-      waitingReport_.shutdown();
-      startSchedule();
-      return;
-    }
+  /// The wait of start() for the first /clock message, reported.
+  void reportWaiting() {
     const ros::WallTime now = ros::WallTime::now();
-    if (lastWaitReport_.isZero() || (now - lastWaitReport_).toSec() >= diagnosticPeriod_) {
-      lastWaitReport_ = now;
-      if (!waitingReport_) {
-        waitingReport_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
-      }
-      diagnostic_msgs::DiagnosticArray report;
-      diagnostic_msgs::DiagnosticStatus status;
-      status.level = diagnostic_msgs::DiagnosticStatus::WARN;
-      status.name = pnh_.getNamespace().substr(1) + ": estimation";
-      status.message = "waiting for /clock (use_sim_time is true): no estimate yet";
-      status.hardware_id = "none";
-      report.status.push_back(status);
-      waitingReport_.publish(report);
+    if (!waitingReport_) {
+      waitingReport_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
     }
+    diagnostic_msgs::DiagnosticArray report;
+    diagnostic_msgs::DiagnosticStatus status;
+    status.level = diagnostic_msgs::DiagnosticStatus::WARN;
+    status.name = pnh_.getNamespace().substr(1) + ": estimation";
+    status.message = "waiting for /clock (use_sim_time is true): no estimate yet";
+    status.hardware_id = "none";
+    report.status.push_back(status);
+    waitingReport_.publish(report);
     if (lastWaitWarning_.isZero() || (now - lastWaitWarning_).toSec() >= 5.0) {
       lastWaitWarning_ = now;
       ROS_WARN(
@@ -242,22 +245,17 @@ class FusionNode final : public MessageSink {
     }
   }
 
-  /// The fixed-rate schedule, from the first valid clock reading on.
-  void startSchedule() {
+  /// The fixed-rate schedule from the first valid clock reading `now` on: on wall-clock time
+  /// a ros::Timer ends the periods, on simulated time the /clock messages do (start()).
+  void startSchedule(double now) {
     scheduled_ = true;
+    clockWait_.stop();
+    waitingReport_.shutdown();
     diagnostics_.start();
-    advance(ros::Time::now().toSec());
+    advance(now);
     for (const auto& [reader, event] : early_) receive(reader, event);
     early_.clear();
-    if (ros::Time::isSimTime()) {
-      // On simulated time the schedule advances with each /clock message instead of a
-      // ros::Timer: roscpp's timer thread polls a simulated clock every millisecond of wall
-      // time, running or stopped (2.5-5 % of a core, doc/node_benchmarks.md), and the clock
-      // only moves when a /clock message arrives anyway.
-      clock_ = nh_.subscribe<rosgraph_msgs::Clock>(
-          "/clock", 10,
-          [this](const rosgraph_msgs::Clock::ConstPtr& m) { advance(m->clock.toSec()); });
-    } else {
+    if (!ros::Time::isSimTime()) {
       timer_ = nh_.createTimer(ros::Duration(core_.period()), [this](const ros::TimerEvent&) {
         advance(ros::Time::now().toSec());
       });
@@ -517,9 +515,9 @@ class FusionNode final : public MessageSink {
   bool scheduled_ = false;  ///< the clock was valid: subscribed, timer running
   /// Messages received before the clock was valid, read when the schedule starts.
   std::deque<std::pair<TopicReader, MessageEvent>> early_;
-  ros::WallTimer clockWait_;      ///< polls for a valid clock before the schedule
+  ros::WallTimer clockWait_;      ///< reports the wait for the first /clock message
   ros::Publisher waitingReport_;  ///< /diagnostics while the updater cannot run yet
-  ros::WallTime waitingSince_, lastWaitReport_, lastWaitWarning_;
+  ros::WallTime waitingSince_, lastWaitWarning_;
   tf2_ros::TransformBroadcaster broadcaster_;
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
