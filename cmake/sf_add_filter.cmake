@@ -1,9 +1,15 @@
-# sf_add_filter(<node name> <configuration header> [NO_INSTALL])
+# sf_add_filter(<node name> <configuration header> [NO_INSTALL] [NODELET <plugin xml>])
 #
 # Builds a fusion node executable from one configuration header (see doc/configuration.md)
 # and installs it into the package's lib/ folder (rosrun), unless NO_INSTALL is given (a node
 # only for tests). Exported through catkin: a package that find_package()s sf_pkg can call it
 # with its own headers. The header path is relative to the calling CMakeLists.txt or absolute.
+#
+# NODELET <plugin xml>: also the nodelet plugin library lib<node name>_nodelet with the class
+# sf_nodelets::<node name> (doc/filter_node.md#nodelet). The header's translation unit is
+# compiled once, position-independent, for the node and the plugin. <plugin xml> is the
+# package's nodelet plugin description (exported in package.xml); the build fails if it lacks
+# the plugin's entry, and prints the entry to add.
 if(NOT DEFINED SF_PKG_FILTER_MAIN)
   # Inside sf_pkg itself, or installed (share/sf_pkg mirrors the source tree): the main is
   # beside this file's directory.
@@ -15,6 +21,9 @@ if(NOT DEFINED SF_PKG_FILTER_MAIN)
   endif()
   set(SF_PKG_FILTER_MAIN "${_sf_pkg_root}/sf_filter/src/fusion_node_main.cpp")
 endif()
+get_filename_component(_sf_pkg_src "${SF_PKG_FILTER_MAIN}" DIRECTORY)
+set(SF_PKG_NODELET_UNIT "${_sf_pkg_src}/fusion_node_unit.cpp")
+set(SF_PKG_NODELET_PLUGIN "${_sf_pkg_src}/fusion_nodelet_plugin.cpp")
 
 # Installed, the headers (sf_filter/, sf_estimation/) are in the package's own include folder,
 # <prefix>/include/sf_pkg, and keep their #include <sf_filter/...> names: that folder is added
@@ -27,8 +36,45 @@ if(CMAKE_CURRENT_LIST_DIR MATCHES "/share/sf_pkg/cmake$"
   list(APPEND sf_pkg_INCLUDE_DIRS "${_sf_pkg_installed_include}")
 endif()
 
+# The compile settings of a header's translation unit (the node's, or the object library the
+# node and its nodelet share).
+function(_sf_filter_unit target header)
+  target_compile_definitions(${target} PRIVATE SF_CONFIG_HEADER="${header}")
+  target_compile_features(${target} PRIVATE cxx_std_17)
+  # A node is optimised unless the caller asks for a build type: a catkin workspace configured
+  # without CMAKE_BUILD_TYPE compiles with no -O at all, which makes a filter step 100x slower.
+  if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+    target_compile_options(${target} PRIVATE -O2)
+    target_compile_definitions(${target} PRIVATE NDEBUG)
+  endif()
+  # Configuration mistakes are reported by #error/static_assert naming the macro; the
+  # macro-expansion backtrace under each would only bury that message.
+  target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ftrack-macro-expansion=0>)
+  _sf_filter_includes(${target})
+endfunction()
+
+function(_sf_filter_includes target)
+  target_include_directories(${target} PRIVATE ${catkin_INCLUDE_DIRS} ${sf_pkg_INCLUDE_DIRS})
+  if(TARGET sf_fusion_node)
+    target_include_directories(${target} PRIVATE
+      "${CMAKE_CURRENT_SOURCE_DIR}/sf_filter/include" "${CMAKE_CURRENT_SOURCE_DIR}/sf_estimation/include")
+  endif()
+  # The message headers (sf_msgs) are generated before the node compiles when sf_msgs is in
+  # the same workspace (catkin defines empty targets for installed packages).
+  if(catkin_EXPORTED_TARGETS)
+    add_dependencies(${target} ${catkin_EXPORTED_TARGETS})
+  endif()
+endfunction()
+
+function(_sf_filter_link target)
+  target_link_libraries(${target} ${catkin_LIBRARIES} ${sf_pkg_LIBRARIES})
+  if(TARGET sf_fusion_node)
+    target_link_libraries(${target} sf_fusion_node)
+  endif()
+endfunction()
+
 function(sf_add_filter name header)
-  cmake_parse_arguments(_sf "NO_INSTALL" "" "" ${ARGN})
+  cmake_parse_arguments(_sf "NO_INSTALL" "NODELET" "" ${ARGN})
   if(_sf_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "sf_add_filter(${name}): unknown arguments ${_sf_UNPARSED_ARGUMENTS}")
   endif()
@@ -36,33 +82,60 @@ function(sf_add_filter name header)
   if(NOT EXISTS "${_header}")
     message(FATAL_ERROR "sf_add_filter(${name}): configuration header ${_header} not found")
   endif()
-  add_executable(${name} "${SF_PKG_FILTER_MAIN}")
-  target_compile_definitions(${name} PRIVATE SF_CONFIG_HEADER="${_header}")
-  target_compile_features(${name} PRIVATE cxx_std_17)
-  # A node is optimised unless the caller asks for a build type: a catkin workspace configured
-  # without CMAKE_BUILD_TYPE compiles with no -O at all, which makes a filter step 100x slower.
-  if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
-    target_compile_options(${name} PRIVATE -O2)
-    target_compile_definitions(${name} PRIVATE NDEBUG)
+  if(_sf_NODELET)
+    _sf_check_nodelet_xml(${name} "${_sf_NODELET}")
+    # One compile of the header for both: an object library, position-independent for the
+    # plugin (Debian's g++ builds executables position-independent anyway).
+    add_library(${name}_unit OBJECT "${SF_PKG_NODELET_UNIT}")
+    _sf_filter_unit(${name}_unit "${_header}")
+    set_target_properties(${name}_unit PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    add_executable(${name} $<TARGET_OBJECTS:${name}_unit>)
+    add_library(${name}_nodelet SHARED "${SF_PKG_NODELET_PLUGIN}" $<TARGET_OBJECTS:${name}_unit>)
+    target_compile_definitions(${name}_nodelet PRIVATE SF_NODELET_CLASS=${name})
+    target_compile_features(${name}_nodelet PRIVATE cxx_std_17)
+    _sf_filter_includes(${name}_nodelet)
+    _sf_filter_link(${name}_nodelet)
+    find_package(nodelet REQUIRED)
+    find_package(pluginlib REQUIRED)
+    target_include_directories(${name}_nodelet PRIVATE ${nodelet_INCLUDE_DIRS}
+      ${pluginlib_INCLUDE_DIRS})
+    target_link_libraries(${name}_nodelet ${nodelet_LIBRARIES} ${pluginlib_LIBRARIES})
+    set_target_properties(${name}_nodelet PROPERTIES LIBRARY_OUTPUT_DIRECTORY
+      "${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_LIB_DESTINATION}")
+    if(NOT _sf_NO_INSTALL)
+      install(TARGETS ${name}_nodelet LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+    endif()
+  else()
+    add_executable(${name} "${SF_PKG_FILTER_MAIN}")
+    _sf_filter_unit(${name} "${_header}")
   endif()
-  # Configuration mistakes are reported by #error/static_assert naming the macro; the
-  # macro-expansion backtrace under each would only bury that message.
-  target_compile_options(${name} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ftrack-macro-expansion=0>)
-  target_include_directories(${name} PRIVATE ${catkin_INCLUDE_DIRS} ${sf_pkg_INCLUDE_DIRS})
-  target_link_libraries(${name} ${catkin_LIBRARIES} ${sf_pkg_LIBRARIES})
-  if(TARGET sf_fusion_node)
-    target_link_libraries(${name} sf_fusion_node)
-    target_include_directories(${name} PRIVATE
-      "${CMAKE_CURRENT_SOURCE_DIR}/sf_filter/include" "${CMAKE_CURRENT_SOURCE_DIR}/sf_estimation/include")
-  endif()
-  # The message headers (sf_msgs) are generated before the node compiles when sf_msgs is in
-  # the same workspace (catkin defines empty targets for installed packages).
-  if(catkin_EXPORTED_TARGETS)
-    add_dependencies(${name} ${catkin_EXPORTED_TARGETS})
-  endif()
+  _sf_filter_link(${name})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY
     "${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}")
   if(NOT _sf_NO_INSTALL)
     install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+  endif()
+endfunction()
+
+# The plugin description must name the plugin's library and class, or pluginlib would not find
+# it at run time (nodelet load: "class ... not found").
+function(_sf_check_nodelet_xml name xml)
+  get_filename_component(_xml "${xml}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+  set(_entry "<library path=\"lib/lib${name}_nodelet\">
+  <class name=\"${PROJECT_NAME}/${name}\" type=\"sf_nodelets::${name}\"
+         base_class_type=\"nodelet::Nodelet\">
+    <description>...</description>
+  </class>
+</library>")
+  if(NOT EXISTS "${_xml}")
+    message(FATAL_ERROR "sf_add_filter(${name} ... NODELET ${xml}): ${_xml} not found; it "
+      "should hold (inside <class_libraries>):\n${_entry}")
+  endif()
+  file(READ "${_xml}" _text)
+  string(FIND "${_text}" "\"lib/lib${name}_nodelet\"" _library)
+  string(FIND "${_text}" "\"sf_nodelets::${name}\"" _class)
+  if(_library EQUAL -1 OR _class EQUAL -1)
+    message(FATAL_ERROR "sf_add_filter(${name} ... NODELET ${xml}): ${_xml} has no entry for "
+      "the plugin; add (inside <class_libraries>):\n${_entry}")
   endif()
 endfunction()

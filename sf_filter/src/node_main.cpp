@@ -23,6 +23,7 @@
 #include "sf_filter/definition/node_definition.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_node.hpp"
+#include "sf_filter/node/fusion_node_instance.hpp"
 #include "sf_filter/node/gps_parameters.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
 #include "sf_filter/replay/bag_replay.hpp"
@@ -75,9 +76,9 @@ sf_filter::FusionCoreOptions coreOptions(
 class ReplayAlignerRotation final : public sf_filter::ReplayRotation {
  public:
   explicit ReplayAlignerRotation(sf_filter::ReplayFrameAligner& aligner) : aligner_(aligner) {}
-  std::optional<double> rotated(sf_filter::Index input, const std::string& frame,
-                                std::uint32_t sec, std::uint32_t nsec,
-                                const std::array<double, 3>& vector, int axis) override {
+  std::optional<double> rotated(sf_filter::Index input, const std::string& frame, std::uint32_t sec,
+                                std::uint32_t nsec, const std::array<double, 3>& vector,
+                                int axis) override {
     return aligner_.align(static_cast<std::size_t>(input), frame, ros::Time(sec, nsec), vector,
                           axis);
   }
@@ -88,7 +89,8 @@ class ReplayAlignerRotation final : public sf_filter::ReplayRotation {
 
 /// One line with what became of every input's values, logged by the node at shutdown (the
 /// soak test compares `received` with what its driver published).
-std::string inputCountersLine(const sf_filter::FusionEngine& core, const std::vector<std::string>& names) {
+std::string inputCountersLine(const sf_filter::FusionEngine& core,
+                              const std::vector<std::string>& names) {
   std::ostringstream line;
   line << "input counters at shutdown:";
   for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
@@ -573,21 +575,38 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   });
 }
 
-/// The online node. Everything from reading the parameters to the first estimate's timer is
+/// The online node. Everything from reading the parameters to the start of the schedule is
 /// start-up: any exception there is the one-line refusal of doc/filter_node.md, exit status 1.
 int nodeMain(int argc, char** argv, const NodeDefinition& def) {
   ros::init(argc, argv, "sf_filter");
+  // The handles outlive the refusal's log line: when the last one goes, ros::shutdown() ends
+  // rosconsole.
   std::optional<ros::NodeHandle> nh, pnh;
-  std::optional<sf_filter::FrameAligner> aligner;  // outlives the node's subscriptions
-  std::optional<sf_filter::FusionNode> node;
+  std::unique_ptr<sf_filter::FusionNodeInstance> node;
   try {
     nh.emplace();
     pnh.emplace("~");
-    const sf_filter::RosParameterSource params(*pnh);
+    node = sf_filter::startFusionNode(*nh, *pnh, def);
+  } catch (const std::exception& e) {
+    ROS_FATAL("%s: refusing to start: %s", ros::this_node::getName().c_str(), e.what());
+    return EXIT_FAILURE;
+  }
+  ros::spin();
+  // On stdout: ros::shutdown() has ended rosconsole, so ROS_INFO would print nothing now.
+  std::cout << ros::this_node::getName() << ": " << node->inputCountersLine() << std::endl;
+  return EXIT_SUCCESS;
+}
+
+/// A started node: the spatial alignment outlives the node's subscriptions.
+class StartedFusionNode final : public sf_filter::FusionNodeInstance {
+ public:
+  StartedFusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, const NodeDefinition& def)
+      : def_(def) {
+    const sf_filter::RosParameterSource params(pnh);
     for (const std::string& line : sf_filter::unknownParameterWarnings(params)) {
       ROS_WARN("%s", line.c_str());
     }
-    if (def.frameAlignment) aligner.emplace(params, def.baseFrame, def.description.inputs);
+    if (def.frameAlignment) aligner_.emplace(params, def.baseFrame, def.description.inputs);
     const sf_filter::FilterParameters parameters =
         sf_filter::loadParameters<sf_filter::FilterParameters>(params, def.defaultParameters,
                                                                def.estimationPeriodMs);
@@ -599,25 +618,31 @@ int nodeMain(int argc, char** argv, const NodeDefinition& def) {
     auto options =
         coreOptions(parameters.estimation_period_ms, inputs, lagMs, faults.maxFutureStampMs);
     options.nisWindow = static_cast<std::size_t>(faults.nisWindow);
-    const std::string baseFrame = aligner ? aligner->baseFrame() : def.baseFrame;
-    node.emplace(*nh, *pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
-                 aligner ? &*aligner : nullptr, faults.diagnosticPeriod,
-                 sf_filter::loadOutputParameters(params));
-    node->gps().setOptions(sf_filter::loadGpsParameters(params));
-    for (const sf_filter::TopicReader& reader : def.topics) node->subscribe(reader);
-    node->start();
-  } catch (const std::exception& e) {
-    ROS_FATAL("%s: refusing to start: %s", ros::this_node::getName().c_str(), e.what());
-    return EXIT_FAILURE;
+    const std::string baseFrame = aligner_ ? aligner_->baseFrame() : def.baseFrame;
+    node_.emplace(nh, pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
+                  aligner_ ? &*aligner_ : nullptr, faults.diagnosticPeriod,
+                  sf_filter::loadOutputParameters(params));
+    node_->gps().setOptions(sf_filter::loadGpsParameters(params));
+    for (const sf_filter::TopicReader& reader : def.topics) node_->subscribe(reader);
+    node_->start();
   }
-  ros::spin();
-  // On stdout: ros::shutdown() has ended rosconsole, so ROS_INFO would print nothing now.
-  std::cout << ros::this_node::getName() << ": "
-            << inputCountersLine(node->core(), def.description.inputs) << std::endl;
-  return EXIT_SUCCESS;
-}
+
+  std::string inputCountersLine() const override {
+    return ::inputCountersLine(node_->core(), def_.description.inputs);
+  }
+
+ private:
+  const NodeDefinition& def_;
+  std::optional<sf_filter::FrameAligner> aligner_;
+  std::optional<sf_filter::FusionNode> node_;
+};
 
 }  // namespace
+
+std::unique_ptr<sf_filter::FusionNodeInstance> sf_filter::startFusionNode(
+    ros::NodeHandle nh, ros::NodeHandle pnh, const NodeDefinition& definition) {
+  return std::make_unique<StartedFusionNode>(nh, pnh, definition);
+}
 
 int sf_filter::runFusionNode(int argc, char** argv, const NodeDefinition& def) {
   for (int i = 1; i < argc; ++i) {

@@ -36,10 +36,12 @@ struct InputLossSource {
 
 class FusionDiagnostics {
  public:
-  /// `inputNames`: "topic field" per input; `period`: seconds between reports.
+  /// `inputNames`: "topic field" per input; `period`: seconds between reports, from start() on.
+  /// The statuses are named after `pnh`'s namespace, the node's or nodelet's name (in a nodelet
+  /// manager ros::this_node is the manager).
   FusionDiagnostics(ros::NodeHandle nh, ros::NodeHandle pnh, const FusionEngine& core,
                     const std::vector<std::string>& inputNames, double period)
-      : core_(core), updater_(nh, pnh), before_(inputNames.size()) {
+      : core_(core), updater_(nh, pnh, pnh.getNamespace()), before_(inputNames.size()) {
     updater_.setHardwareID("none");  // a software component
     for (std::size_t i = 0; i < inputNames.size(); ++i) {
       updater_.add(
@@ -48,9 +50,12 @@ class FusionDiagnostics {
     }
     updater_.add("estimation",
                  [this](diagnostic_updater::DiagnosticStatusWrapper& s) { reportEstimation(s); });
-    timer_ = nh.createWallTimer(ros::WallDuration(period),
-                                [this](const ros::WallTimerEvent&) { update(); });
+    timer_ = nh.createWallTimer(
+        ros::WallDuration(period), [this](const ros::WallTimerEvent&) { update(); }, false, false);
   }
+
+  /// Starts the periodic reports (the node does once its clock runs).
+  void start() { timer_.start(); }
 
   /// Makes the input reports show the values `source` loses before the core.
   void addLossSource(InputLossSource source) {

@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -24,6 +25,7 @@
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <topic_tools/shape_shifter.h>
 
@@ -74,13 +76,14 @@ class FusionNode final : public MessageSink {
             }));
       }
       // robot_localization's ~set_pose service: the same reset, with its outcome returned.
-      setPoseService_ = pnh_.advertiseService<sf_msgs::SetPose::Request, sf_msgs::SetPose::Response>(
-          "set_pose",
-          [this](sf_msgs::SetPose::Request& request, sf_msgs::SetPose::Response& response) {
-            response.message = setPose("~set_pose", request.pose);
-            response.success = response.message.empty();
-            return true;
-          });
+      setPoseService_ =
+          pnh_.advertiseService<sf_msgs::SetPose::Request, sf_msgs::SetPose::Response>(
+              "set_pose",
+              [this](sf_msgs::SetPose::Request& request, sf_msgs::SetPose::Response& response) {
+                response.message = setPose("~set_pose", request.pose);
+                response.success = response.message.empty();
+                return true;
+              });
       diagnostics_.addEstimationValue("poses set", [this] { return std::to_string(setPoses_); });
       diagnostics_.addEstimationValue("poses refused",
                                       [this] { return std::to_string(refusedPoses_); });
@@ -117,62 +120,47 @@ class FusionNode final : public MessageSink {
 
   /// Subscribes the reader's topic as serialized messages; each message of the expected type
   /// is handed to the reader, which gives every used field to measurement() or control().
+  /// Messages received before the clock is valid wait for it (the newest ~queue_size of them).
   void subscribe(const TopicReader& reader) {
     using Event = ros::MessageEvent<topic_tools::ShapeShifter const>;
     const boost::function<void(const Event&)> callback = [this, reader](const Event& event) {
-      const topic_tools::ShapeShifter::ConstPtr& msg = event.getConstMessage();
-      const double now = arrival(event.getReceiptTime());
-      advance(now);
-      if (!hasExpectedType(reader, *msg)) return;
-      buffer_.resize(msg->size());
-      ros::serialization::OStream stream(buffer_.data(), msg->size());
-      msg->write(stream);
-      try {
-        reader.read(buffer_.data(), msg->size(), *this, now);
-      } catch (const ros::Exception& e) {
-        ROS_ERROR_THROTTLE(5.0, "topic %s: a message could not be decoded: %s",
-                           reader.topic.c_str(), e.what());
+      if (!scheduled_) {
+        if (!ros::Time::isValid()) {
+          if (early_.size() >= static_cast<std::size_t>(queueSize_)) early_.pop_front();
+          early_.emplace_back(reader, event);
+          return;
+        }
+        startSchedule(ros::Time::now().toSec());
       }
+      receive(reader, event);
     };
     subscribers_.push_back(
         nh_.subscribe<topic_tools::ShapeShifter, const Event&>(reader.topic, queueSize_, callback));
   }
 
-  /// Starts the fixed-rate schedule once the clock is valid (sim time waits for /clock, saying
-  /// so every 5 s of wall time).
+  /// Starts the fixed-rate schedule once the clock is valid and returns at once (a nodelet's
+  /// onInit must not block its manager). On simulated time the schedule advances with each
+  /// /clock message, the first one starting it; a ros::Timer would make roscpp's timer thread
+  /// poll the simulated clock every millisecond of wall time, running or stopped (2-5 % of a
+  /// core, doc/node_benchmarks.md). Before the first /clock message the wait is reported:
+  /// /diagnostics every ~diagnostic_period, a warning every 5 s.
   void start() {
-    const ros::WallTime waiting = ros::WallTime::now();
-    ros::WallTime lastWarning, lastReport;
-    ros::Publisher waitingReport;  // /diagnostics while the updater cannot run yet
-    while (!ros::Time::isValid() && ros::ok()) {
-      const ros::WallTime now = ros::WallTime::now();
-      if (lastReport.isZero() || (now - lastReport).toSec() >= diagnosticPeriod_) {
-        lastReport = now;
-        if (!waitingReport) {
-          waitingReport = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
-        }
-        diagnostic_msgs::DiagnosticArray report;
-        diagnostic_msgs::DiagnosticStatus status;
-        status.level = diagnostic_msgs::DiagnosticStatus::WARN;
-        status.name = ros::this_node::getName().substr(1) + ": estimation";
-        status.message = "waiting for /clock (use_sim_time is true): no estimate yet";
-        status.hardware_id = "none";
-        report.status.push_back(status);
-        waitingReport.publish(report);
-      }
-      if (lastWarning.isZero() || (now - lastWarning).toSec() >= 5.0) {
-        lastWarning = now;
-        ROS_WARN(
-            "waiting for /clock (use_sim_time is true and no clock message arrived in %.0f "
-            "s): no estimate until a clock publisher (rosbag play --clock, a simulator) "
-            "runs",
-            (now - waiting).toSec());
-      }
-      ros::WallDuration(0.01).sleep();
+    waitingSince_ = ros::WallTime::now();
+    if (ros::Time::isSimTime()) {
+      clock_ = nh_.subscribe<rosgraph_msgs::Clock>("/clock", 10,
+                                                   [this](const rosgraph_msgs::Clock::ConstPtr& m) {
+                                                     if (!scheduled_)
+                                                       startSchedule(m->clock.toSec());
+                                                     advance(m->clock.toSec());
+                                                   });
     }
-    advance(ros::Time::now().toSec());
-    timer_ = nh_.createTimer(ros::Duration(core_.period()),
-                             [this](const ros::TimerEvent&) { advance(ros::Time::now().toSec()); });
+    if (ros::Time::isValid()) {
+      startSchedule(ros::Time::now().toSec());
+      return;
+    }
+    reportWaiting();
+    clockWait_ = nh_.createWallTimer(ros::WallDuration(diagnosticPeriod_),
+                                     [this](const ros::WallTimerEvent&) { reportWaiting(); });
   }
 
   void measurement(Index input, double now, double value, std::optional<double> variance,
@@ -214,6 +202,66 @@ class FusionNode final : public MessageSink {
   const FusionEngine& core() const { return core_; }
 
  private:
+  using MessageEvent = ros::MessageEvent<topic_tools::ShapeShifter const>;
+
+  /// A message of `reader`'s topic: the clock advances to its arrival, then the reader reads it.
+  void receive(const TopicReader& reader, const MessageEvent& event) {
+    const topic_tools::ShapeShifter::ConstPtr& msg = event.getConstMessage();
+    const double now = arrival(event.getReceiptTime());
+    advance(now);
+    if (!hasExpectedType(reader, *msg)) return;
+    buffer_.resize(msg->size());
+    ros::serialization::OStream stream(buffer_.data(), msg->size());
+    msg->write(stream);
+    try {
+      reader.read(buffer_.data(), msg->size(), *this, now);
+    } catch (const ros::Exception& e) {
+      ROS_ERROR_THROTTLE(5.0, "topic %s: a message could not be decoded: %s", reader.topic.c_str(),
+                         e.what());
+    }
+  }
+
+  /// The wait of start() for the first /clock message, reported.
+  void reportWaiting() {
+    const ros::WallTime now = ros::WallTime::now();
+    if (!waitingReport_) {
+      waitingReport_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
+    }
+    diagnostic_msgs::DiagnosticArray report;
+    diagnostic_msgs::DiagnosticStatus status;
+    status.level = diagnostic_msgs::DiagnosticStatus::WARN;
+    status.name = pnh_.getNamespace().substr(1) + ": estimation";
+    status.message = "waiting for /clock (use_sim_time is true): no estimate yet";
+    status.hardware_id = "none";
+    report.status.push_back(status);
+    waitingReport_.publish(report);
+    if (lastWaitWarning_.isZero() || (now - lastWaitWarning_).toSec() >= 5.0) {
+      lastWaitWarning_ = now;
+      ROS_WARN(
+          "waiting for /clock (use_sim_time is true and no clock message arrived in %.0f "
+          "s): no estimate until a clock publisher (rosbag play --clock, a simulator) "
+          "runs",
+          (now - waitingSince_).toSec());
+    }
+  }
+
+  /// The fixed-rate schedule from the first valid clock reading `now` on: on wall-clock time
+  /// a ros::Timer ends the periods, on simulated time the /clock messages do (start()).
+  void startSchedule(double now) {
+    scheduled_ = true;
+    clockWait_.stop();
+    waitingReport_.shutdown();
+    diagnostics_.start();
+    advance(now);
+    for (const auto& [reader, event] : early_) receive(reader, event);
+    early_.clear();
+    if (!ros::Time::isSimTime()) {
+      timer_ = nh_.createTimer(ros::Duration(core_.period()), [this](const ros::TimerEvent&) {
+        advance(ros::Time::now().toSec());
+      });
+    }
+  }
+
   /// Whether `msg` is of the reader's type; a message of another type is dropped, counted and
   /// reported (a typed roscpp subscription would refuse such a publisher without a word).
   bool hasExpectedType(const TopicReader& reader, const topic_tools::ShapeShifter& msg) {
@@ -298,6 +346,11 @@ class FusionNode final : public MessageSink {
   /// heading) and its covariance block (x, y, yaw slots of the message's 6 x 6 covariance) are
   /// replaced. Returns why the pose was refused (the belief then is as it was), empty if set.
   std::string setPose(const char* topic, const geometry_msgs::PoseWithCovarianceStamped& m) {
+    if (!scheduled_) {
+      ++refusedPoses_;
+      ROS_ERROR("%s: pose refused: the clock does not run yet (use_sim_time, no /clock)", topic);
+      return "the clock does not run yet (use_sim_time, no /clock)";
+    }
     advance(ros::Time::now().toSec());
     const auto& q = m.pose.pose.orientation;
     const double yaw = sf_config::extractors::eulerAngles({q.x, q.y, q.z, q.w}).yaw;
@@ -457,7 +510,14 @@ class FusionNode final : public MessageSink {
   std::uint64_t setPoses_ = 0, refusedPoses_ = 0;
   std::vector<ros::Publisher> outputs_;
   ros::Publisher state_, odometry_;
-  ros::Timer timer_;
+  ros::Timer timer_;        ///< the schedule on wall-clock time
+  ros::Subscriber clock_;   ///< the schedule on simulated time
+  bool scheduled_ = false;  ///< the clock was valid: subscribed, timer running
+  /// Messages received before the clock was valid, read when the schedule starts.
+  std::deque<std::pair<TopicReader, MessageEvent>> early_;
+  ros::WallTimer clockWait_;      ///< reports the wait for the first /clock message
+  ros::Publisher waitingReport_;  ///< /diagnostics while the updater cannot run yet
+  ros::WallTime waitingSince_, lastWaitWarning_;
   tf2_ros::TransformBroadcaster broadcaster_;
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
