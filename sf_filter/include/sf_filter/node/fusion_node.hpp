@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <deque>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -147,12 +148,9 @@ class FusionNode final : public MessageSink {
   void start() {
     waitingSince_ = ros::WallTime::now();
     if (ros::Time::isSimTime()) {
-      clock_ = nh_.subscribe<rosgraph_msgs::Clock>("/clock", 10,
-                                                   [this](const rosgraph_msgs::Clock::ConstPtr& m) {
-                                                     if (!scheduled_)
-                                                       startSchedule(m->clock.toSec());
-                                                     advance(m->clock.toSec());
-                                                   });
+      clock_ = nh_.subscribe<rosgraph_msgs::Clock>(
+          "/clock", 10,
+          [this](const rosgraph_msgs::Clock::ConstPtr& m) { onClock(m->clock.toSec()); });
     }
     if (ros::Time::isValid()) {
       startSchedule(ros::Time::now().toSec());
@@ -281,6 +279,19 @@ class FusionNode final : public MessageSink {
                        reader.datatype.c_str(), reader.md5sum.c_str(),
                        static_cast<unsigned long long>(w.count));
     return false;
+  }
+
+  /// A /clock message (simulated time). A message of an input topic advances the schedule to
+  /// its receipt time, which roscpp reads from the clock its own thread keeps, so a /clock
+  /// message still queued behind it can read older than the core's clock although the clock
+  /// never went back: that reading is stale and changes nothing (it reset the filter on a
+  /// loaded machine). Only /clock itself going back (a restarted bag, a reset simulator) is a
+  /// jump backwards.
+  void onClock(double t) {
+    if (!scheduled_) startSchedule(t);
+    const bool backwards = t < lastClockMessage_;
+    lastClockMessage_ = t;
+    advance(backwards ? t : std::max(t, core_.clock()));
   }
 
   /// The arrival time of a message: when roscpp's receiving thread read it (its receipt time, on
@@ -512,6 +523,8 @@ class FusionNode final : public MessageSink {
   ros::Publisher state_, odometry_;
   ros::Timer timer_;        ///< the schedule on wall-clock time
   ros::Subscriber clock_;   ///< the schedule on simulated time
+  /// The newest /clock message read (onClock); -infinity before the first.
+  double lastClockMessage_ = -std::numeric_limits<double>::infinity();
   bool scheduled_ = false;  ///< the clock was valid: subscribed, timer running
   /// Messages received before the clock was valid, read when the schedule starts.
   std::deque<std::pair<TopicReader, MessageEvent>> early_;
