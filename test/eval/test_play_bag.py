@@ -16,6 +16,7 @@ PLAY_BAG = os.path.join(REPO, "tools", "play_bag.py")
 FAKE_ROSBAG = """\
 #!/bin/sh
 printf '%s\\n' "$@" > "$FAKE_DIR/rosbag_args"
+for a in "$@"; do case "$a" in *.bag) [ -f "$a" ] && cp "$a" "$FAKE_DIR/played.bag";; esac; done
 exit ${FAKE_ROSBAG_RC:-0}
 """
 
@@ -74,6 +75,30 @@ class PlayBagTest(unittest.TestCase):
 
     def test_a_failed_play_ends_the_launch_with_rosbags_code(self):
         self.assertEqual(self.launch("--end-launch", "missing.bag", rc=1), "rc=1 sigint=1")
+
+    def test_uncompressed_copy_of_the_played_part(self):
+        # bags/pioneer_seed1.bag is bz2-compressed; with -s 5 -u 10 the player gets an
+        # uncompressed copy of its first 16 s (start + duration + 1 s), message for message
+        import rosbag
+        shipped = os.path.join(REPO, "bags", "pioneer_seed1.bag")
+        result = subprocess.run([sys.executable, PLAY_BAG, "--uncompressed", "--clock", "-s", "5",
+                                 "-u", "10", shipped], env=self.env, timeout=120)
+        self.assertEqual(result.returncode, 0)
+        args = self.read("rosbag_args").split("\n")[:-1]
+        self.assertEqual(args[:6], ["play", "--clock", "-s", "5", "-u", "10"])
+        self.assertNotEqual(args[6], shipped)
+        self.assertFalse(os.path.exists(args[6]), "the copy outlived the player")
+        with rosbag.Bag(shipped) as original:
+            end = original.get_start_time() + 16.0
+            expected = [(topic, raw[1], t.to_nsec()) for topic, raw, t in
+                        original.read_messages(raw=True) if t.to_sec() <= end]
+            self.assertIn("bz2", str(original.get_compression_info()))
+        with rosbag.Bag(os.path.join(self.dir, "played.bag")) as copy:
+            self.assertEqual(copy.get_compression_info().compression, "none")
+            got = [(topic, raw[1], t.to_nsec()) for topic, raw, t in
+                   copy.read_messages(raw=True)]
+        self.assertGreater(len(expected), 1000)
+        self.assertEqual(got, expected)
 
     def test_a_parent_that_is_not_roslaunch_is_left_alone(self):
         # the parent here is this test runner: a signal would interrupt it
