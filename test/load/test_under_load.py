@@ -4,12 +4,13 @@ replay fault tests while stress-ng keeps both cores of a 2-core CI machine busy
 (`stress-ng --cpu 2`, one CPU-bound worker per core at the default priority), and requires
 each to pass exactly as it does unloaded: nothing here loosens what they assert.
 
-Chosen (about 3 minutes in all, the test command's budget): soccer_fusion_block_online, which
-failed under load before, faults.test (timeouts, garbage, clock jumps injected into a running
-node) and set_pose.test; nav3ctrl_params_online is left out until its drift under stress-ng
-is fixed (doc/reliability.md, "Under load": the cause is known, the fix is not done);
-test/robots/test_replay_faults.py (signals, damaged bags, refused outputs) and
-test/robots/test_replay_clock_gaps.py (the replay through a gap).
+Chosen (about 4 minutes in all, the test command's budget): soccer_fusion_block_online and
+nav3ctrl_params_online, which failed under load before (the online path against the offline
+replay; the latter drifted with rosbag play's stalls at the bag's compressed chunks, which the
+tests now avoid: doc/reliability.md, "Under load"), faults.test (timeouts, garbage, clock
+jumps injected into a running node) and set_pose.test; test/robots/test_replay_faults.py
+(signals, damaged bags, refused outputs) and test/robots/test_replay_clock_gaps.py (the
+replay through a gap).
 
 Each rostest writes its results below a temporary directory, not over the normal run's.
 stress-ng runs in a process group of its own, stopped by its id at the end; its --timeout
@@ -96,14 +97,11 @@ class UnderLoadTest(unittest.TestCase):
             "--start-dir", os.path.join(REPO, "test", "robots"), "--suite-name", module,
             "--junit", os.path.join(results, "results.xml"), module], results)
 
-    # nav3ctrl_params_online.test is not run here: under stress-ng it failed 2 of 12 runs
-    # (0.172 m, and once in CI, against 0.07 m). Cause (doc/reliability.md, "Under load"):
-    # rosbag play stalls at each bz2 chunk of the bag and then catches up; when /clock jumps
-    # before the values of the stall arrive, the node puts them into one period. Not fixed yet;
-    # it stays in the normal test command.
-
     def test_soccer_fusion_block_online(self):
         self.run_rostest("soccer_fusion_block_online.test")
+
+    def test_nav3ctrl_params_online(self):
+        self.run_rostest("nav3ctrl_params_online.test")
 
     def test_faults(self):
         self.run_rostest("faults.test")
