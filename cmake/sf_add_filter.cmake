@@ -36,29 +36,39 @@ function(sf_add_filter name header)
   if(NOT EXISTS "${_header}")
     message(FATAL_ERROR "sf_add_filter(${name}): configuration header ${_header} not found")
   endif()
-  add_executable(${name} "${SF_PKG_FILTER_MAIN}")
-  target_compile_definitions(${name} PRIVATE SF_CONFIG_HEADER="${_header}")
-  target_compile_features(${name} PRIVATE cxx_std_17)
+  # The header's translation unit is an object library that waits only for the message
+  # headers: make compiles an executable's sources only after every library it links is
+  # built, which in a clean build would hold every node back until the package's libraries
+  # are done (doc/build_cost.md). It takes the libraries' include directories and
+  # definitions from their properties instead of linking them, as linking orders the build.
+  set(_unit ${name}_unit)
+  add_library(${_unit} OBJECT "${SF_PKG_FILTER_MAIN}")
+  target_compile_definitions(${_unit} PRIVATE SF_CONFIG_HEADER="${_header}")
+  target_compile_features(${_unit} PRIVATE cxx_std_17)
   # A node is optimised unless the caller asks for a build type: a catkin workspace configured
   # without CMAKE_BUILD_TYPE compiles with no -O at all, which makes a filter step 100x slower.
   if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
-    target_compile_options(${name} PRIVATE -O2)
-    target_compile_definitions(${name} PRIVATE NDEBUG)
+    target_compile_options(${_unit} PRIVATE -O2)
+    target_compile_definitions(${_unit} PRIVATE NDEBUG)
   endif()
   # Configuration mistakes are reported by #error/static_assert naming the macro; the
   # macro-expansion backtrace under each would only bury that message.
-  target_compile_options(${name} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ftrack-macro-expansion=0>)
-  target_include_directories(${name} PRIVATE ${catkin_INCLUDE_DIRS} ${sf_pkg_INCLUDE_DIRS})
+  target_compile_options(${_unit} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ftrack-macro-expansion=0>)
+  target_include_directories(${_unit} PRIVATE ${catkin_INCLUDE_DIRS} ${sf_pkg_INCLUDE_DIRS})
+  add_executable(${name} $<TARGET_OBJECTS:${_unit}>)
   target_link_libraries(${name} ${catkin_LIBRARIES} ${sf_pkg_LIBRARIES})
   if(TARGET sf_fusion_node)
     target_link_libraries(${name} sf_fusion_node)
-    target_include_directories(${name} PRIVATE
-      "${CMAKE_CURRENT_SOURCE_DIR}/sf_filter/include" "${CMAKE_CURRENT_SOURCE_DIR}/sf_estimation/include")
+    target_include_directories(${_unit} PRIVATE
+      $<TARGET_PROPERTY:sf_fusion_node,INTERFACE_INCLUDE_DIRECTORIES>)
+    target_compile_definitions(${_unit} PRIVATE
+      $<TARGET_PROPERTY:sf_fusion_node,INTERFACE_COMPILE_DEFINITIONS>)
+    target_link_libraries(${_unit} PRIVATE Eigen3::Eigen Boost::headers)  # imported: no order
   endif()
   # The message headers (sf_msgs) are generated before the node compiles when sf_msgs is in
   # the same workspace (catkin defines empty targets for installed packages).
   if(catkin_EXPORTED_TARGETS)
-    add_dependencies(${name} ${catkin_EXPORTED_TARGETS})
+    add_dependencies(${_unit} ${catkin_EXPORTED_TARGETS})
   endif()
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY
     "${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}")
