@@ -184,7 +184,16 @@ class CovarianceSquareRoot {
   /// Factors `covariance`. Throws ParameterError on a wrong size and NumericalError when the
   /// covariance is not finite, not symmetric or not positive semi-definite; on a throw the
   /// previously computed root is kept.
-  void compute(const MatrixType& covariance);
+  template <class Derived>
+  void compute(const Eigen::MatrixBase<Derived>& covariance) {
+    const Index n = size();
+    if (covariance.rows() != n || covariance.cols() != n) {
+      throw ParameterError("covariance must be " + std::to_string(n) + "x" + std::to_string(n) +
+                           ", got " + std::to_string(covariance.rows()) + "x" +
+                           std::to_string(covariance.cols()));
+    }
+    factorise(covariance);  // a MatrixType binds directly, anything else is evaluated once
+  }
 
   /// v <- S * v = Pi^T (L sqrt(D) v), without a temporary: row k of the triangular factor
   /// only reads entries j <= k, so rows are computed from the last to the first, each
@@ -208,16 +217,15 @@ class CovarianceSquareRoot {
   MatrixType factor_;             // L sqrt(D), in pivoted order
   typename Eigen::LDLT<MatrixType>::TranspositionType transpositions_;  // Pi
   MatrixType matrix_;                                                   // Pi^T L sqrt(D)
+
+  // compute() of a covariance of the right size; out of the class body, so that the library's
+  // instances (below) are used instead of compiling it again.
+  void factorise(const MatrixType& covariance);
 };
 
 template <int N>
-void CovarianceSquareRoot<N>::compute(const MatrixType& covariance) {
+void CovarianceSquareRoot<N>::factorise(const MatrixType& covariance) {
   const Index n = size();
-  if (covariance.rows() != n || covariance.cols() != n) {
-    throw ParameterError("covariance must be " + std::to_string(n) + "x" + std::to_string(n) +
-                         ", got " + std::to_string(covariance.rows()) + "x" +
-                         std::to_string(covariance.cols()));
-  }
   if (!covariance.allFinite()) {
     throw NumericalError("covariance contains a non-finite value");
   }
