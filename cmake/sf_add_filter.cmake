@@ -51,13 +51,20 @@ function(_sf_filter_unit target header)
   # macro-expansion backtrace under each would only bury that message.
   target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ftrack-macro-expansion=0>)
   _sf_filter_includes(${target})
+  if(TARGET sf_fusion_node)
+    target_link_libraries(${target} PRIVATE Eigen3::Eigen Boost::headers)  # imported: no order
+  endif()
 endfunction()
 
 function(_sf_filter_includes target)
   target_include_directories(${target} PRIVATE ${catkin_INCLUDE_DIRS} ${sf_pkg_INCLUDE_DIRS})
   if(TARGET sf_fusion_node)
+    # In sf_pkg's own build: the library's include directories and definitions from its
+    # properties, not by linking it (an object library that linked it would wait for it).
     target_include_directories(${target} PRIVATE
-      "${CMAKE_CURRENT_SOURCE_DIR}/sf_filter/include" "${CMAKE_CURRENT_SOURCE_DIR}/sf_estimation/include")
+      $<TARGET_PROPERTY:sf_fusion_node,INTERFACE_INCLUDE_DIRECTORIES>)
+    target_compile_definitions(${target} PRIVATE
+      $<TARGET_PROPERTY:sf_fusion_node,INTERFACE_COMPILE_DEFINITIONS>)
   endif()
   # The message headers (sf_msgs) are generated before the node compiles when sf_msgs is in
   # the same workspace (catkin defines empty targets for installed packages).
@@ -82,15 +89,24 @@ function(sf_add_filter name header)
   if(NOT EXISTS "${_header}")
     message(FATAL_ERROR "sf_add_filter(${name}): configuration header ${_header} not found")
   endif()
+  # The header's translation unit is an object library that waits only for the message
+  # headers: make compiles an executable's sources only after every library it links is
+  # built, which in a clean build would hold every node back until the package's libraries
+  # are done (doc/build_cost.md). With NODELET it is compiled once, position-independent,
+  # for the node and the plugin (Debian's g++ builds executables position-independent
+  # anyway).
+  set(_unit ${name}_unit)
   if(_sf_NODELET)
     _sf_check_nodelet_xml(${name} "${_sf_NODELET}")
-    # One compile of the header for both: an object library, position-independent for the
-    # plugin (Debian's g++ builds executables position-independent anyway).
-    add_library(${name}_unit OBJECT "${SF_PKG_NODELET_UNIT}")
-    _sf_filter_unit(${name}_unit "${_header}")
-    set_target_properties(${name}_unit PROPERTIES POSITION_INDEPENDENT_CODE ON)
-    add_executable(${name} $<TARGET_OBJECTS:${name}_unit>)
-    add_library(${name}_nodelet SHARED "${SF_PKG_NODELET_PLUGIN}" $<TARGET_OBJECTS:${name}_unit>)
+    add_library(${_unit} OBJECT "${SF_PKG_NODELET_UNIT}")
+    set_target_properties(${_unit} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  else()
+    add_library(${_unit} OBJECT "${SF_PKG_FILTER_MAIN}")
+  endif()
+  _sf_filter_unit(${_unit} "${_header}")
+  add_executable(${name} $<TARGET_OBJECTS:${_unit}>)
+  if(_sf_NODELET)
+    add_library(${name}_nodelet SHARED "${SF_PKG_NODELET_PLUGIN}" $<TARGET_OBJECTS:${_unit}>)
     target_compile_definitions(${name}_nodelet PRIVATE SF_NODELET_CLASS=${name})
     target_compile_features(${name}_nodelet PRIVATE cxx_std_17)
     _sf_filter_includes(${name}_nodelet)
@@ -105,9 +121,6 @@ function(sf_add_filter name header)
     if(NOT _sf_NO_INSTALL)
       install(TARGETS ${name}_nodelet LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
     endif()
-  else()
-    add_executable(${name} "${SF_PKG_FILTER_MAIN}")
-    _sf_filter_unit(${name} "${_header}")
   endif()
   _sf_filter_link(${name})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY

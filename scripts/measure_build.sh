@@ -5,22 +5,25 @@
 # node after touching its header. With --baseline REV the same translation units of another
 # revision are compiled in the same run, for a before/after on one machine.
 #
-#   scripts/measure_build.sh [--baseline REV] [--baseline-clean] [--jobs N] [HEADER ...]
+#   scripts/measure_build.sh [--baseline REV] [--baseline-clean] [--units-only] [--jobs N]
+#                            [HEADER ...]
 #
 # HEADER: configuration headers relative to the repository (default: config/nav3ctrl_ekf.h,
 # config/nav3ctrl_ukf.h, config/nav3ctrl_pf.h, config/soccer_kf.h). --baseline-clean also
-# times the baseline's clean build (minutes). Needs the packages of scripts/common.sh and
-# GNU time (/usr/bin/time, Debian package "time").
+# times the baseline's clean build (minutes); --units-only measures the translation units
+# alone (no clean build, no header-touch rebuild). Needs the packages of scripts/common.sh
+# and GNU time (/usr/bin/time, Debian package "time").
 set -euo pipefail
 export PATH="/usr/bin:/bin:${PATH}"
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd -P)"
-baseline="" baseline_clean=0 jobs=2 headers=()
+baseline="" baseline_clean=0 units_only=0 jobs=2 headers=()
 while (($#)); do
   case "$1" in
     --baseline) baseline="$2"; shift 2 ;;
     --baseline-clean) baseline_clean=1; shift ;;
+    --units-only) units_only=1; shift ;;
     --jobs) jobs="$2"; shift 2 ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) headers+=("$1"); shift ;;
   esac
 done
@@ -95,6 +98,7 @@ for h in "${headers[@]}"; do
   echo
 done
 echo
+((units_only)) && exit 0
 
 echo "clean build, every node, no tests (-j$jobs): $(clean_build "$work/current") s wall"
 [[ -n "$baseline" && "$baseline_clean" == 1 ]] &&

@@ -11,6 +11,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "sf_estimation/angles.hpp"
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/measurement_noise.hpp"
@@ -90,6 +91,38 @@ void linearCorrection(Vector<N>& x, Matrix<N, N>& P, const Matrix<M, N>& H, cons
   P = IKHP * IKH.transpose() + K * R * K.transpose();
 }
 
+/// Correction of (x, P) from the predicted measurement's mean zMean and covariance Pzz (R
+/// not included) and the state-measurement cross covariance Pxz, as the UKF has them from its
+/// sigma points: K = Pxz (Pzz + R)^-1, x += K y, P -= K (Pzz + R) K^T. The innovation y =
+/// z - zMean is wrapped for the angle measurements; missing entries are neutralised as above
+/// (Pxz and Pzz are scratch: their missing rows and columns are zeroed).
+template <int N, int M>
+void crossCovarianceCorrection(const Measurement<M>& z, const Vector<M>& zMean,
+                               const AngleMask<M>& angleMeasurements, const Matrix<M, M>& noise,
+                               Matrix<N, M>& Pxz, Matrix<M, M>& Pzz, Vector<N>& x,
+                               Matrix<N, N>& P) {
+  const Index m = z.size();
+  Vector<M> y = z.value - zMean;
+  angleMeasurements.wrap(y);
+  Matrix<M, N> PxzT = Pxz.transpose();
+  neutraliseMissing(z, y, PxzT);
+  Pxz = PxzT.transpose();
+  for (Index i = 0; i < m; ++i) {
+    if (!z.available(i)) {
+      Pzz.row(i).setZero();
+      Pzz.col(i).setZero();
+    }
+  }
+  Matrix<M, M> R(m, m);
+  effectiveMeasurementNoise(noise, z, R);
+  Matrix<M, M> S = Pzz + R;
+  symmetrize(S);
+  Matrix<N, M> K(x.size(), m);
+  kalmanGain<N, M>(Pxz, S, K);
+  x += K * y;
+  P -= K * S * K.transpose();
+}
+
 /// Covariance time update P_next = A P A^T + Q, shared by KF and EKF.
 template <int N>
 void propagateCovariance(const Matrix<N, N>& A, const Matrix<N, N>& P, const Matrix<N, N>& Q,
@@ -98,25 +131,31 @@ void propagateCovariance(const Matrix<N, N>& A, const Matrix<N, N>& P, const Mat
 }
 
 // The size-only steps above are compiled once in the library for the state sizes N = 1..9
-// and measurement sizes M = 1..6 that configurations use most (src/kalman_steps_*.cpp): a
+// and measurement sizes M = 1..6 that configurations use most (kalman_steps_*.cpp): a
 // node's translation unit then does not instantiate them again, which halves a Kalman-type
 // configuration's compile time. Other sizes are instantiated where they are used, as before.
 #define SF_ESTIMATION_FOR_MEASUREMENT_SIZES(X, N) X(N, 1) X(N, 2) X(N, 3) X(N, 4) X(N, 5) X(N, 6)
-#define SF_ESTIMATION_CORRECTION(N, M)                                                        \
-  template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&,        \
-                                       const Vector<M>&, const Matrix<M, M>&);
-#define SF_ESTIMATION_KALMAN_STEPS(N)                                                         \
-  template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&,              \
-                                       const Matrix<N, N>&, Matrix<N, N>&);                   \
+#define SF_ESTIMATION_CORRECTION(N, M)                                                   \
+  template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&,   \
+                                       const Vector<M>&, const Matrix<M, M>&);           \
+  template void crossCovarianceCorrection<N, M>(                                         \
+      const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&, \
+      Matrix<N, M>&, Matrix<M, M>&, Vector<N>&, Matrix<N, N>&);
+#define SF_ESTIMATION_KALMAN_STEPS(N)                                            \
+  template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&, \
+                                       const Matrix<N, N>&, Matrix<N, N>&);      \
   SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_CORRECTION, N)
 #ifndef SF_ESTIMATION_INSTANTIATING_KALMAN_STEPS
 // "extern" applies to the first declaration only; each size's declarations are listed apart.
 #define SF_ESTIMATION_EXTERN_CORRECTION(N, M)                                                 \
   extern template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&, \
-                                              const Vector<M>&, const Matrix<M, M>&);
-#define SF_ESTIMATION_EXTERN_STEPS(N)                                                         \
-  extern template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&,       \
-                                              const Matrix<N, N>&, Matrix<N, N>&);            \
+                                              const Vector<M>&, const Matrix<M, M>&);         \
+  extern template void crossCovarianceCorrection<N, M>(                                       \
+      const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&,      \
+      Matrix<N, M>&, Matrix<M, M>&, Vector<N>&, Matrix<N, N>&);
+#define SF_ESTIMATION_EXTERN_STEPS(N)                                                   \
+  extern template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&, \
+                                              const Matrix<N, N>&, Matrix<N, N>&);      \
   SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_EXTERN_CORRECTION, N)
 SF_ESTIMATION_EXTERN_STEPS(1)
 SF_ESTIMATION_EXTERN_STEPS(2)

@@ -83,42 +83,56 @@ struct Measurement {
   /// The given covariances: off the diagonal, symmetric, finite, between entries with their
   /// own variance, and the block they form with those variances positive definite (else the
   /// step would fail in the filter's factorisation, or worse, pass with a wrong gain).
-  void validateCovariances() const {
-    const Index m = size();
-    Mask<M> inBlock = Mask<M>::Constant(m, false);
-    for (Index i = 0; i < m; ++i) {
-      for (Index j = 0; j < m; ++j) {
-        if (!covarianceUsed(i, j)) continue;
-        const std::string pair =
-            "covariance of measurements " + std::to_string(i) + " and " + std::to_string(j);
-        if (i == j) throw InvalidInputError(pair + " is on the diagonal: give it as a variance");
-        if (!std::isfinite(covariance(i, j))) throw InvalidInputError(pair + " is not finite");
-        if (!covarianceGiven(j, i) || covariance(i, j) != covariance(j, i)) {
-          throw InvalidInputError(pair + " is not symmetric");
-        }
-        if (!varianceGiven(i) || !varianceGiven(j)) {
-          throw InvalidInputError(pair + " is given without both their variances");
-        }
-        inBlock(i) = true;
+  void validateCovariances() const;
+};
+
+template <int M>
+void Measurement<M>::validateCovariances() const {
+  const Index m = size();
+  Mask<M> inBlock = Mask<M>::Constant(m, false);
+  for (Index i = 0; i < m; ++i) {
+    for (Index j = 0; j < m; ++j) {
+      if (!covarianceUsed(i, j)) continue;
+      const std::string pair =
+          "covariance of measurements " + std::to_string(i) + " and " + std::to_string(j);
+      if (i == j) throw InvalidInputError(pair + " is on the diagonal: give it as a variance");
+      if (!std::isfinite(covariance(i, j))) throw InvalidInputError(pair + " is not finite");
+      if (!covarianceGiven(j, i) || covariance(i, j) != covariance(j, i)) {
+        throw InvalidInputError(pair + " is not symmetric");
       }
-    }
-    // The block with the identity on the rows outside it: positive definite iff the block is.
-    Matrix<M, M> block = Matrix<M, M>::Identity(m, m);
-    std::string entries;
-    for (Index i = 0; i < m; ++i) {
-      if (!inBlock(i)) continue;
-      entries += (entries.empty() ? "" : ", ") + std::to_string(i);
-      block(i, i) = variance(i);
-      for (Index j = 0; j < m; ++j) {
-        if (j != i && covarianceUsed(i, j)) block(i, j) = covariance(i, j);
+      if (!varianceGiven(i) || !varianceGiven(j)) {
+        throw InvalidInputError(pair + " is given without both their variances");
       }
-    }
-    if (Eigen::LLT<Matrix<M, M>>(block).info() != Eigen::Success) {
-      throw InvalidInputError("covariance block of measurements " + entries +
-                              " is not positive definite");
+      inBlock(i) = true;
     }
   }
-};
+  // The block with the identity on the rows outside it: positive definite iff the block is.
+  Matrix<M, M> block = Matrix<M, M>::Identity(m, m);
+  std::string entries;
+  for (Index i = 0; i < m; ++i) {
+    if (!inBlock(i)) continue;
+    entries += (entries.empty() ? "" : ", ") + std::to_string(i);
+    block(i, i) = variance(i);
+    for (Index j = 0; j < m; ++j) {
+      if (j != i && covarianceUsed(i, j)) block(i, j) = covariance(i, j);
+    }
+  }
+  if (Eigen::LLT<Matrix<M, M>>(block).info() != Eigen::Success) {
+    throw InvalidInputError("covariance block of measurements " + entries +
+                            " is not positive definite");
+  }
+}
+
+// The check of given covariances (an LLT of the block) is compiled once in the library for
+// the dynamic size and the measurement sizes 1..6 (src/measurement_checks.cpp); other sizes
+// instantiate it where they use it.
+#define SF_ESTIMATION_FOR_CHECKED_MEASUREMENT_SIZES(X) X(Dynamic) X(1) X(2) X(3) X(4) X(5) X(6)
+#ifndef SF_ESTIMATION_INSTANTIATING_MEASUREMENT_CHECKS
+#define SF_ESTIMATION_EXTERN_MEASUREMENT_CHECK(M) \
+  extern template void Measurement<M>::validateCovariances() const;
+SF_ESTIMATION_FOR_CHECKED_MEASUREMENT_SIZES(SF_ESTIMATION_EXTERN_MEASUREMENT_CHECK)
+#undef SF_ESTIMATION_EXTERN_MEASUREMENT_CHECK
+#endif
 
 /// Throws InvalidInputError unless the control vector has the right size and is finite.
 template <class Derived>

@@ -24,6 +24,7 @@
 #include "sf_estimation/model.hpp"
 #include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/parameter_checks.hpp"
+#include "sf_estimation/particle_filter_steps.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
 
 namespace estimation {
@@ -50,7 +51,7 @@ class ParticleFilterSIR {
   static constexpr int N = StateSize;
   static constexpr int M = MeasurementSize;
   static constexpr int L = ControlSize;
-  using Particles = Eigen::Matrix<double, N, Dynamic>;
+  using Particles = ParticleSet<N>;
   static constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
  public:
@@ -91,8 +92,9 @@ class ParticleFilterSIR {
     weights_.resize(p);
     state_.resize(n);
     covariance_.resize(n, n);
-    maskedNoise_.compute(R);
-    whiteningOf(maskedNoise_, fullWhitening_);
+    if (!noiseWhitening(R_, maskedNoise_, fullWhitening_)) {
+      throw ParameterError(method + ": R must be positive definite");
+    }
     maskedWhitening_ = fullWhitening_;
     reducedR_.resize(m, m);
     reset();
@@ -125,10 +127,7 @@ class ParticleFilterSIR {
   /// Re-seeds the engine and draws the initial particles from N(x0, P0).
   void reset() {
     engine_.seed(params_.seed);
-    const Matrix<N, N> root = probability::covarianceSquareRoot(P0_);
-    probability::fillStandardNormal(engine_, noise_);
-    particles_.noalias() = root * noise_;
-    particles_.colwise() += x0_;
+    drawGaussianParticles(engine_, x0_, P0_, particles_, noise_);
     angleStates_.wrap(particles_);
     logWeights_.setConstant(-std::log(static_cast<double>(particleCount())));
     weights_.setConstant(1.0 / static_cast<double>(particleCount()));
@@ -249,11 +248,9 @@ class ParticleFilterSIR {
     const Matrix<M, M>* whitening = &fullWhitening_;
     if (z.availableCount() != m || z.varianceGiven.any() || z.covarianceGiven.any()) {
       effectiveMeasurementNoise(R_, z, reducedR_);
-      maskedNoise_.compute(reducedR_);
-      if (maskedNoise_.info() != Eigen::Success) {
+      if (!noiseWhitening(reducedR_, maskedNoise_, maskedWhitening_)) {
         throw NumericalError("ParticleFilterSIR: measurement noise is not positive definite");
       }
-      whiteningOf(maskedNoise_, maskedWhitening_);
       whitening = &maskedWhitening_;
     }
     const bool complete = z.availableCount() == m;
@@ -312,13 +309,6 @@ class ParticleFilterSIR {
     particles_.swap(scratch_);
     logWeights_.setConstant(-std::log(static_cast<double>(p)));
     weights_.setConstant(step);
-  }
-
-  /// L^-1 for the Cholesky factor L of a noise covariance: the log-likelihood's |L^-1 r|^2
-  /// then costs multiplications only, where solving with L costs m divisions per particle.
-  static void whiteningOf(const Eigen::LLT<Matrix<M, M>>& factor, Matrix<M, M>& inverse) {
-    const Index m = factor.rows();
-    inverse = factor.matrixL().solve(Matrix<M, M>::Identity(m, m));
   }
 
   /// Normalises newLogWeights_ (log-sum-exp) and sets weights_ to the normalised weights, one

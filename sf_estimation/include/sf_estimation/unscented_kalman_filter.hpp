@@ -63,25 +63,7 @@ class UnscentedKalmanFilter
       transform.crossCovariance(points, x, expected, zMean, Pxz, AngleMask<N>(n),
                                 this->angleMeasurements_);
 
-      Vector<M> y = z.value - zMean;
-      this->angleMeasurements_.wrap(y);
-      Matrix<M, N> PxzT = Pxz.transpose();
-      neutraliseMissing(z, y, PxzT);
-      Pxz = PxzT.transpose();
-      for (Index i = 0; i < m; ++i) {
-        if (!z.available(i)) {
-          Pzz.row(i).setZero();
-          Pzz.col(i).setZero();
-        }
-      }
-      Matrix<M, M> R(m, m);
-      effectiveMeasurementNoise(this->R_, z, R);
-      Matrix<M, M> Szz = Pzz + R;
-      symmetrize(Szz);
-      Matrix<N, M> K(n, m);
-      kalmanGain<N, M>(Pxz, Szz, K);
-      x += K * y;
-      P -= K * Szz * K.transpose();
+      crossCovarianceCorrection<N, M>(z, zMean, this->angleMeasurements_, this->R_, Pxz, Pzz, x, P);
     }
     this->commit(x, P, repairedPrediction);
     if (widened) ++this->repairs_.sigmaSpread;

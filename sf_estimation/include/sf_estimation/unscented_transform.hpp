@@ -11,6 +11,7 @@
 
 #include "sf_estimation/angles.hpp"
 #include "sf_estimation/errors.hpp"
+#include "sf_estimation/kalman_correction.hpp"  // SF_ESTIMATION_FOR_MEASUREMENT_SIZES
 #include "sf_estimation/probability/gaussian.hpp"
 #include "sf_estimation/types.hpp"
 
@@ -78,26 +79,12 @@ class UnscentedTransform {
   const Vector<PointCount>& covarianceWeights() const { return covarianceWeights_; }
 
   /// Columns: mean, mean + i-th column of sqrt((n+lambda) P), mean - that column.
-  void sigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P, Points<N>& points) const {
-    if (choleskySigmaPoints(mean, P, points)) return;
-    // Singular but valid covariances (a state known exactly) have no Cholesky factor; the
-    // LDLT-based root handles them and throws NumericalError for indefinite ones.
-    const Matrix<N, N> scaled = (static_cast<double>(n_) + lambda_) * P;
-    probability::CovarianceSquareRoot<N> semiDefiniteRoot(n_);
-    semiDefiniteRoot.compute(scaled);
-    fillPoints(mean, semiDefiniteRoot.matrix(), points);
-  }
+  void sigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P, Points<N>& points) const;
 
   /// The sigma points from the Cholesky factor of (n+lambda) P; false (points unset) when
   /// P is not positive definite. That factor also proves P needs no repair
   /// (numerical_repairs.hpp), so a filter that tries this first pays for one factorisation.
-  bool choleskySigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P, Points<N>& points) const {
-    Matrix<N, N> root = (static_cast<double>(n_) + lambda_) * P;
-    if (!probability::choleskyInPlace(root)) return false;
-    for (Index col = 1; col < n_; ++col) root.col(col).head(col).setZero();
-    fillPoints(mean, root, points);
-    return true;
-  }
+  bool choleskySigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P, Points<N>& points) const;
 
   /// Weighted mean of the points, taken as the central point (column 0) plus the weighted
   /// mean of the other points' deviations from it. Mathematically this is sum_i Wm_i p_i (the
@@ -108,14 +95,7 @@ class UnscentedTransform {
   /// exact on the circle as long as every point lies within pi of the central one.
   template <int Rows>
   void mean(const Points<Rows>& points, Vector<Rows>& result,
-            const AngleMask<Rows>& angles = AngleMask<Rows>()) const {
-    const Vector<Rows> reference = points.col(0);
-    Points<Rows> deviations = points.colwise() - reference;
-    angles.wrap(deviations);
-    result.noalias() = deviations * meanWeights_;
-    result += reference;
-    angles.wrap(result);
-  }
+            const AngleMask<Rows>& angles = AngleMask<Rows>()) const;
 
   /// sum_i Wc_i (a_i - aMean)(b_i - bMean)^T; with a = b this is the covariance. The
   /// deviations of the rows marked in aAngles / bAngles are wrapped to (-pi, pi].
@@ -123,48 +103,134 @@ class UnscentedTransform {
   void crossCovariance(const Points<RowsA>& a, const Vector<RowsA>& aMean, const Points<RowsB>& b,
                        const Vector<RowsB>& bMean, Matrix<RowsA, RowsB>& result,
                        const AngleMask<RowsA>& aAngles = AngleMask<RowsA>(),
-                       const AngleMask<RowsB>& bAngles = AngleMask<RowsB>()) const {
-    Points<RowsA> deviationsA = a.colwise() - aMean;
-    aAngles.wrap(deviationsA);
-    Points<RowsB> deviationsB = b.colwise() - bMean;
-    bAngles.wrap(deviationsB);
-    if constexpr (N != Dynamic && RowsA != Dynamic && RowsB != Dynamic) {
-      // At fixed sizes each entry is one dot product over the points, of deviations stored
-      // transposed so that the dot runs over contiguous memory. As one matrix product Eigen
-      // would pick its blocked GEMM from 2n+1 >= 8 points on, whose packing costs more than
-      // the arithmetic. With the same points on both sides the result is a covariance:
-      // symmetric, so only its lower triangle is computed.
-      using Deviations = Eigen::Matrix<double, PointCount, RowsA>;
-      const Deviations da = deviationsA.transpose();
-      const Eigen::Matrix<double, PointCount, RowsB> weightedDb =
-          covarianceWeights_.asDiagonal() * deviationsB.transpose();
-      bool symmetric = false;
-      if constexpr (RowsA == RowsB) symmetric = &a == &b && &aMean == &bMean;
-      for (Index j = 0; j < result.cols(); ++j) {
-        for (Index i = symmetric ? j : 0; i < result.rows(); ++i) {
-          result(i, j) = da.col(i).dot(weightedDb.col(j));
-          if (symmetric) result(j, i) = result(i, j);
-        }
-      }
-    } else {
-      const Points<RowsA> weighted = deviationsA * covarianceWeights_.asDiagonal();
-      result.noalias() = weighted * deviationsB.transpose();
-    }
-  }
+                       const AngleMask<RowsB>& bAngles = AngleMask<RowsB>()) const;
 
  private:
-  void fillPoints(const Vector<N>& mean, const Matrix<N, N>& root, Points<N>& points) const {
-    points.resize(n_, 2 * n_ + 1);
-    points.col(0) = mean;
-    // Fixed-size column blocks when N is known: a run-time-sized block is several times slower.
-    points.template middleCols<N>(1, n_) = root.colwise() + mean;
-    points.template middleCols<N>(1 + n_, n_) = (-root).colwise() + mean;
-  }
+  void fillPoints(const Vector<N>& mean, const Matrix<N, N>& root, Points<N>& points) const;
 
   Index n_;
   UnscentedParameters params_;
   double lambda_ = 0.0;
   Vector<PointCount> meanWeights_, covarianceWeights_;
 };
+
+template <int N>
+void UnscentedTransform<N>::sigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P,
+                                        Points<N>& points) const {
+  if (choleskySigmaPoints(mean, P, points)) return;
+  // Singular but valid covariances (a state known exactly) have no Cholesky factor; the
+  // LDLT-based root handles them and throws NumericalError for indefinite ones.
+  const Matrix<N, N> scaled = (static_cast<double>(n_) + lambda_) * P;
+  probability::CovarianceSquareRoot<N> semiDefiniteRoot(n_);
+  semiDefiniteRoot.compute(scaled);
+  fillPoints(mean, semiDefiniteRoot.matrix(), points);
+}
+
+template <int N>
+bool UnscentedTransform<N>::choleskySigmaPoints(const Vector<N>& mean, const Matrix<N, N>& P,
+                                                Points<N>& points) const {
+  Matrix<N, N> root = (static_cast<double>(n_) + lambda_) * P;
+  if (!probability::choleskyInPlace(root)) return false;
+  for (Index col = 1; col < n_; ++col) root.col(col).head(col).setZero();
+  fillPoints(mean, root, points);
+  return true;
+}
+
+template <int N>
+template <int Rows>
+void UnscentedTransform<N>::mean(const Points<Rows>& points, Vector<Rows>& result,
+                                 const AngleMask<Rows>& angles) const {
+  const Vector<Rows> reference = points.col(0);
+  Points<Rows> deviations = points.colwise() - reference;
+  angles.wrap(deviations);
+  result.noalias() = deviations * meanWeights_;
+  result += reference;
+  angles.wrap(result);
+}
+
+template <int N>
+template <int RowsA, int RowsB>
+void UnscentedTransform<N>::crossCovariance(const Points<RowsA>& a, const Vector<RowsA>& aMean,
+                                            const Points<RowsB>& b, const Vector<RowsB>& bMean,
+                                            Matrix<RowsA, RowsB>& result,
+                                            const AngleMask<RowsA>& aAngles,
+                                            const AngleMask<RowsB>& bAngles) const {
+  Points<RowsA> deviationsA = a.colwise() - aMean;
+  aAngles.wrap(deviationsA);
+  Points<RowsB> deviationsB = b.colwise() - bMean;
+  bAngles.wrap(deviationsB);
+  if constexpr (N != Dynamic && RowsA != Dynamic && RowsB != Dynamic) {
+    // At fixed sizes each entry is one dot product over the points, of deviations stored
+    // transposed so that the dot runs over contiguous memory. As one matrix product Eigen
+    // would pick its blocked GEMM from 2n+1 >= 8 points on, whose packing costs more than
+    // the arithmetic. With the same points on both sides the result is a covariance:
+    // symmetric, so only its lower triangle is computed.
+    using Deviations = Eigen::Matrix<double, PointCount, RowsA>;
+    const Deviations da = deviationsA.transpose();
+    const Eigen::Matrix<double, PointCount, RowsB> weightedDb =
+        covarianceWeights_.asDiagonal() * deviationsB.transpose();
+    bool symmetric = false;
+    if constexpr (RowsA == RowsB) symmetric = &a == &b && &aMean == &bMean;
+    for (Index j = 0; j < result.cols(); ++j) {
+      for (Index i = symmetric ? j : 0; i < result.rows(); ++i) {
+        result(i, j) = da.col(i).dot(weightedDb.col(j));
+        if (symmetric) result(j, i) = result(i, j);
+      }
+    }
+  } else {
+    const Points<RowsA> weighted = deviationsA * covarianceWeights_.asDiagonal();
+    result.noalias() = weighted * deviationsB.transpose();
+  }
+}
+
+template <int N>
+void UnscentedTransform<N>::fillPoints(const Vector<N>& mean, const Matrix<N, N>& root,
+                                       Points<N>& points) const {
+  points.resize(n_, 2 * n_ + 1);
+  points.col(0) = mean;
+  // Fixed-size column blocks when N is known: a run-time-sized block is several times slower.
+  points.template middleCols<N>(1, n_) = root.colwise() + mean;
+  points.template middleCols<N>(1 + n_, n_) = (-root).colwise() + mean;
+}
+
+// The transform depends only on the sizes: it is compiled once in the library for the state
+// sizes 1..7 and measurement sizes 1..6 (cmake/sigma_point_steps.cpp.in), so that a node's
+// translation unit does not instantiate it again. The grid stops at 7 states: no shipped
+// sigma-point or particle configuration has more, and each further state size costs about
+// half a minute and over a gigabyte to compile. Other sizes instantiate it where they use it.
+//
+// The sums over points of a state's N rows, and of a measurement's M rows with M != N.
+#define SF_ESTIMATION_TRANSFORM_MEAN(N, R)                                                        \
+  template void UnscentedTransform<N>::mean<R>(const Points<R>&, Vector<R>&, const AngleMask<R>&) \
+      const;
+#define SF_ESTIMATION_TRANSFORM_COVARIANCE(N, A, B)                                          \
+  template void UnscentedTransform<N>::crossCovariance<A, B>(                                \
+      const Points<A>&, const Vector<A>&, const Points<B>&, const Vector<B>&, Matrix<A, B>&, \
+      const AngleMask<A>&, const AngleMask<B>&) const;
+#define SF_ESTIMATION_TRANSFORM_STATE_ROWS(N) \
+  SF_ESTIMATION_TRANSFORM_MEAN(N, N) SF_ESTIMATION_TRANSFORM_COVARIANCE(N, N, N)
+#define SF_ESTIMATION_TRANSFORM_ROWS(N, M) \
+  SF_ESTIMATION_TRANSFORM_MEAN(N, M)       \
+  SF_ESTIMATION_TRANSFORM_COVARIANCE(N, M, M) SF_ESTIMATION_TRANSFORM_COVARIANCE(N, N, M)
+#ifndef SF_ESTIMATION_INSTANTIATING_SIGMA_POINT_STEPS
+// Declared for every M in 1..6: a repeated explicit instantiation declaration (M = N) is
+// allowed, unlike a repeated definition.
+#define SF_ESTIMATION_EXTERN_TRANSFORM_ROWS(N, M)                                      \
+  extern SF_ESTIMATION_TRANSFORM_MEAN(N, M) extern SF_ESTIMATION_TRANSFORM_COVARIANCE( \
+      N, M, M) extern SF_ESTIMATION_TRANSFORM_COVARIANCE(N, N, M)
+#define SF_ESTIMATION_EXTERN_TRANSFORM(N)                                                      \
+  extern template class UnscentedTransform<N>;                                                 \
+  extern SF_ESTIMATION_TRANSFORM_MEAN(N, N) extern SF_ESTIMATION_TRANSFORM_COVARIANCE(N, N, N) \
+      SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_EXTERN_TRANSFORM_ROWS, N)
+SF_ESTIMATION_EXTERN_TRANSFORM(1)
+SF_ESTIMATION_EXTERN_TRANSFORM(2)
+SF_ESTIMATION_EXTERN_TRANSFORM(3)
+SF_ESTIMATION_EXTERN_TRANSFORM(4)
+SF_ESTIMATION_EXTERN_TRANSFORM(5)
+SF_ESTIMATION_EXTERN_TRANSFORM(6)
+SF_ESTIMATION_EXTERN_TRANSFORM(7)
+#undef SF_ESTIMATION_EXTERN_TRANSFORM
+#undef SF_ESTIMATION_EXTERN_TRANSFORM_ROWS
+#endif
 
 }  // namespace estimation

@@ -192,55 +192,7 @@ class CovarianceSquareRoot {
                            ", got " + std::to_string(covariance.rows()) + "x" +
                            std::to_string(covariance.cols()));
     }
-    if (!covariance.allFinite()) {
-      throw NumericalError("covariance contains a non-finite value");
-    }
-    const double scale = n == 0 ? 0.0 : covariance.diagonal().cwiseAbs().maxCoeff();
-    const double tolerance = kRelativeTolerance * scale;
-    for (Index row = 0; row < n; ++row) {
-      for (Index col = 0; col < row; ++col) {
-        if (std::abs(covariance(row, col) - covariance(col, row)) > tolerance) {
-          throw NumericalError("covariance is not symmetric: entry (" + std::to_string(row) + "," +
-                               std::to_string(col) + ") differs from its transpose");
-        }
-      }
-    }
-    if (n == 0) return;
-
-    ldlt_.compute(covariance);  // only scratch changes before the checks below pass
-    if (ldlt_.info() != Eigen::Success) {
-      throw NumericalError("covariance is not positive semi-definite (LDLT factorisation failed)");
-    }
-    const auto& d = ldlt_.vectorD();
-    const auto& packed = ldlt_.matrixLDLT();  // strictly lower part holds L
-    for (Index k = 0; k < n; ++k) {
-      if (!std::isfinite(d(k))) {
-        throw NumericalError("covariance factorisation produced a non-finite pivot");
-      }
-      if (d(k) < -tolerance) {
-        throw NumericalError("covariance is not positive semi-definite: LDLT pivot " +
-                             std::to_string(d(k)) + " is negative");
-      }
-      if (d(k) > 0.0 && !packed.col(k).tail(n - k - 1).allFinite()) {
-        throw NumericalError("covariance factorisation produced a non-finite factor");
-      }
-    }
-
-    // Commit. Columns with a zero (or clamped) pivot contribute nothing to P, so they are
-    // zeroed instead of multiplied: L below a rounding-size pivot may be huge or infinite.
-    for (Index k = 0; k < n; ++k) {
-      factor_.col(k).head(k).setZero();
-      if (d(k) > 0.0) {
-        const double root = std::sqrt(d(k));
-        factor_(k, k) = root;
-        factor_.col(k).tail(n - k - 1) = root * packed.col(k).tail(n - k - 1);
-      } else {
-        factor_.col(k).tail(n - k).setZero();
-      }
-    }
-    transpositions_ = ldlt_.transpositionsP();
-    matrix_ = factor_;
-    matrix_ = transpositions_.transpose() * matrix_;  // row swaps in place, no temporary
+    factorise(covariance);  // a MatrixType binds directly, anything else is evaluated once
   }
 
   /// v <- S * v = Pi^T (L sqrt(D) v), without a temporary: row k of the triangular factor
@@ -265,7 +217,78 @@ class CovarianceSquareRoot {
   MatrixType factor_;             // L sqrt(D), in pivoted order
   typename Eigen::LDLT<MatrixType>::TranspositionType transpositions_;  // Pi
   MatrixType matrix_;                                                   // Pi^T L sqrt(D)
+
+  // compute() of a covariance of the right size; out of the class body, so that the library's
+  // instances (below) are used instead of compiling it again.
+  void factorise(const MatrixType& covariance);
 };
+
+template <int N>
+void CovarianceSquareRoot<N>::factorise(const MatrixType& covariance) {
+  const Index n = size();
+  if (!covariance.allFinite()) {
+    throw NumericalError("covariance contains a non-finite value");
+  }
+  const double scale = n == 0 ? 0.0 : covariance.diagonal().cwiseAbs().maxCoeff();
+  const double tolerance = kRelativeTolerance * scale;
+  for (Index row = 0; row < n; ++row) {
+    for (Index col = 0; col < row; ++col) {
+      if (std::abs(covariance(row, col) - covariance(col, row)) > tolerance) {
+        throw NumericalError("covariance is not symmetric: entry (" + std::to_string(row) + "," +
+                             std::to_string(col) + ") differs from its transpose");
+      }
+    }
+  }
+  if (n == 0) return;
+
+  ldlt_.compute(covariance);  // only scratch changes before the checks below pass
+  if (ldlt_.info() != Eigen::Success) {
+    throw NumericalError("covariance is not positive semi-definite (LDLT factorisation failed)");
+  }
+  const auto& d = ldlt_.vectorD();
+  const auto& packed = ldlt_.matrixLDLT();  // strictly lower part holds L
+  for (Index k = 0; k < n; ++k) {
+    if (!std::isfinite(d(k))) {
+      throw NumericalError("covariance factorisation produced a non-finite pivot");
+    }
+    if (d(k) < -tolerance) {
+      throw NumericalError("covariance is not positive semi-definite: LDLT pivot " +
+                           std::to_string(d(k)) + " is negative");
+    }
+    if (d(k) > 0.0 && !packed.col(k).tail(n - k - 1).allFinite()) {
+      throw NumericalError("covariance factorisation produced a non-finite factor");
+    }
+  }
+
+  // Commit. Columns with a zero (or clamped) pivot contribute nothing to P, so they are
+  // zeroed instead of multiplied: L below a rounding-size pivot may be huge or infinite.
+  for (Index k = 0; k < n; ++k) {
+    factor_.col(k).head(k).setZero();
+    if (d(k) > 0.0) {
+      const double root = std::sqrt(d(k));
+      factor_(k, k) = root;
+      factor_.col(k).tail(n - k - 1) = root * packed.col(k).tail(n - k - 1);
+    } else {
+      factor_.col(k).tail(n - k).setZero();
+    }
+  }
+  transpositions_ = ldlt_.transpositionsP();
+  matrix_ = factor_;
+  matrix_ = transpositions_.transpose() * matrix_;  // row swaps in place, no temporary
+}
+
+// The factorisation (a pivoted LDLT) is compiled once in the library for the state sizes of
+// the sigma-point and particle filters, 1..7 (sigma_point_steps.cpp.in, unscented_transform.hpp);
+// other sizes instantiate it where they use it.
+#ifndef SF_ESTIMATION_INSTANTIATING_SIGMA_POINT_STEPS
+extern template class CovarianceSquareRoot<1>;
+extern template class CovarianceSquareRoot<2>;
+extern template class CovarianceSquareRoot<3>;
+extern template class CovarianceSquareRoot<4>;
+extern template class CovarianceSquareRoot<5>;
+extern template class CovarianceSquareRoot<6>;
+extern template class CovarianceSquareRoot<7>;
+#endif
 
 /// Returns S with S * S^T = P for a positive semi-definite P (see CovarianceSquareRoot).
 template <class Derived>
