@@ -69,6 +69,8 @@ CASES = [
      "parameter ~measurement_noise_covariance row 1 column 1: 1e+101 is not a finite number"),
     ("initial_error_covariance", [[1e200, 0], [0, 1]],
      "parameter ~initial_error_covariance row 0 column 0: 1e+200 is not a finite number"),
+    ("nis_tolerance", 0.5, "parameter ~nis_tolerance: expected a factor from 1 (the "
+     "chi-square band alone) to 100, found 0.5"),
     ("diagnostic_period", 1e-9, "parameter ~diagnostic_period: expected a number of seconds "
      "from 0.01 to 3600"),
     ("frame_id", "", "parameter ~frame_id: '' is not a tf2 frame name"),

@@ -263,7 +263,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   std::optional<double> periodOverrideMs;
   std::optional<sf_filter::FilterParameters> fileParameters;
   double maxFutureStampMs = sf_filter::kDefaultMaxFutureStampMs;
-  int nisWindow = sf_filter::FaultSettings{}.nisWindow;  // ~nis_window, as the node's
+  sf_filter::FaultSettings nis;  // ~nis_window, ~nis_tolerance, as the node's
   std::map<std::string, std::string> remaps;
   std::vector<geometry_msgs::TransformStamped> staticTransforms;
   bool tune = false;
@@ -284,7 +284,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       sf_filter::loadInputParameters(*params, inputs, lagMs, can);
       const sf_filter::FaultSettings faults = sf_filter::loadFaultParameters(*params, inputs, can);
       maxFutureStampMs = faults.maxFutureStampMs;
-      nisWindow = faults.nisWindow;
+      nis = faults;
       const sf_filter::OutputSettings out = sf_filter::loadOutputParameters(*params);
       options.frameId = out.frameId;
       options.childFrameId = out.childFrameId;
@@ -473,7 +473,8 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       std::optional<ReplayAlignerRotation> rotation;
       sf_filter::FusionCoreOptions engineOptions =
           coreOptions(periodMs, inputs, lagMs, maxFutureStampMs);
-      engineOptions.nisWindow = static_cast<std::size_t>(nisWindow);
+      engineOptions.nisWindow = sf_filter::nisWindowPeriods(nis, periodMs);
+      engineOptions.nisTolerance = nis.nisTolerance;
       sf_filter::EventLog events;
       if (tune) {
         // The cost sums over the values that reach the filter: a gate would let the optimiser
@@ -491,7 +492,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                     << std::endl;
         }
         if (engineOptions.nisWindow == 0)
-          engineOptions.nisWindow = sf_filter::FaultSettings{}.nisWindow;
+          engineOptions.nisWindow = sf_filter::nisWindowPeriods({}, periodMs);
       }
       sf_filter::BagReplay replay(def.makeEngine(parameters, engineOptions),
                                   describe(def, baseFrame), options);
@@ -617,7 +618,8 @@ class StartedFusionNode final : public sf_filter::FusionNodeInstance {
         sf_filter::loadFaultParameters(params, inputs, def.capabilities);
     auto options =
         coreOptions(parameters.estimation_period_ms, inputs, lagMs, faults.maxFutureStampMs);
-    options.nisWindow = static_cast<std::size_t>(faults.nisWindow);
+    options.nisWindow = sf_filter::nisWindowPeriods(faults, parameters.estimation_period_ms);
+    options.nisTolerance = faults.nisTolerance;
     const std::string baseFrame = aligner_ ? aligner_->baseFrame() : def.baseFrame;
     node_.emplace(nh, pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
                   aligner_ ? &*aligner_ : nullptr, faults.diagnosticPeriod,

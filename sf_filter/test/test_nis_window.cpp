@@ -16,6 +16,7 @@
 
 #include <boost/math/distributions/chi_squared.hpp>
 
+#include "sf_filter/core/innovation_record.hpp"
 #include "sf_filter/core/nis_correlation.hpp"
 #include "sf_filter/core/nis_window.hpp"
 
@@ -102,12 +103,14 @@ TEST(NisWindow, HandComputedEffectivePeriodsGiveTheScaledChiSquareBand) {
 /// The fraction of `windows` disjoint full windows of kWindow periods flagged, with the NIS
 /// of each period from `next` (m degrees of freedom); with `independentBand`, against the
 /// bounds for independent periods, chi2^-1(q; D) / K (Boost's quantiles, not the code under
-/// test); `autocorrelationHorizon` as NisWindow's (default: ten windows). The window slides through
+/// test); `autocorrelationHorizon` and `tolerance` as NisWindow's (default: ten windows; the band
+/// alone). The window slides through
 /// all periods as the node's does; the verdicts of every kWindow-th period (whose windows share no
 /// period) are counted.
 double flaggedFraction(const std::function<double()>& next, int m, int windows,
-                       bool independentBand, double autocorrelationHorizon = -1.0) {
-  sf_filter::NisWindow window(kWindow, autocorrelationHorizon);
+                       bool independentBand, double autocorrelationHorizon = -1.0,
+                       double tolerance = 1.0) {
+  sf_filter::NisWindow window(kWindow, autocorrelationHorizon, tolerance);
   const boost::math::chi_squared chi2(static_cast<double>(m * kWindow));
   const double lower = boost::math::quantile(chi2, kAlpha / 2) / kWindow,
                upper = boost::math::quantile(chi2, 1 - kAlpha / 2) / kWindow;
@@ -188,15 +191,53 @@ TEST(NisWindow, FlagsCorrelatedConsistentValuesAboutAsOftenAsIndependentOnes) {
   }
 }
 
+TEST(NisWindow, ToleranceCountsOnlyAMeanFartherThanTheFactorFromItsExpectedValue) {
+  // The hand-computed windows of the first test scaled by s: the autocorrelation (1/19), nu
+  // and so the bounds do not change with s, the mean is s times the expected value. One entry
+  // per period: bounds [8.230746, 31.52638] / 18 = [0.4573, 1.7515], expected mean 1.
+  const auto window = [](double s, int dof, double tolerance) {
+    sf_filter::NisWindow w(20, 0.0, tolerance);
+    for (int k = 0; k < 20; ++k) w.add(k % 4 < 2 ? 0.0 : 2.0 * dof * s, dof);
+    return w;
+  };
+  EXPECT_NEAR(window(1.9, 1, 2.0).bounds().upper, 31.52638 / 18, 1e-6);
+  EXPECT_EQ(window(1.9, 1, 2.0).expectedMean(), 1.0);
+  // 1.9: above the band, but within a factor 2; 2.1 beyond it.
+  EXPECT_TRUE(window(1.9, 1, 1.0).inconsistent());
+  EXPECT_FALSE(window(1.9, 1, 2.0).inconsistent());
+  EXPECT_TRUE(window(2.1, 1, 2.0).inconsistent());
+  EXPECT_FALSE(window(2.1, 1, 3.0).inconsistent());
+  // Below: two entries per period, bounds 2 [21.33588, 54.43729] / 36 = [1.1853, 3.0243]
+  // around the expected 2. s = 0.55 (mean 1.1) is below the band, within a factor 2; 0.45
+  // (mean 0.9) beyond it.
+  EXPECT_NEAR(window(0.55, 2, 2.0).bounds().lower, 2 * 21.33588 / 36, 1e-6);
+  EXPECT_TRUE(window(0.55, 2, 1.0).inconsistent());
+  EXPECT_FALSE(window(0.55, 2, 2.0).inconsistent());
+  EXPECT_TRUE(window(0.45, 2, 2.0).inconsistent());
+  // Inside the band nothing is flagged, whatever the factor.
+  EXPECT_FALSE(window(1.0, 1, 1.0).inconsistent());
+  // A series counts its periods by the same rule: 20 periods at s = 1.9, one judged.
+  for (double tolerance : {1.0, 2.0}) {
+    sf_filter::NisSeries series(20, 1, tolerance);
+    for (int k = 0; k < 20; ++k) series.add(k % 4 < 2 ? 0.0 : 3.8, 1);
+    EXPECT_EQ(series.judgedPeriods(), 1u);
+    EXPECT_EQ(series.inconsistentPeriods(), tolerance == 1.0 ? 1u : 0u);
+  }
+}
+
 TEST(NisWindow, FlagsAnROffByAFactorOfThreeNearlyAlways) {
-  // White innovations, S three times too large (NIS mean m/3) or too small (3m).
-  for (int m : {1, 3}) {
-    for (double scale : {1.0 / 3.0, 3.0}) {
-      std::mt19937_64 random(31 + m);
-      std::chi_squared_distribution<double> chi2(m);
-      const double rate =
-          flaggedFraction([&] { return scale * chi2(random); }, m, kWindows / 4, false);
-      EXPECT_GT(rate, 0.99) << "m = " << m << ", scale = " << scale;
+  // White innovations, S three times too large (NIS mean m/3) or too small (3m); with the
+  // chi-square band alone and with the node's tolerance factor 2 (which a factor 3 exceeds).
+  for (double tolerance : {1.0, 2.0}) {
+    for (int m : {1, 3}) {
+      for (double scale : {1.0 / 3.0, 3.0}) {
+        std::mt19937_64 random(31 + m);
+        std::chi_squared_distribution<double> chi2(m);
+        const double rate = flaggedFraction([&] { return scale * chi2(random); }, m, kWindows / 4,
+                                            false, -1.0, tolerance);
+        EXPECT_GT(rate, 0.99) << "m = " << m << ", scale = " << scale
+                              << ", tolerance = " << tolerance;
+      }
     }
   }
 }

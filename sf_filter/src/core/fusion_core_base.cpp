@@ -90,7 +90,8 @@ FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, I
       counters_(static_cast<std::size_t>(inputs)),
       entries_(static_cast<std::size_t>(inputs)),
       control_(Eigen::VectorXd::Zero(controls)),
-      innovations_(canPredict ? options_.nisWindow : 0, static_cast<std::size_t>(inputs)) {
+      innovations_(canPredict ? options_.nisWindow : 0, static_cast<std::size_t>(inputs),
+                   options_.nisTolerance) {
   for (Index i = 0; i < inputs; ++i) {
     ring_->aligners.emplace_back(inputOptions(i).alignment, inputOptions(i).angle);
   }
@@ -478,6 +479,9 @@ const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Ind
   }
   if (o.nisWindow > 1000000) {
     throw estimation::ParameterError("NIS window is longer than 1e6 periods");
+  }
+  if (!(o.nisTolerance >= 1.0 && o.nisTolerance <= FusionCoreOptions::kMaxNisTolerance)) {
+    throw estimation::ParameterError("NIS tolerance must be a factor from 1 to 100");
   }
   if (o.maxQueuedPeriods > kMaxQueuedLimit) {
     throw estimation::ParameterError("maximum queued periods must be at most " +

@@ -4,8 +4,8 @@
 
 namespace sf_filter {
 
-NisSeries::NisSeries(std::size_t window, int maxDofPerPeriod)
-    : window_(window), autocorrelation_(0.0) {
+NisSeries::NisSeries(std::size_t window, int maxDofPerPeriod, double tolerance)
+    : window_(window, -1.0, tolerance), autocorrelation_(0.0) {
   const std::size_t slots = window * static_cast<std::size_t>(maxDofPerPeriod) *
                                 static_cast<std::size_t>(kEffectiveDofSteps) +
                             1;
@@ -40,8 +40,10 @@ void NisSeries::add(double nis, int dof) {
   ++periods_;
   if (!window_.full()) return;
   ++judged_;
-  const NisBounds b = windowBounds();
-  if (window_.mean() < b.lower || window_.mean() > b.upper) ++inconsistent_;
+  if (NisWindow::outside(window_.mean(), windowBounds(), window_.expectedMean(),
+                         window_.tolerance())) {
+    ++inconsistent_;
+  }
 }
 
 NisBounds NisSeries::bounds(double alpha) const {

@@ -21,6 +21,7 @@ struct FusionCoreOptions {
   static constexpr std::uint64_t kMaxCatchUpLimit = 100000;
   /// Upper bound of maxQueuedPeriods (the ring of open periods holds one slot per period).
   static constexpr std::uint64_t kMaxQueuedLimit = 100000;
+  static constexpr double kMaxNisTolerance = 100.0;
 
   double period = 0.1;  ///< estimation period [s], kMinPeriod .. kMaxPeriod
   /// A forward clock jump longer than this many periods is skipped (one estimate) instead
@@ -45,6 +46,9 @@ struct FusionCoreOptions {
   /// Periods over which the NIS is averaged (nis_window.hpp); 0: not computed. Costs one
   /// measurement prediction per period when no gate or FILL needs it anyway.
   std::size_t nisWindow = 0;
+  /// How far from its expected value a window's mean NIS outside its chi-square band must
+  /// also be to count as inconsistent: a factor >= 1 (nis_window.hpp; 1: the band alone).
+  double nisTolerance = 2.0;
   /// A step the estimator rejects (EstimationError) leaves the filter as it was: the period's
   /// estimate is the last good one, flagged Estimate::stepFailed (for the Kalman-type
   /// filters with its covariance inflated by Q: the period passed without a time update). Only

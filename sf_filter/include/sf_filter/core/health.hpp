@@ -170,10 +170,13 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
   }
   if (nis.inconsistent()) {
     const NisBounds bounds = nis.bounds();
-    s.raise(HealthLevel::Warn, "filter inconsistent: NIS mean " +
-                                   health_detail::format(nis.mean()) + " outside [" +
-                                   health_detail::format(bounds.lower) + ", " +
-                                   health_detail::format(bounds.upper) + "] (Q or R mistuned?)");
+    s.raise(HealthLevel::Warn,
+            "filter inconsistent: NIS mean " + health_detail::format(nis.mean()) + " outside [" +
+                health_detail::format(bounds.lower) + ", " + health_detail::format(bounds.upper) +
+                "] and more than a factor " + health_detail::format(nis.tolerance()) +
+                " from its expected " + health_detail::format(nis.expectedMean()) +
+                (nis.mean() > bounds.upper ? " (innovations larger than S: Q or R too small?)"
+                                           : " (innovations smaller than S: Q or R too large?)"));
   }
   if (steps > 0 && stepSeconds > e.period) {
     s.raise(HealthLevel::Warn, "estimation step takes longer than the period");
@@ -197,6 +200,8 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
       const NisBounds bounds = nis.bounds();
       s.add("NIS lower bound (2.5 %)", bounds.lower);
       s.add("NIS upper bound (97.5 %)", bounds.upper);
+      s.add("NIS expected mean", nis.expectedMean());
+      s.add("NIS tolerance factor", nis.tolerance());
     }
     s.add("NIS consistent", std::string(!nis.full()          ? "not judged (window not full)"
                                         : nis.inconsistent() ? "false"

@@ -26,8 +26,9 @@ namespace sf_filter {
 class NisSeries {
  public:
   /// `window`: periods of the sliding window (0: off); `maxDofPerPeriod`: the most measured
-  /// entries a period can have (the inputs it covers).
-  explicit NisSeries(std::size_t window = 0, int maxDofPerPeriod = 1);
+  /// entries a period can have (the inputs it covers); `tolerance`: the factor f of
+  /// NisWindow (1: the chi-square band alone).
+  explicit NisSeries(std::size_t window = 0, int maxDofPerPeriod = 1, double tolerance = 1.0);
 
   bool enabled() const { return window_.enabled(); }
   /// The NIS of one period with `dof` > 0 measured entries; once the window is full, the
@@ -48,6 +49,13 @@ class NisSeries {
   /// Two-sided bounds on mean() at level 1 - alpha, for the whole run (a window of all its
   /// periods, worth effectivePeriods()). Requires periods() > 0.
   NisBounds bounds(double alpha = 0.05) const;
+  /// The run's mean judged as a window is (NisWindow::inconsistent, with the window's
+  /// tolerance). Requires periods() > 0.
+  bool inconsistent(double alpha = 0.05) const {
+    return NisWindow::outside(mean(), bounds(alpha),
+                              static_cast<double>(dof_) / static_cast<double>(periods_),
+                              window_.tolerance());
+  }
   /// Periods with a full window, and those of them whose window mean lay outside its bounds
   /// (the diagnostics' "filter inconsistent" WARN).
   std::uint64_t judgedPeriods() const { return judged_; }
@@ -79,9 +87,11 @@ class NisSeries {
 
 class InnovationRecord {
  public:
-  /// `window`: the periods of the sliding window (0: nothing is recorded).
-  InnovationRecord(std::size_t window, std::size_t inputs)
-      : overall_(window, static_cast<int>(inputs)), inputs_(inputs, NisSeries(window, 1)) {}
+  /// `window`: the periods of the sliding window (0: nothing is recorded); `tolerance`:
+  /// NisWindow's factor f.
+  InnovationRecord(std::size_t window, std::size_t inputs, double tolerance = 1.0)
+      : overall_(window, static_cast<int>(inputs), tolerance),
+        inputs_(inputs, NisSeries(window, 1, tolerance)) {}
 
   bool enabled() const { return overall_.enabled(); }
   /// The period's innovation over its measured entries: NIS, its degrees of freedom, log det S.

@@ -24,6 +24,15 @@
 // value can be cached (innovation_record.hpp). A mean above the upper bound says the
 // innovations are larger than the filter believes (Q or R too small, or a wrong model); one
 // below it says the filter is too pessimistic (Q or R too large).
+//
+// Significant is not the same as large. On a real robot the noise is not stationary
+// (standstill, turns, a camera that sees the ball or not), and a window of a few seconds
+// drifts outside the band although the filter's S is right on average, while a noise off by
+// a few percent is "significant" over a long enough window. So a window counts as
+// inconsistent only when its mean is outside the band AND more than a tolerance factor f
+// away from its expected value D/K (below D/(K f) or above f D/K): f = 2 is a factor 1.4 on
+// the standard deviations, less than what tuning on a recording can claim (doc/tuning.md).
+// f = 1 is the chi-square test alone.
 #pragma once
 
 #include <cstddef>
@@ -64,10 +73,13 @@ class NisWindow {
   /// `periods`: the window length K (periods with at least one measured entry); 0 disables.
   /// `autocorrelationHorizon`: the periods the autocorrelation is estimated over
   /// (LagOneAutocorrelation; 0: since the start or clear()); by default
-  /// kAutocorrelationHorizonWindows windows.
-  explicit NisWindow(std::size_t periods = 0, double autocorrelationHorizon = -1.0)
+  /// kAutocorrelationHorizonWindows windows. `tolerance`: the factor f >= 1 a mean outside
+  /// the band must also be away from its expected value to count (above; 1: the band alone).
+  explicit NisWindow(std::size_t periods = 0, double autocorrelationHorizon = -1.0,
+                     double tolerance = 1.0)
       : nis_(periods, 0.0),
         dof_(periods, 0),
+        tolerance_(tolerance),
         autocorrelation_(autocorrelationHorizon >= 0.0
                              ? autocorrelationHorizon
                              : kAutocorrelationHorizonWindows * static_cast<double>(periods)) {}
@@ -122,11 +134,22 @@ class NisWindow {
   /// chi-square quantiles cost a second of every configuration's compile time.
   NisBounds bounds(double alpha = 0.05) const;
 
-  /// Whether the window is full and its mean lies outside bounds(alpha).
+  /// D/K: the mean NIS of a consistent filter over the window. Requires size() > 0.
+  double expectedMean() const { return static_cast<double>(dofSum_) / static_cast<double>(size_); }
+  /// The tolerance factor f (above).
+  double tolerance() const { return tolerance_; }
+
+  /// Whether the window is full and its mean lies outside bounds(alpha) and more than the
+  /// tolerance factor away from expectedMean().
   bool inconsistent(double alpha = 0.05) const {
-    if (!full()) return false;
-    const NisBounds b = bounds(alpha);
-    return mean() < b.lower || mean() > b.upper;
+    return full() && outside(mean(), bounds(alpha), expectedMean(), tolerance_);
+  }
+
+  /// Whether `mean` is outside `bounds` and outside [expected / tolerance, tolerance *
+  /// expected]: the rule of inconsistent(), also for a whole run's mean.
+  static bool outside(double mean, const NisBounds& bounds, double expected, double tolerance) {
+    return (mean < bounds.lower && mean * tolerance < expected) ||
+           (mean > bounds.upper && mean > tolerance * expected);
   }
 
   void clear() {
@@ -143,6 +166,7 @@ class NisWindow {
   std::size_t size_ = 0, next_ = 0;
   double sum_ = 0.0;
   long dofSum_ = 0;
+  double tolerance_ = 1.0;
   LagOneAutocorrelation autocorrelation_;
 };
 

@@ -22,6 +22,7 @@
 #include <xmlrpcpp/XmlRpcValue.h>
 #include <Eigen/Core>
 
+#include "sf_filter/core/fusion_core_options.hpp"
 #include "sf_filter/core/input_options.hpp"
 #include "sf_filter/core/input_overrides.hpp"
 
@@ -357,15 +358,35 @@ inline void loadInputParameters(const ParameterSource& pnh, std::vector<InputOpt
 /// The node's settings for faults and diagnostics beyond the per-input options.
 struct FaultSettings {
   double maxFutureStampMs = kDefaultMaxFutureStampMs;  ///< ~max_future_stamp [s] in ms
-  int nisWindow = 100;                                 ///< ~nis_window [periods], 0: off
-  double diagnosticPeriod = 1.0;                       ///< ~diagnostic_period [s]
+  /// ~nis_window [periods], 0: off; not set (-1): kDefaultNisWindowSeconds of periods
+  /// (nisWindowPeriods).
+  int nisWindow = -1;
+  double nisTolerance = 2.0;      ///< ~nis_tolerance, the factor of nis_window.hpp
+  double diagnosticPeriod = 1.0;  ///< ~diagnostic_period [s]
 };
+
+/// The NIS window's default span. Shorter windows see the regimes of a real robot's noise
+/// (standstill, turns, bursts of a slow sensor) one at a time: on the shipped bags, tuned,
+/// windows of 15 to 25 s stay within a factor 2 of the expected NIS (doc/tuning.md).
+constexpr double kDefaultNisWindowSeconds = 30.0;
+constexpr int kMinDefaultNisWindow = 100;
+
+/// The window in periods: ~nis_window if set, else kDefaultNisWindowSeconds of periods of
+/// `periodMs`, at least kMinDefaultNisWindow.
+inline std::size_t nisWindowPeriods(const FaultSettings& settings, double periodMs) {
+  if (settings.nisWindow >= 0) return static_cast<std::size_t>(settings.nisWindow);
+  const double periods = std::round(kDefaultNisWindowSeconds * 1000.0 / periodMs);
+  return static_cast<std::size_t>(
+      std::clamp(periods, static_cast<double>(kMinDefaultNisWindow), 1000000.0));
+}
 
 /// Applies the fault parameters (doc/filter_node.md, "Diagnostics"):
 ///   ~input_timeout      one timeout per input in s, 0 for none
 ///   ~input_range        one [minimum, maximum] per input, [] for none
 ///   ~max_future_stamp   s, 0 .. 60, a stamp may be ahead of the clock (.inf: no check)
-///   ~nis_window         periods >= 0 the NIS is averaged over (0: not computed)
+///   ~nis_window         periods >= 0 the NIS is averaged over (0: not computed; default
+///                       30 s of periods)
+///   ~nis_tolerance      factor 1 .. 100 (nis_window.hpp), default 2
 ///   ~diagnostic_period  s, 0.01 .. 3600, between diagnostic messages
 inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
                                          std::vector<InputOptions>& inputs,
@@ -413,6 +434,15 @@ inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
   if (readScalarParameter(pnh, "nis_window", settings.nisWindow) &&
       !(settings.nisWindow >= 0 && settings.nisWindow <= 1000000)) {
     refuse("nis_window", "expected a number of periods from 0 (off) to 1000000");
+  }
+  if (readScalarParameter(pnh, "nis_tolerance", settings.nisTolerance) &&
+      !(settings.nisTolerance >= 1.0 &&
+        settings.nisTolerance <= FusionCoreOptions::kMaxNisTolerance)) {
+    char found[32];
+    std::snprintf(found, sizeof found, "%g", settings.nisTolerance);
+    refuse(
+        "nis_tolerance",
+        std::string("expected a factor from 1 (the chi-square band alone) to 100, found ") + found);
   }
   if (readScalarParameter(pnh, "diagnostic_period", settings.diagnosticPeriod) &&
       !(settings.diagnosticPeriod >= kMinDiagnosticPeriodSeconds &&
@@ -503,6 +533,7 @@ inline const std::vector<std::string>& knownParameters() {
                                                  "input_range",
                                                  "max_future_stamp",
                                                  "nis_window",
+                                                 "nis_tolerance",
                                                  "diagnostic_period",
                                                  "frame_id",
                                                  "child_frame_id",

@@ -15,10 +15,22 @@
 
 namespace sf_filter {
 
-/// "consistent", or which side of the bounds the mean lies on and what that suggests.
-inline std::string nisVerdict(double mean, const NisBounds& b) {
-  if (mean > b.upper) return "inconsistent, above (innovations larger than S: Q or R too small?)";
-  if (mean < b.lower) return "inconsistent, below (innovations smaller than S: Q or R too large?)";
+/// "consistent", or which side of the bounds the mean lies on and what that suggests; a mean
+/// outside the bounds but within the tolerance factor of its expected value (nis_window.hpp)
+/// is "consistent within the tolerance", which the node's diagnostics report as OK.
+inline std::string nisVerdict(const NisSeries& series) {
+  const NisBounds b = series.bounds();
+  const double mean = series.mean();
+  if (series.inconsistent()) {
+    return mean > b.upper ? "inconsistent, above (innovations larger than S: Q or R too small?)"
+                          : "inconsistent, below (innovations smaller than S: Q or R too large?)";
+  }
+  if (mean < b.lower || mean > b.upper) {
+    char text[96];
+    std::snprintf(text, sizeof text, "consistent within the tolerance factor %.3g (%s the bounds)",
+                  series.window().tolerance(), mean > b.upper ? "above" : "below");
+    return text;
+  }
   return "consistent";
 }
 
@@ -40,7 +52,7 @@ inline void printNisLine(std::ostream& out, const std::string& node, const std::
                 "window of %zu periods inconsistent in %llu of %llu judged periods",
                 series.mean(), static_cast<unsigned long long>(series.periods()), expected,
                 series.autocorrelation(), series.effectivePeriods(), b.lower, b.upper,
-                nisVerdict(series.mean(), b).c_str(), series.window().capacity(),
+                nisVerdict(series).c_str(), series.window().capacity(),
                 static_cast<unsigned long long>(series.inconsistentPeriods()),
                 static_cast<unsigned long long>(series.judgedPeriods()));
   out << text << "\n";
