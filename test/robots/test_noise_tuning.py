@@ -77,12 +77,16 @@ def kalman_cost(readings, q, r):
 
 
 def nis_lines(stdout):
-    """{label: (mean, verdict)} of the replay's NIS lines."""
+    """{label: (mean, verdict)} of the replay's NIS lines; the verdict "consistent" (inside
+    the chi-square bounds), "tolerated" (outside them, within the tolerance factor of the
+    expected mean) or "inconsistent"."""
     out = {}
     for line in stdout.splitlines():
-        m = re.search(r": NIS (.+?): mean (\S+) over .*?\]: (consistent|inconsistent)", line)
+        m = re.search(r": NIS (.+?): mean (\S+) over .*?\]: "
+                      r"(consistent within the tolerance|consistent|inconsistent)", line)
         if m and "(tuned)" not in line.split(": NIS")[0]:
-            out[m.group(1)] = (float(m.group(2)), m.group(3))
+            verdict = "tolerated" if "within" in m.group(3) else m.group(3)
+            out[m.group(1)] = (float(m.group(2)), verdict)
     return out
 
 
@@ -154,7 +158,9 @@ class NoiseTuningTest(unittest.TestCase):
         labels = ["all inputs", "input 0 (cart/position point.x)", "input 1 (cart/speed vector.x)"]
         for label in labels:
             self.assertEqual(got[label][1], "consistent", (label, tuned.stdout))
-        self.assertEqual(before["all inputs"][1], "inconsistent", header.stdout)
+        # the header's NIS is outside its bounds (mean 1.75 against 2: within the node's
+        # tolerance factor 2, so the diagnostics would not warn)
+        self.assertNotEqual(before["all inputs"][1], "consistent", header.stdout)
         # expected means: 2 per period for both inputs, 1 for each alone
         self.assertAlmostEqual(got["all inputs"][0], 2.0, delta=0.15)
 

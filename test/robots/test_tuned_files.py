@@ -1,0 +1,124 @@
+"""The tuned parameter files shipped in config/tuned/ (doc/tuning.md, "The shipped headers'
+own NIS check"): one per shipped header and the bag it is meant for, written by `--tune`.
+
+For every file:
+- it is what its own command writes: the command in its second comment line is rerun
+  (except for the soccer file, whose identification replays a 60 s bag at 1 kHz 1562 times,
+  155 s) and must give the same matrices;
+- the header's values replayed on the bag are inconsistent by the node's rule (the run's
+  verdict, and every judged window of the node's default ~nis_window), so the check is able
+  to fail on these bags;
+- the file's values replayed on the bag pass it: the run's verdict is not "inconsistent" and
+  no window of the default ~nis_window is flagged, i.e. the node's diagnostics would report
+  OK for the NIS from the first full window to the end of the bag.
+"""
+
+import glob
+import os
+import re
+import shlex
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import yaml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
+sys.dont_write_bytecode = True
+import pioneer_nodes  # noqa: E402  (devel-space lookup)
+
+TUNED_DIR = os.path.join(REPO, "config", "tuned")
+SLOW_TO_TUNE = {"soccer_kf_on_soccer_seed1.yaml"}
+NIS_ALL = re.compile(r"^(\S+): NIS all inputs: mean (\S+) over .*\]: (.+?); window of (\d+) "
+                     r"periods inconsistent in (\d+) of (\d+) judged periods$", re.M)
+
+
+def executable(name):
+    lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_nodes.find_lib_dir(name)
+    exe = os.path.join(lib_dir or "", name)
+    if not os.access(exe, os.X_OK):
+        raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel space)" % name)
+    return exe
+
+
+def run(args):
+    proc = subprocess.run(args, cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          universal_newlines=True, timeout=900)
+    if proc.returncode != 0:
+        raise AssertionError("%s: exit %d\n%s%s" % (" ".join(args), proc.returncode,
+                                                    proc.stdout, proc.stderr))
+    return proc.stdout
+
+
+def nis_all(stdout):
+    """(verdict, window, flagged, judged) of the replay's "NIS all inputs" line."""
+    m = NIS_ALL.search(stdout)
+    if not m:
+        raise AssertionError("no NIS line in:\n" + stdout)
+    return m.group(3), int(m.group(4)), int(m.group(5)), int(m.group(6))
+
+
+def tuned_files():
+    files = sorted(glob.glob(os.path.join(TUNED_DIR, "*_on_*.yaml")))
+    if not files:
+        raise AssertionError("no tuned files in " + TUNED_DIR)
+    return files
+
+
+def command_of(path):
+    """The `rosrun sf_pkg NODE --tune BAG --out FILE ...` of the file's comment, as a list."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    assert lines[1].startswith("# rosrun sf_pkg "), (path, lines[1])
+    return shlex.split(lines[1][2:])
+
+
+class TunedFilesTest(unittest.TestCase):
+    def test_every_file_is_what_its_command_writes(self):
+        with tempfile.TemporaryDirectory(prefix="sf_tuned_files_") as tmp:
+            for path in tuned_files():
+                name = os.path.basename(path)
+                words = command_of(path)
+                node, bag = words[2], words[4]
+                config, bag_name = name[:-len(".yaml")].split("_on_")
+                with self.subTest(file=name):
+                    self.assertEqual(node, "sf_" + config)
+                    self.assertEqual(bag, "bags/%s.bag" % bag_name)
+                    self.assertEqual(words[3], "--tune")
+                    self.assertEqual(words[5:7], ["--out", "config/tuned/" + name])
+                    if name in SLOW_TO_TUNE:
+                        continue
+                    out = os.path.join(tmp, name)
+                    run([executable(node), "--tune", bag, "--out", out] + words[7:])
+                    with open(path) as f:
+                        shipped = yaml.safe_load(f)
+                    with open(out) as f:
+                        again = yaml.safe_load(f)
+                    self.assertEqual(sorted(shipped), sorted(again))
+                    for key, value in shipped.items():
+                        self.assertEqual(again[key], value, key)
+
+    def test_header_values_warn_and_tuned_values_pass_the_nis_check(self):
+        for path in tuned_files():
+            name = os.path.basename(path)
+            words = command_of(path)
+            exe, bag = executable(words[2]), words[4]
+            with self.subTest(file=name):
+                verdict, window, flagged, judged = nis_all(run([exe, "--replay", bag]))
+                self.assertTrue(verdict.startswith("inconsistent"), verdict)
+                self.assertGreater(judged, 0)
+                self.assertEqual(flagged, judged)
+                verdict, window, flagged, judged = nis_all(
+                    run([exe, "--replay", bag, "--params", path]))
+                print("%s: tuned: %s; window of %d periods flagged in %d of %d" %
+                      (name, verdict, window, flagged, judged))
+                self.assertFalse(verdict.startswith("inconsistent"), verdict)
+                self.assertGreater(judged, 0)
+                self.assertEqual(flagged, 0)
+
+
+if __name__ == "__main__":
+    unittest.main()
