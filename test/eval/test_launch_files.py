@@ -1,7 +1,8 @@
 """The shipped launch files as roslaunch reads them (`roslaunch --nodes`, `--dump-params`,
 `--args`; no master, no node started): filter slots left out with `none`, a repeated
-configuration started once, /use_sim_time global inside a namespaced include, and no
-required player (whose normal end roslaunch reports as a red error)."""
+configuration started once, /use_sim_time global inside a namespaced include, no
+required player (whose normal end roslaunch reports as a red error), and the tuned noise of
+config/tuned/ loaded into the configurations that have a file for the shipped bag."""
 
 import glob
 import os
@@ -9,6 +10,8 @@ import re
 import subprocess
 import tempfile
 import unittest
+
+import yaml
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -53,6 +56,29 @@ class FilterSlotsTest(unittest.TestCase):
                          ["/soccer_kf/fusion_node", "/recorder", "/player"])
         self.assertEqual(nodes("soccer.launch", "filter1:=none", "filter2:=soccer_kf"),
                          ["/soccer_kf/fusion_node", "/recorder", "/player"])
+
+    def test_tuned_files_are_loaded_into_the_configurations_that_have_one(self):
+        for launch_file, config, bag in (("pioneer.launch", "nav3ctrl_ekf", "pioneer_seed1"),
+                                         ("pioneer.launch", "nav3ctrl_ukf", "pioneer_seed1"),
+                                         ("soccer.launch", "soccer_kf", "soccer_seed1")):
+            with open(os.path.join(REPO, "config", "tuned",
+                                   "%s_on_%s.yaml" % (config, bag))) as f:
+                tuned = yaml.safe_load(f)
+            params = yaml.safe_load(roslaunch("--dump-params",
+                                              os.path.join(LAUNCH, launch_file)))
+            key = "/%s/fusion_node/process_noise_covariance" % config
+            self.assertEqual(params[key], tuned["process_noise_covariance"], launch_file)
+            self.assertEqual(params["/%s/fusion_node/measurement_noise_covariance" % config],
+                             tuned["measurement_noise_covariance"], launch_file)
+            params = yaml.safe_load(roslaunch("--dump-params", os.path.join(LAUNCH, launch_file),
+                                              "tuned:=false"))
+            self.assertNotIn(key, params)
+        # a configuration without a tuned file runs with its header's values
+        params = yaml.safe_load(roslaunch("--dump-params", os.path.join(LAUNCH, "pioneer.launch"),
+                                          "filter3:=nav3ctrl_pf"))
+        self.assertIn("/nav3ctrl_ekf/fusion_node/process_noise_covariance", params)
+        self.assertFalse([k for k in params if k.startswith("/nav3ctrl_pf/fusion_node/")
+                          and "noise" in k], params)
 
     def test_recorder_follows_the_slots(self):
         args = roslaunch("--args", "/recorder", os.path.join(LAUNCH, "pioneer.launch"),
