@@ -10,6 +10,7 @@
 
 #include "filter_test_utils.hpp"
 #include "sf_estimation/extended_kalman_filter.hpp"
+#include "sf_estimation/function_model.hpp"
 #include "sf_estimation/kalman_filter.hpp"
 #include "sf_estimation/measurement_prediction.hpp"
 #include "sf_estimation/models/moving_train.hpp"
@@ -181,6 +182,36 @@ TEST(MeasurementPrediction, ExtendedKalmanFilterLinearisesAtThePrediction) {
   EXPECT_NEAR(p.covariance(0, 0), 9.0, 1e-12);
   // z = 13: d^2 = 16 / (9 + 1) = 1.6.
   EXPECT_NEAR(squaredMahalanobisDistance(p, 0, 13.0), 1.6, 1e-12);
+}
+
+TEST(MeasurementPrediction, ParticleFilterOfDynamicSizeFillsAnEmptyPrediction) {
+  // The fuzzer's finding (sf_estimation/fuzz/regressions/particle_filter_prediction_unsized):
+  // a default-constructed prediction of dynamic size has no entries, and the particle filter
+  // accumulated into it without sizing it (an Eigen size assertion, or memory overrun with
+  // assertions off). Empty storage must give the same prediction as storage of the right size
+  // filled with junk.
+  const auto model = estimation::makeFunctionModel(
+      2, 2, 0, [](const auto& x, const auto&, auto& next) { next = x; },
+      [](const auto& x, auto& z) { z = x; });
+  estimation::ParticleFilterParameters params;
+  params.particles = 64;
+  params.seed = 3;
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(2, 2);
+  ParticleFilterSIR<estimation::FunctionModel> pf(model, 0.1 * I, 0.2 * I,
+                                                  Eigen::Vector2d(1.0, 0.5), I, params);
+  MeasurementPrediction<estimation::Dynamic> empty, junk;
+  junk.mean = Eigen::VectorXd::Constant(2, 7.0);
+  junk.covariance = Eigen::MatrixXd::Constant(2, 2, 7.0);
+  pf.predictMeasurement(empty);
+  pf.predictMeasurement(junk);
+  ASSERT_EQ(empty.mean.size(), 2);
+  ASSERT_EQ(empty.covariance.rows(), 2);
+  ASSERT_EQ(empty.covariance.cols(), 2);
+  EXPECT_EQ(empty.mean, junk.mean);
+  EXPECT_EQ(empty.covariance, junk.covariance);
+  EXPECT_EQ(empty.noise, 0.2 * I);
+  // the particles' spread around x0 = (1, 0.5) with P0 = I and Q = 0.1 I
+  EXPECT_GT(empty.covariance(0, 0), 0.3);
 }
 
 TEST(MeasurementPrediction, ParticleFilterUsesTheParticlesOfItsNextStep) {

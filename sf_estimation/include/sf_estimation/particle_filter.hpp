@@ -162,8 +162,10 @@ class ParticleFilterSIR {
     probability::RandomEngine engine = engine_;
     Vector<N> in(n), transitioned(n), noise(n), sample(n);
     Vector<M> expected(m), deviation(m), after(m);
-    out.mean.setZero();
-    out.covariance.setZero();
+    // Sized here: a caller's prediction of dynamic size may come in empty (or of another
+    // size); for a fixed M, m is M.
+    out.mean.setZero(m);
+    out.covariance.setZero(m, m);
     double weightSum = 0.0;
     for (Index i = 0; i < p; ++i) {
       in = particles_.col(i);
