@@ -116,6 +116,12 @@ function(sf_add_filter name header)
     target_include_directories(${name}_nodelet PRIVATE ${nodelet_INCLUDE_DIRS}
       ${pluginlib_INCLUDE_DIRS})
     target_link_libraries(${name}_nodelet ${nodelet_LIBRARIES} ${pluginlib_LIBRARIES})
+    # Every header's plugin defines the same symbols (headerDefinition(), the sf_config types'
+    # template instances and vtables) with different contents. A manager loading two plugins
+    # would otherwise bind the second library's references to the first one's definitions
+    # (ELF interposition) and run the first header twice; -Bsymbolic binds each plugin's
+    # references to its own definitions.
+    target_link_options(${name}_nodelet PRIVATE "LINKER:-Bsymbolic")
     set_target_properties(${name}_nodelet PROPERTIES LIBRARY_OUTPUT_DIRECTORY
       "${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_LIB_DESTINATION}")
     if(NOT _sf_NO_INSTALL)

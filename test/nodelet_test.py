@@ -9,7 +9,8 @@ messages and the clock. Checked:
 - the nodelet's state of every period equals the node's (same header, inputs and periods);
 - the estimates use the inputs: the velocity and yaw rate approach the published ones and the
   heading turns to the left;
-- the skid-steer nodelet estimates the same motion (its own header, same manager);
+- the skid-steer nodelet estimates the same motion with its own header (its state size),
+  in the same manager: each plugin library runs its own header whichever loaded first;
 - the nodelets' diagnostics and ~set_pose service carry the nodelet's name, not the manager's.
 """
 
@@ -105,6 +106,14 @@ class NodeletTest(unittest.TestCase):
                               "%s's state at %.2f s" % (name, closed))
 
         node, nodelet, skid = (self.states[n] for n in NAMES)
+        # Each runs its own header, whichever plugin library the manager loaded first: the
+        # differential-drive header has 6 states, the skid-steer header 7 (its slip state).
+        # Before the plugins were linked -Bsymbolic, the second library's call of the
+        # per-header headerDefinition() resolved to the first library's (same symbol name),
+        # and both nodelets ran the header loaded first.
+        for name, states, size in ((NAMES[0], node, 6), (NAMES[1], nodelet, 6), (NAMES[2], skid, 7)):
+            sizes = {len(m.state) for m in states.values()}
+            self.assertEqual(sizes, {size}, "%s: state sizes %s" % (name, sizes))
         used = sorted(s for s in node if node[s].present_inputs > 0)
         self.assertGreaterEqual(len(used), STEPS - 5, "the node used too few periods' inputs")
         for stamp in used:
