@@ -36,10 +36,21 @@ if(CMAKE_CURRENT_LIST_DIR MATCHES "/share/sf_pkg/cmake$"
   list(APPEND sf_pkg_INCLUDE_DIRS "${_sf_pkg_installed_include}")
 endif()
 
+option(SF_PKG_PRECOMPILED_PRELUDE
+  "Precompile sf_filter/node_unit_prelude.hpp once per package for the nodes' units" ON)
+
 # The compile settings of a header's translation unit (the node's, or the object library the
 # node and its nodelet share).
 function(_sf_filter_unit target header)
   target_compile_definitions(${target} PRIVATE SF_CONFIG_HEADER="${header}")
+  _sf_filter_unit_flags(${target})
+  _sf_filter_prelude(${target})
+endfunction()
+
+# Everything of a unit's compile command but the header: the precompiled prelude is valid for
+# a unit only when both are compiled with the same options and definitions (GCC checks, and
+# falls back to parsing the prelude, with a -Winvalid-pch warning, when they differ).
+function(_sf_filter_unit_flags target)
   target_compile_features(${target} PRIVATE cxx_std_17)
   # A node is optimised unless the caller asks for a build type: a catkin workspace configured
   # without CMAKE_BUILD_TYPE compiles with no -O at all, which makes a filter step 100x slower.
@@ -50,10 +61,34 @@ function(_sf_filter_unit target header)
   # Configuration mistakes are reported by #error/static_assert naming the macro; the
   # macro-expansion backtrace under each would only bury that message.
   target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ftrack-macro-expansion=0>)
+  # Every unit is position-independent, so that one precompiled prelude serves the nodes and
+  # the nodelets (Debian's g++ builds executables position-independent anyway).
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   _sf_filter_includes(${target})
   if(TARGET sf_fusion_node)
     target_link_libraries(${target} PRIVATE Eigen3::Eigen Boost::headers)  # imported: no order
   endif()
+endfunction()
+
+# The prelude (sf_filter/node_unit_prelude.hpp: Eigen, ROS serialization, the common messages,
+# the filters, the fusion core) is precompiled once per package, by the first sf_add_filter()
+# call, and force-included in every unit of the package: parsing it was half of a unit's
+# compile time (doc/build_cost.md). Off with -DSF_PKG_PRECOMPILED_PRELUDE=OFF or CMake's
+# CMAKE_DISABLE_PRECOMPILE_HEADERS; the units then include the same headers themselves.
+function(_sf_filter_prelude target)
+  if(NOT SF_PKG_PRECOMPILED_PRELUDE OR CMAKE_DISABLE_PRECOMPILE_HEADERS)
+    return()
+  endif()
+  set(_prelude ${PROJECT_NAME}_sf_filter_prelude)
+  if(NOT TARGET ${_prelude})
+    set(_source "${CMAKE_CURRENT_BINARY_DIR}/${_prelude}.cpp")
+    file(CONFIGURE OUTPUT "${_source}"
+      CONTENT "// The target that precompiles sf_filter/node_unit_prelude.hpp.\n")
+    add_library(${_prelude} OBJECT "${_source}")
+    _sf_filter_unit_flags(${_prelude})
+    target_precompile_headers(${_prelude} PRIVATE <sf_filter/node_unit_prelude.hpp>)
+  endif()
+  target_precompile_headers(${target} REUSE_FROM ${_prelude})
 endfunction()
 
 function(_sf_filter_includes target)
@@ -92,14 +127,12 @@ function(sf_add_filter name header)
   # The header's translation unit is an object library that waits only for the message
   # headers: make compiles an executable's sources only after every library it links is
   # built, which in a clean build would hold every node back until the package's libraries
-  # are done (doc/build_cost.md). With NODELET it is compiled once, position-independent,
-  # for the node and the plugin (Debian's g++ builds executables position-independent
-  # anyway).
+  # are done (doc/build_cost.md). With NODELET it is compiled once for the node and the
+  # plugin.
   set(_unit ${name}_unit)
   if(_sf_NODELET)
     _sf_check_nodelet_xml(${name} "${_sf_NODELET}")
     add_library(${_unit} OBJECT "${SF_PKG_NODELET_UNIT}")
-    set_target_properties(${_unit} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   else()
     add_library(${_unit} OBJECT "${SF_PKG_FILTER_MAIN}")
   endif()

@@ -85,6 +85,21 @@ if [[ -n "$baseline" ]]; then
   configure "$work/baseline_src" "$work/baseline"
 fi
 
+# The precompiled prelude (cmake/sf_add_filter.cmake) is built once per package before any
+# unit; a unit's figure is its compile with the prelude in place, as in a build.
+prelude_cost() {  # "cpu_s peak_MB wall_s" of building the prelude target, or nothing
+  local target=sf_pkg_sf_filter_prelude t0=$SECONDS
+  make -C "$1/build" help 2>/dev/null | grep -q "^\.\.\. $target\$" || return 0
+  /usr/bin/time -f "%U %S %M" -o "$work/prelude.txt" make -C "$1/build" "$target" >/dev/null 2>&1
+  awk -v wall=$((SECONDS - t0)) '{printf "%.1f %.0f %d\n", $1 + $2, $3 / 1024, wall}' \
+    "$work/prelude.txt"
+}
+read -r pcpu pmem prelude_wall < <(prelude_cost "$work/current") || true
+if [[ -n "${pcpu:-}" ]]; then
+  printf '%-28s %14s %14s\n' "precompiled prelude (once)" "$pcpu" "$pmem"
+fi
+if [[ -n "$baseline" ]]; then prelude_cost "$work/baseline" >/dev/null; fi
+
 printf '%-28s %14s %14s' "translation unit (header)" "CPU s" "peak MB"
 [[ -n "$baseline" ]] && printf ' %14s %14s' "CPU s ($baseline)" "peak MB ($baseline)"
 echo
@@ -100,7 +115,13 @@ done
 echo
 ((units_only)) && exit 0
 
-echo "clean build, every node, no tests (-j$jobs): $(clean_build "$work/current") s wall"
+wall=$(clean_build "$work/current")
+if [[ -n "${prelude_wall:-}" ]]; then
+  echo "clean build, every node, no tests (-j$jobs): $((wall + prelude_wall)) s wall" \
+    "($prelude_wall s of it the prelude, built before the units were measured)"
+else
+  echo "clean build, every node, no tests (-j$jobs): $wall s wall"
+fi
 [[ -n "$baseline" && "$baseline_clean" == 1 ]] &&
   echo "clean build at $baseline (-j$jobs): $(clean_build "$work/baseline") s wall"
 

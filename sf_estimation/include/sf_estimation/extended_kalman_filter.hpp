@@ -65,7 +65,7 @@ class ExtendedKalmanFilter
     observationJacobian(model_, x, H);
     model_.observation(x, out.mean);
     this->angleMeasurements_.wrap(out.mean);
-    out.covariance = H * P * H.transpose();
+    projectCovariance<N, M>(H, P, out.covariance);
     out.noise = this->R_;
     out.angular = this->angleMeasurements_.mask();
   }

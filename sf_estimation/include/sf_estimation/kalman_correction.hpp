@@ -130,26 +130,39 @@ void propagateCovariance(const Matrix<N, N>& A, const Matrix<N, N>& P, const Mat
   next = A * P * A.transpose() + Q;
 }
 
+/// Covariance of a linear(ised) measurement of the state, H P H^T, shared by KF and EKF
+/// (their measurement predictions for the gate and the NIS check).
+template <int N, int M>
+void projectCovariance(const Matrix<M, N>& H, const Matrix<N, N>& P, Matrix<M, M>& out) {
+  out = H * P * H.transpose();
+}
+
 // The size-only steps above are compiled once in the library for the state sizes N = 1..9
 // and measurement sizes M = 1..6 that configurations use most (kalman_steps_*.cpp): a
 // node's translation unit then does not instantiate them again, which halves a Kalman-type
 // configuration's compile time. Other sizes are instantiated where they are used, as before.
+// A target built without the generated units (the fuzzer) defines
+// SF_ESTIMATION_IMPLICIT_INSTANCES, which drops these declarations here and in the
+// sigma-point headers: every size is then instantiated where it is used.
 #define SF_ESTIMATION_FOR_MEASUREMENT_SIZES(X, N) X(N, 1) X(N, 2) X(N, 3) X(N, 4) X(N, 5) X(N, 6)
-#define SF_ESTIMATION_CORRECTION(N, M)                                                   \
-  template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&,   \
-                                       const Vector<M>&, const Matrix<M, M>&);           \
-  template void crossCovarianceCorrection<N, M>(                                         \
-      const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&, \
+#define SF_ESTIMATION_CORRECTION(N, M)                                                            \
+  template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&,            \
+                                       const Vector<M>&, const Matrix<M, M>&);                    \
+  template void projectCovariance<N, M>(const Matrix<M, N>&, const Matrix<N, N>&, Matrix<M, M>&); \
+  template void crossCovarianceCorrection<N, M>(                                                  \
+      const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&,          \
       Matrix<N, M>&, Matrix<M, M>&, Vector<N>&, Matrix<N, N>&);
 #define SF_ESTIMATION_KALMAN_STEPS(N)                                            \
   template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&, \
                                        const Matrix<N, N>&, Matrix<N, N>&);      \
   SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_CORRECTION, N)
-#ifndef SF_ESTIMATION_INSTANTIATING_KALMAN_STEPS
+#if !defined(SF_ESTIMATION_INSTANTIATING_KALMAN_STEPS) && !defined(SF_ESTIMATION_IMPLICIT_INSTANCES)
 // "extern" applies to the first declaration only; each size's declarations are listed apart.
 #define SF_ESTIMATION_EXTERN_CORRECTION(N, M)                                                 \
   extern template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&, \
                                               const Vector<M>&, const Matrix<M, M>&);         \
+  extern template void projectCovariance<N, M>(const Matrix<M, N>&, const Matrix<N, N>&,      \
+                                               Matrix<M, M>&);                                \
   extern template void crossCovarianceCorrection<N, M>(                                       \
       const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&,      \
       Matrix<N, M>&, Matrix<M, M>&, Vector<N>&, Matrix<N, N>&);

@@ -53,7 +53,7 @@ class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
     predict(x, P);
     out.mean = H_ * x;
     this->angleMeasurements_.wrap(out.mean);
-    out.covariance = H_ * P * H_.transpose();
+    projectCovariance<N, M>(H_, P, out.covariance);
     out.noise = this->R_;
     out.angular = this->angleMeasurements_.mask();
   }

@@ -48,7 +48,8 @@ bool noiseWhitening(const Matrix<M, M>& noise, Eigen::LLT<Matrix<M, M>>& factor,
                                          const Matrix<N, N>&, ParticleSet<N>&, ParticleSet<N>&);
 #define SF_ESTIMATION_NOISE_WHITENING(M) \
   template bool noiseWhitening<M>(const Matrix<M, M>&, Eigen::LLT<Matrix<M, M>>&, Matrix<M, M>&);
-#ifndef SF_ESTIMATION_INSTANTIATING_SIGMA_POINT_STEPS
+#if !defined(SF_ESTIMATION_INSTANTIATING_SIGMA_POINT_STEPS) && \
+    !defined(SF_ESTIMATION_IMPLICIT_INSTANCES)
 extern SF_ESTIMATION_PARTICLE_DRAW(1) extern SF_ESTIMATION_PARTICLE_DRAW(2) extern SF_ESTIMATION_PARTICLE_DRAW(3) extern SF_ESTIMATION_PARTICLE_DRAW(4) extern SF_ESTIMATION_PARTICLE_DRAW(5) extern SF_ESTIMATION_PARTICLE_DRAW(6) extern SF_ESTIMATION_PARTICLE_DRAW(
     7) extern SF_ESTIMATION_NOISE_WHITENING(1) extern SF_ESTIMATION_NOISE_WHITENING(2) extern SF_ESTIMATION_NOISE_WHITENING(3) extern SF_ESTIMATION_NOISE_WHITENING(4) extern SF_ESTIMATION_NOISE_WHITENING(5) extern SF_ESTIMATION_NOISE_WHITENING(6)
 #endif

@@ -212,7 +212,8 @@ void UnscentedTransform<N>::fillPoints(const Vector<N>& mean, const Matrix<N, N>
 #define SF_ESTIMATION_TRANSFORM_ROWS(N, M) \
   SF_ESTIMATION_TRANSFORM_MEAN(N, M)       \
   SF_ESTIMATION_TRANSFORM_COVARIANCE(N, M, M) SF_ESTIMATION_TRANSFORM_COVARIANCE(N, N, M)
-#ifndef SF_ESTIMATION_INSTANTIATING_SIGMA_POINT_STEPS
+#if !defined(SF_ESTIMATION_INSTANTIATING_SIGMA_POINT_STEPS) && \
+    !defined(SF_ESTIMATION_IMPLICIT_INSTANCES)
 // Declared for every M in 1..6: a repeated explicit instantiation declaration (M = N) is
 // allowed, unlike a repeated definition.
 #define SF_ESTIMATION_EXTERN_TRANSFORM_ROWS(N, M)                                      \

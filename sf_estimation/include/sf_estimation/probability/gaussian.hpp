@@ -280,7 +280,8 @@ void CovarianceSquareRoot<N>::factorise(const MatrixType& covariance) {
 // The factorisation (a pivoted LDLT) is compiled once in the library for the state sizes of
 // the sigma-point and particle filters, 1..7 (sigma_point_steps.cpp.in, unscented_transform.hpp);
 // other sizes instantiate it where they use it.
-#ifndef SF_ESTIMATION_INSTANTIATING_SIGMA_POINT_STEPS
+#if !defined(SF_ESTIMATION_INSTANTIATING_SIGMA_POINT_STEPS) && \
+    !defined(SF_ESTIMATION_IMPLICIT_INSTANCES)
 extern template class CovarianceSquareRoot<1>;
 extern template class CovarianceSquareRoot<2>;
 extern template class CovarianceSquareRoot<3>;
