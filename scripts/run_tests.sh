@@ -61,14 +61,18 @@ filter() {
   fi
 }
 run_steps() {
-  local rc=0
+  local rc=0 t=$SECONDS
   sf_log "step 1: building the tests (${prebuild[*]})"
   "${base[@]}" -j"${SF_JOBS}" "${prebuild[@]}" || rc=$?
-  sf_log "step 2: ${groups[*]}"
+  sf_log "step 1 took $((SECONDS - t)) s; step 2: ${groups[*]}"
+  t=$SECONDS
   "${base[@]}" -j"${SF_JOBS}" "${groups[@]}" || rc=$?
+  sf_log "step 2 took $((SECONDS - t)) s"
   if ((${#timed_targets[@]})); then
+    t=$SECONDS
     sf_log "step 3, one at a time: ${timed_targets[*]}"
     "${base[@]}" -j1 "${timed_targets[@]}" || rc=$?
+    sf_log "step 3 took $((SECONDS - t)) s"
   fi
   return "$rc"
 }

@@ -9,6 +9,7 @@ Run by `catkin_make run_tests` (root CMakeLists.txt) with SF_BUILD_DIR (the work
 build directory) and SF_INSTALL_PREFIX (its install prefix) in the environment.
 """
 
+import glob
 import json
 import os
 import shutil
@@ -103,6 +104,7 @@ class InstallSpaceTest(unittest.TestCase):
         # the package's headers in its own include folder, the messages in sf_msgs'
         for rel in ["sf_pkg/sf_filter/config/configuration.hpp",
                     "sf_pkg/sf_filter/core/fusion_core.hpp", "sf_pkg/sf_estimation/estimator.hpp",
+                    "sf_pkg/sf_filter/node_unit_prelude.hpp",
                     "sf_msgs/OutputEntityStamped.h", "sf_msgs/StateEstimateStamped.h"]:
             self.assertTrue(os.path.isfile(os.path.join(include, rel)), rel)
         for rel in ["sf_filter", "sf_estimation", "sf_pkg/OutputEntityStamped.h"]:
@@ -168,7 +170,15 @@ class InstallSpaceTest(unittest.TestCase):
             flags = commands[0].split()
             self.assertIn("-O2", flags)
             self.assertIn("-DNDEBUG", flags)
-            run(["cmake", "--build", build, "--target", "my_train_kf", "--", "-j1"], self.env)
+            # The unit force-includes the package's precompiled prelude, and GCC accepts it:
+            # with other flags than the unit's it would fall back to parsing the headers and
+            # say so (-Winvalid-pch).
+            self.assertTrue(any(f.endswith("cmake_pch.hxx") for f in flags), commands[0])
+            out = run(["cmake", "--build", build, "--target", "my_train_kf", "--", "-j1"],
+                      self.env)
+            self.assertNotIn("Winvalid-pch", out)
+            self.assertTrue(glob.glob(os.path.join(build, "CMakeFiles", "*prelude*.dir",
+                                                   "cmake_pch.hxx.gch")), out)
             node = os.path.join(devel, "lib", "my_robot_fusion", "my_train_kf")
             self.assertTrue(os.access(node, os.X_OK), node)
             usage = run([node, "--help"], self.env)
