@@ -89,7 +89,8 @@ fi
 # unit; a unit's figure is its compile with the prelude in place, as in a build.
 prelude_cost() {  # "cpu_s peak_MB wall_s" of building the prelude target, or nothing
   local target=sf_pkg_sf_filter_prelude t0=$SECONDS
-  make -C "$1/build" help 2>/dev/null | grep -q "^\.\.\. $target\$" || return 0
+  # (no "make help | grep -q": with pipefail, grep's early exit fails the pipeline)
+  [[ "$(make -C "$1/build" help 2>/dev/null)" == *"... $target"* ]] || return 0
   /usr/bin/time -f "%U %S %M" -o "$work/prelude.txt" make -C "$1/build" "$target" >/dev/null 2>&1
   awk -v wall=$((SECONDS - t0)) '{printf "%.1f %.0f %d\n", $1 + $2, $3 / 1024, wall}' \
     "$work/prelude.txt"
