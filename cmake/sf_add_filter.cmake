@@ -72,7 +72,7 @@ endfunction()
 
 # The prelude (sf_filter/node_unit_prelude.hpp: Eigen, ROS serialization, the common messages,
 # the filters, the fusion core) is precompiled once per package, by the first sf_add_filter()
-# call, and force-included in every unit of the package: parsing it was half of a unit's
+# call, and force-included in every unit of the package: parsing it was 40 % of a unit's
 # compile time (doc/build_cost.md). Off with -DSF_PKG_PRECOMPILED_PRELUDE=OFF or CMake's
 # CMAKE_DISABLE_PRECOMPILE_HEADERS; the units then include the same headers themselves.
 function(_sf_filter_prelude target)

@@ -6,7 +6,8 @@
 //
 // Nothing here may read a configuration macro (METHOD, TOPICS_IN, ...): the prelude is
 // included before the configuration header. The configuration layer (sf_filter/config/) is
-// left out for that reason.
+// left out for that reason; the filters it chooses among come from the same list
+// (sf_estimation/filters.hpp).
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -26,13 +27,7 @@
 #include <std_msgs/Float32.h>
 #include <std_msgs/Float64.h>
 
-#include <sf_estimation/confidence_weighted_averaging.hpp>
-#include <sf_estimation/extended_kalman_filter.hpp>
-#include <sf_estimation/kalman_filter.hpp>
-#include <sf_estimation/moving_average.hpp>
-#include <sf_estimation/moving_median.hpp>
-#include <sf_estimation/particle_filter.hpp>
-#include <sf_estimation/unscented_kalman_filter.hpp>
+#include <sf_estimation/filters.hpp>
 
 #include "sf_filter/core/fusion_engine_of.hpp"
 #include "sf_filter/definition/node_definition.hpp"

@@ -4,13 +4,7 @@
 #pragma once
 
 #include <sf_estimation/angles.hpp>
-#include <sf_estimation/confidence_weighted_averaging.hpp>
-#include <sf_estimation/extended_kalman_filter.hpp>
-#include <sf_estimation/kalman_filter.hpp>
-#include <sf_estimation/moving_average.hpp>
-#include <sf_estimation/moving_median.hpp>
-#include <sf_estimation/particle_filter.hpp>
-#include <sf_estimation/unscented_kalman_filter.hpp>
+#include <sf_estimation/filters.hpp>
 
 namespace sf_filter {
 namespace generated {
