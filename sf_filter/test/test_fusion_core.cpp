@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sf_filter/core/message_arrival.hpp"
 #include "sf_filter/core/period_schedule.hpp"
 #include "train_core.hpp"
 
@@ -103,6 +104,41 @@ TEST(FusionCore, TimeRunningBackwardsResetsTheFilter) {
   core.advanceTo(0.15, out);
   ASSERT_EQ(out.estimates.size(), 1u);
   EXPECT_NEAR(out.estimates[0].time, 0.15, 1e-12);
+}
+
+TEST(FusionCore, AMessageReceivedBeforeRoscppHadAClockIsNoJumpBackwards) {
+  // An online soccer run (CI, 2026-12-03): the node's /clock subscription started the schedule
+  // at the bag's first instant while roscpp's own clock, on another thread, still read 0; a
+  // message received then has receipt time 0 and the clock reads 0. Taken as the reading, 0 is
+  // time running backwards (the filter reset, its WARN throttled away at time 0).
+  const double t0 = 1.7e9;
+  for (const bool throughArrival : {false, true}) {
+    Core::Options options;
+    options.period = 0.001;
+    Core core(makeTrain(), options);
+    Collector out;
+    ASSERT_EQ(core.advanceTo(t0, out), sf_filter::ClockEvent::Started);
+    const double reading = throughArrival ? sf_filter::messageArrival(0.0, 0.0, core.clock()) : 0.0;
+    const sf_filter::ClockEvent event = core.advanceTo(reading, out);
+    if (!throughArrival) {
+      EXPECT_EQ(event, sf_filter::ClockEvent::JumpedBackwards) << "the defect this test is about";
+      continue;
+    }
+    EXPECT_EQ(reading, t0);
+    EXPECT_EQ(event, sf_filter::ClockEvent::Normal);
+    EXPECT_EQ(core.clockResets(), 0u);
+    core.addMeasurement(0, reading, 4.0);
+    EXPECT_EQ(core.advanceTo(t0 + 0.001, out), sf_filter::ClockEvent::Normal);
+    ASSERT_EQ(out.estimates.size(), 1u);
+    EXPECT_EQ(out.estimates[0].presentInputs, 1);
+  }
+}
+
+TEST(MessageArrival, IsTheReceiptTimeElseTheClockNeverBeforeTheCoresClock) {
+  EXPECT_EQ(sf_filter::messageArrival(12.5, 13.0, 12.0), 12.5);  // receipt time
+  EXPECT_EQ(sf_filter::messageArrival(0.0, 13.0, 12.0), 13.0);   // no receipt time: the clock
+  EXPECT_EQ(sf_filter::messageArrival(11.0, 13.0, 12.0), 12.0);  // behind a clock reading
+  EXPECT_EQ(sf_filter::messageArrival(0.0, 0.0, 12.0), 12.0);    // no valid clock yet
 }
 
 TEST(FusionCore, TwoMessagesAtAPeriodEndAreNoJumpBackwards) {

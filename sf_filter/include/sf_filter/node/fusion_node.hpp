@@ -33,6 +33,7 @@
 #include <sf_msgs/SetPose.h>
 
 #include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/core/message_arrival.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/node/estimate_messages.hpp"
@@ -294,15 +295,10 @@ class FusionNode final : public MessageSink {
     advance(backwards ? t : std::max(t, core_.clock()));
   }
 
-  /// The arrival time of a message: when roscpp's receiving thread read it (its receipt time, on
-  /// ROS time), not when its callback runs - on a loaded machine the callback can run periods
-  /// later, after the clock moved on, and by then the value would count for a later period
-  /// than the offline replay gives it. Never before the core's last clock reading (a reading
-  /// before the current period would be a clock jump backwards); the callback's time when the
-  /// receipt time is not set.
+  /// The arrival time of a message (messageArrival): its receipt time, never before the
+  /// core's last clock reading.
   double arrival(const ros::Time& receipt) const {
-    if (receipt.isZero()) return ros::Time::now().toSec();
-    return std::max(receipt.toSec(), core_.clock());
+    return messageArrival(receipt.toSec(), ros::Time::now().toSec(), core_.clock());
   }
 
   void advance(double now) {
@@ -362,7 +358,7 @@ class FusionNode final : public MessageSink {
       ROS_ERROR("%s: pose refused: the clock does not run yet (use_sim_time, no /clock)", topic);
       return "the clock does not run yet (use_sim_time, no /clock)";
     }
-    advance(ros::Time::now().toSec());
+    advance(arrival(ros::Time()));  // the clock now, never before the core's reading
     const auto& q = m.pose.pose.orientation;
     const double yaw = sf_config::extractors::eulerAngles({q.x, q.y, q.z, q.w}).yaw;
     const std::array<double, 3> pose = {m.pose.pose.position.x, m.pose.pose.position.y, yaw};
@@ -521,8 +517,8 @@ class FusionNode final : public MessageSink {
   std::uint64_t setPoses_ = 0, refusedPoses_ = 0;
   std::vector<ros::Publisher> outputs_;
   ros::Publisher state_, odometry_;
-  ros::Timer timer_;        ///< the schedule on wall-clock time
-  ros::Subscriber clock_;   ///< the schedule on simulated time
+  ros::Timer timer_;       ///< the schedule on wall-clock time
+  ros::Subscriber clock_;  ///< the schedule on simulated time
   /// The newest /clock message read (onClock); -infinity before the first.
   double lastClockMessage_ = -std::numeric_limits<double>::infinity();
   bool scheduled_ = false;  ///< the clock was valid: subscribed, timer running
