@@ -137,39 +137,56 @@ void projectCovariance(const Matrix<M, N>& H, const Matrix<N, N>& P, Matrix<M, M
   out = H * P * H.transpose();
 }
 
-// The size-only steps above are compiled once in the library for the state sizes N = 1..9
+// The size-only steps above are compiled once in the library for the state sizes N = 1..8
 // and measurement sizes M = 1..6 that configurations use most (kalman_steps_*.cpp): a
 // node's translation unit then does not instantiate them again, which halves a Kalman-type
-// configuration's compile time. Other sizes are instantiated where they are used, as before.
+// configuration's compile time. The UKF's correction is compiled once for N = 1..7 only, the
+// sizes of the sigma-point grid (unscented_transform.hpp): a larger UKF compiles its
+// transform in its own unit anyway. The grid stops at 8 states, the largest shipped header
+// (config/husky_skid_steer_gps.h); each larger size was one more unit of 40 s of CPU in
+// every build of the package. Other sizes are instantiated where they are used, as before.
 // A target built without the generated units (the fuzzer) defines
 // SF_ESTIMATION_IMPLICIT_INSTANCES, which drops these declarations here and in the
 // sigma-point headers: every size is then instantiated where it is used.
 #define SF_ESTIMATION_FOR_MEASUREMENT_SIZES(X, N) X(N, 1) X(N, 2) X(N, 3) X(N, 4) X(N, 5) X(N, 6)
-#define SF_ESTIMATION_CORRECTION(N, M)                                                            \
-  template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&,            \
-                                       const Vector<M>&, const Matrix<M, M>&);                    \
-  template void projectCovariance<N, M>(const Matrix<M, N>&, const Matrix<N, N>&, Matrix<M, M>&); \
-  template void crossCovarianceCorrection<N, M>(                                                  \
-      const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&,          \
+#define SF_ESTIMATION_LINEAR_CORRECTION(N, M)                                          \
+  template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&, \
+                                       const Vector<M>&, const Matrix<M, M>&);         \
+  template void projectCovariance<N, M>(const Matrix<M, N>&, const Matrix<N, N>&, Matrix<M, M>&);
+#define SF_ESTIMATION_CROSS_COVARIANCE_CORRECTION(N, M)                                  \
+  template void crossCovarianceCorrection<N, M>(                                         \
+      const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&, \
       Matrix<N, M>&, Matrix<M, M>&, Vector<N>&, Matrix<N, N>&);
-#define SF_ESTIMATION_KALMAN_STEPS(N)                                            \
+#define SF_ESTIMATION_COVARIANCE_PROPAGATION(N)                                  \
   template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&, \
-                                       const Matrix<N, N>&, Matrix<N, N>&);      \
-  SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_CORRECTION, N)
+                                       const Matrix<N, N>&, Matrix<N, N>&);
+/// The steps of a state size of the Kalman and the sigma-point grid.
+#define SF_ESTIMATION_KALMAN_STEPS(N)                                     \
+  SF_ESTIMATION_COVARIANCE_PROPAGATION(N)                                 \
+  SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_LINEAR_CORRECTION, N) \
+  SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_CROSS_COVARIANCE_CORRECTION, N)
+/// The steps of a state size of the Kalman grid only (no UKF correction).
+#define SF_ESTIMATION_LINEAR_KALMAN_STEPS(N) \
+  SF_ESTIMATION_COVARIANCE_PROPAGATION(N)    \
+  SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_LINEAR_CORRECTION, N)
 #if !defined(SF_ESTIMATION_INSTANTIATING_KALMAN_STEPS) && !defined(SF_ESTIMATION_IMPLICIT_INSTANCES)
 // "extern" applies to the first declaration only; each size's declarations are listed apart.
-#define SF_ESTIMATION_EXTERN_CORRECTION(N, M)                                                 \
+#define SF_ESTIMATION_EXTERN_LINEAR_CORRECTION(N, M)                                          \
   extern template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&, \
                                               const Vector<M>&, const Matrix<M, M>&);         \
   extern template void projectCovariance<N, M>(const Matrix<M, N>&, const Matrix<N, N>&,      \
-                                               Matrix<M, M>&);                                \
-  extern template void crossCovarianceCorrection<N, M>(                                       \
-      const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&,      \
+                                               Matrix<M, M>&);
+#define SF_ESTIMATION_EXTERN_CROSS_COVARIANCE_CORRECTION(N, M)                           \
+  extern template void crossCovarianceCorrection<N, M>(                                  \
+      const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&, \
       Matrix<N, M>&, Matrix<M, M>&, Vector<N>&, Matrix<N, N>&);
-#define SF_ESTIMATION_EXTERN_STEPS(N)                                                   \
+#define SF_ESTIMATION_EXTERN_LINEAR_STEPS(N)                                            \
   extern template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&, \
                                               const Matrix<N, N>&, Matrix<N, N>&);      \
-  SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_EXTERN_CORRECTION, N)
+  SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_EXTERN_LINEAR_CORRECTION, N)
+#define SF_ESTIMATION_EXTERN_STEPS(N)  \
+  SF_ESTIMATION_EXTERN_LINEAR_STEPS(N) \
+  SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_EXTERN_CROSS_COVARIANCE_CORRECTION, N)
 SF_ESTIMATION_EXTERN_STEPS(1)
 SF_ESTIMATION_EXTERN_STEPS(2)
 SF_ESTIMATION_EXTERN_STEPS(3)
@@ -177,10 +194,11 @@ SF_ESTIMATION_EXTERN_STEPS(4)
 SF_ESTIMATION_EXTERN_STEPS(5)
 SF_ESTIMATION_EXTERN_STEPS(6)
 SF_ESTIMATION_EXTERN_STEPS(7)
-SF_ESTIMATION_EXTERN_STEPS(8)
-SF_ESTIMATION_EXTERN_STEPS(9)
+SF_ESTIMATION_EXTERN_LINEAR_STEPS(8)
 #undef SF_ESTIMATION_EXTERN_STEPS
-#undef SF_ESTIMATION_EXTERN_CORRECTION
+#undef SF_ESTIMATION_EXTERN_LINEAR_STEPS
+#undef SF_ESTIMATION_EXTERN_CROSS_COVARIANCE_CORRECTION
+#undef SF_ESTIMATION_EXTERN_LINEAR_CORRECTION
 #endif
 
 }  // namespace estimation
