@@ -45,6 +45,19 @@ done
 for target in $(grep -E "^run_tests_[A-Za-z0-9]+$" <<<"$make_targets"); do
   [[ "$target" == "run_tests_${SF_PACKAGE}" ]] || groups+=("$target")
 done
+# The longest groups first (the 60 s fuzz run beside the sanitized tests, the configuration
+# checks, the robots' replays): make starts the goals in this order, and a long group started
+# last would run alone in one of the two slots at the end.
+ordered=()
+for name in sanitizers config_errors robots; do
+  for target in "${groups[@]}"; do
+    [[ "$target" == "run_tests_${SF_PACKAGE}_${name}" ]] && ordered+=("$target")
+  done
+done
+for target in "${groups[@]}"; do
+  [[ " ${ordered[*]} " == *" ${target} "* ]] || ordered+=("$target")
+done
+groups=("${ordered[@]}")
 
 sf_log "running tests (log: ${SF_WS}/tests.log)"
 t0=$SECONDS
