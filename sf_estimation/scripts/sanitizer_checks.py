@@ -3,30 +3,37 @@
 runs either its unit tests or its libFuzzer target, writing a JUnit file for
 catkin_test_results.
 
+One build directory serves both commands: it is configured with the sanitizers, the unit
+tests and the fuzz target (-DSF_ESTIMATION_FUZZ=ON, which instruments the library for
+libFuzzer's coverage as well), build type Sanitize (-O1, Eigen assertions on), and without the
+library's generated fixed-size instances (-DSF_ESTIMATION_EXPLICIT_INSTANCES=OFF): the tests
+and the fuzzer instantiate the same templates for the sizes they use, which costs 30 % less
+CPU than compiling the whole size grid under the sanitizers. The library's sources are
+compiled once for both (doc/build_cost.md, "Round seven").
+
   sanitizer_checks.py unit-tests --build-dir DIR [--junit FILE]
-      configures sf_estimation/ standalone in DIR (-DSF_ESTIMATION_SANITIZE=ON, build type
-      Sanitize: -O1, Eigen assertions on), builds sf_estimation_tests and runs every test;
-      any sanitizer report aborts the test binary and fails the check. The library is built
-      without its generated fixed-size instances (-DSF_ESTIMATION_EXPLICIT_INSTANCES=OFF):
-      the tests instantiate the same templates for the sizes they use, which costs this
-      build 30 % less CPU than compiling the whole size grid under the sanitizers.
+      builds sf_estimation_tests in DIR and runs every test; any sanitizer report aborts the
+      test binary and fails the check.
 
   sanitizer_checks.py fuzz --build-dir DIR [--seconds 60] [--corpus DIR] [--junit FILE]
-      builds sf_estimation_fuzz (-DSF_ESTIMATION_FUZZ=ON) and runs it for the given time on
+      builds sf_estimation_fuzz in DIR and runs it for the given time on
       the corpus directory (default DIR/corpus, kept between runs so it grows) plus the
       inputs that once failed (sf_estimation/fuzz/regressions); prints the
       executions, the corpus size and the coverage libFuzzer reports. A crash, hang (10 s per
       input), leak, sanitizer report or an exception other than estimation::EstimationError
       fails the check; libFuzzer then leaves the input as DIR/crash-* (or leak-*, timeout-*).
 
-  --build-only (either command): builds and stops. The package's test command builds both
-      trees before any test runs (CMake target sf_sanitizer_builds), so that no compiler
-      competes with the timing-sensitive rostests; the checks then find them up to date.
+  sanitizer_checks.py build --build-dir DIR
+      builds both programs and stops. The package's test command runs it before any test
+      (CMake target sf_sanitizer_builds), so that no compiler competes with the
+      timing-sensitive rostests; the checks then find the tree up to date. Both checks may run
+      at the same time on one DIR: configuring and building take a lock on DIR.
 
 Both need clang and libclang-rt-14-dev (scripts/common.sh installs them).
 """
 
 import argparse
+import fcntl
 import os
 import re
 import subprocess
@@ -49,12 +56,24 @@ def run(cmd, **kwargs):
     return subprocess.run(cmd, **kwargs)
 
 
-def build(build_dir, target, extra, jobs):
-    configure = ["cmake", "-S", SOURCE, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Sanitize",
-                 "-DCMAKE_CXX_COMPILER=clang++"] + extra
-    if run(configure, stdout=subprocess.DEVNULL).returncode != 0:
-        return False
-    return run(["cmake", "--build", build_dir, "-j", str(jobs), "--target", target]).returncode == 0
+CONFIGURE_OPTIONS = ["-DCMAKE_BUILD_TYPE=Sanitize", "-DCMAKE_CXX_COMPILER=clang++",
+                     "-DSF_ESTIMATION_SANITIZE=ON", "-DSF_ESTIMATION_FUZZ=ON",
+                     "-DSF_ESTIMATION_BUILD_TESTS=ON", "-DSF_ESTIMATION_EXPLICIT_INSTANCES=OFF"]
+TARGETS = {"unit-tests": ["sf_estimation_tests"], "fuzz": ["sf_estimation_fuzz"],
+           "build": ["sf_estimation_tests", "sf_estimation_fuzz"]}
+
+
+def build(build_dir, targets, jobs):
+    """Configures and builds under an exclusive lock on build_dir: the unit tests and the
+    fuzz run of the test command start together on one tree."""
+    os.makedirs(build_dir, exist_ok=True)
+    with open(os.path.join(build_dir, ".sanitizer_checks.lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        configure = ["cmake", "-S", SOURCE, "-B", build_dir] + CONFIGURE_OPTIONS
+        if run(configure, stdout=subprocess.DEVNULL).returncode != 0:
+            return False
+        return run(["cmake", "--build", build_dir, "-j", str(jobs), "--target"]
+                   + targets).returncode == 0
 
 
 def write_junit(path, suite_name, cases):
@@ -77,14 +96,10 @@ def write_junit(path, suite_name, cases):
 def unit_tests(args):
     start = time.time()
     env = dict(os.environ, **SANITIZER_ENV)
-    if not build(args.build_dir, "sf_estimation_tests",
-                 ["-DSF_ESTIMATION_SANITIZE=ON", "-DSF_ESTIMATION_BUILD_TESTS=ON",
-                  "-DSF_ESTIMATION_EXPLICIT_INSTANCES=OFF"], args.jobs):
+    if not build(args.build_dir, TARGETS["unit-tests"], args.jobs):
         write_junit(args.junit, "estimation_sanitized_tests",
                     [("build", False, "sanitizer build of sf_estimation_tests failed", 0.0)])
         return 1
-    if args.build_only:
-        return 0
     built = time.time()
     xml = os.path.join(args.build_dir, "sanitized_tests.xml")
     proc = run([os.path.join(args.build_dir, "sf_estimation_tests"), "--gtest_output=xml:" + xml],
@@ -109,14 +124,10 @@ def unit_tests(args):
 
 
 def fuzz(args):
-    if not build(args.build_dir, "sf_estimation_fuzz", ["-DSF_ESTIMATION_FUZZ=ON",
-                                                       "-DSF_ESTIMATION_BUILD_TESTS=OFF"],
-                 args.jobs):
+    if not build(args.build_dir, TARGETS["fuzz"], args.jobs):
         write_junit(args.junit, "estimation_fuzz",
                     [("build", False, "build of sf_estimation_fuzz failed", 0.0)])
         return 1
-    if args.build_only:
-        return 0
     corpus = args.corpus or os.path.join(args.build_dir, "corpus")
     os.makedirs(corpus, exist_ok=True)
     env = dict(os.environ, **SANITIZER_ENV)
@@ -144,21 +155,25 @@ def fuzz(args):
     return 0 if ok else 1
 
 
+def build_only(args):
+    return 0 if build(args.build_dir, TARGETS["build"], args.jobs) else 1
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
-    for name in ("unit-tests", "fuzz"):
+    for name in ("unit-tests", "fuzz", "build"):
         p = sub.add_parser(name)
         p.add_argument("--build-dir", required=True)
-        p.add_argument("--junit")
         p.add_argument("-j", "--jobs", type=int, default=2)
-        p.add_argument("--build-only", action="store_true")
+        if name != "build":
+            p.add_argument("--junit")
         if name == "fuzz":
             p.add_argument("--seconds", type=int, default=60)
             p.add_argument("--corpus")
     args = parser.parse_args()
     args.build_dir = os.path.abspath(args.build_dir)
-    return unit_tests(args) if args.command == "unit-tests" else fuzz(args)
+    return {"unit-tests": unit_tests, "fuzz": fuzz, "build": build_only}[args.command](args)
 
 
 if __name__ == "__main__":
