@@ -15,56 +15,39 @@ results="${SF_WS}/build/test_results"
 rm -rf "$results"
 
 # Three steps, so that what measures wall-clock behaviour runs without a compiler beside it
-# (doc/reliability.md, "Test order"): (1) every test executable and the sanitizer trees are
-# built; (2) the tests that do not depend on timing run two at a time; (3) the rostests run
-# two at a time (SF_ROSTEST_JOBS), then the soak and the under-load check (which brings its
-# own load, stress-ng) one at a time. Under a plain `catkin_make -j2 run_tests` a compiler or
-# the fuzz run would compete with the 1 kHz nodes of the online tests, a load nobody chose
-# and no test asserts against.
+# (doc/reliability.md, "Test order"): (1) every test executable and the sanitizer tree are
+# built (`tests`, which depends on the sanitizer build); (2) the tests that do not depend on
+# timing run two at a time (CMake's goal sf_untimed_tests); (3) the rostests run two at a time
+# (SF_ROSTEST_JOBS), then the soak and the under-load check (which brings its own load,
+# stress-ng) one at a time. Under a plain `catkin_make -j2 run_tests` a compiler or the fuzz
+# run would compete with the 1 kHz nodes of the online tests, a load nobody chose and no test
+# asserts against.
 build_dir="${SF_WS}/build"
 make_targets="$(make -C "$build_dir" help 2>/dev/null | sed -n 's/^\.\.\. \([^ ]*\).*$/\1/p')"
 has_target() { grep -qx -- "$1" <<<"$make_targets"; }
-timed=(rostest soak load)
+# The timed groups are CMake's list (SF_PKG_TIMED_TEST_GROUPS in CMakeLists.txt).
+read -r -a timed <<<"$(sed -n 's/^SF_PKG_TIMED_TEST_GROUPS:INTERNAL=//p' "${build_dir}/CMakeCache.txt" \
+  | tr ';' ' ')"
 # Each rostest has its own master and waits for events, not for time; two at a time took the
 # rostests from 230 to 120 s on 2 cores with the same margins (doc/reliability.md).
 SF_ROSTEST_JOBS="${SF_ROSTEST_JOBS:-2}"
-groups=() timed_targets=() kept=()
-for target in $(grep "^run_tests_${SF_PACKAGE}_" <<<"$make_targets" | sort); do
-  # a group: run_tests_<pkg>_<group>, the prefix of its tests' own targets (and not itself a
-  # test of a group found before: sorted, a group comes before its tests)
-  grep -q "^${target}_" <<<"$make_targets" || continue
-  for group in "${kept[@]}"; do [[ "$target" == "${group}_"* ]] && continue 2; done
-  kept+=("$target")
-  if [[ " ${timed[*]} " == *" ${target#run_tests_${SF_PACKAGE}_} "* ]]; then
-    timed_targets+=("$target")
-  else
-    groups+=("$target")
-  fi
+groups=() timed_targets=()
+for name in "${timed[@]}"; do
+  if has_target "run_tests_${SF_PACKAGE}_${name}"; then timed_targets+=("run_tests_${SF_PACKAGE}_${name}"); fi
 done
-# Other packages of the workspace (sf_msgs): their whole run_tests target, in step 2.
+# Step 2: one goal for sf_pkg's untimed groups (make runs the goals of a catkin build
+# directory one after another, but a goal's prerequisites side by side), and the whole
+# run_tests target of the workspace's other packages, if they have tests.
+if has_target sf_untimed_tests; then groups+=(sf_untimed_tests); fi
 for target in $(grep -E "^run_tests_[A-Za-z0-9]+$" <<<"$make_targets"); do
   [[ "$target" == "run_tests_${SF_PACKAGE}" ]] || groups+=("$target")
 done
-# The longest groups first (the 60 s fuzz run beside the sanitized tests, the configuration
-# checks, the robots' replays): make starts the goals in this order, and a long group started
-# last would run alone in one of the two slots at the end.
-ordered=()
-for name in sanitizers config_errors robots; do
-  for target in "${groups[@]}"; do
-    [[ "$target" == "run_tests_${SF_PACKAGE}_${name}" ]] && ordered+=("$target")
-  done
-done
-for target in "${groups[@]}"; do
-  [[ " ${ordered[*]} " == *" ${target} "* ]] || ordered+=("$target")
-done
-groups=("${ordered[@]}")
 
 sf_log "running tests (log: ${SF_WS}/tests.log)"
 t0=$SECONDS
 base=(catkin_make -C "$SF_WS" -k -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3
   -DSF_PKG_HEAVY_TESTS=ON)
 prebuild=(tests)
-if has_target sf_sanitizer_builds; then prebuild+=(sf_sanitizer_builds); fi
 # Show the tests' own output, not catkin/CMake/make chatter.
 filter() {
   if [[ "$SF_VERBOSE" == 1 ]]; then

@@ -23,10 +23,11 @@ compiled once for both (doc/build_cost.md, "Round seven").
       input), leak, sanitizer report or an exception other than estimation::EstimationError
       fails the check; libFuzzer then leaves the input as DIR/crash-* (or leak-*, timeout-*).
 
-  sanitizer_checks.py build --build-dir DIR
-      builds both programs and stops. The package's test command runs it before any test
-      (CMake target sf_sanitizer_builds), so that no compiler competes with the
-      timing-sensitive rostests; the checks then find the tree up to date. Both checks may run
+  sanitizer_checks.py build --build-dir DIR [--make MAKE]
+      builds both programs and stops. The package's test command builds it with the other
+      tests (CMake target sf_sanitizer_builds, a dependency of `tests`), so that no compiler
+      competes with the timing-sensitive rostests; the checks then find the tree up to date.
+      --make "$(MAKE)" from a make recipe: the build joins that make's job server. Both checks may run
       at the same time on one DIR: configuring and building take a lock on DIR.
 
 Both need clang and libclang-rt-14-dev (scripts/common.sh installs them).
@@ -63,15 +64,34 @@ TARGETS = {"unit-tests": ["sf_estimation_tests"], "fuzz": ["sf_estimation_fuzz"]
            "build": ["sf_estimation_tests", "sf_estimation_fuzz"]}
 
 
-def build(build_dir, targets, jobs):
+def jobserver_fds():
+    """The read and write ends of the calling make's job server (--jobserver-auth=R,W in
+    MAKEFLAGS, GNU make 4.2 and later), or None when there is none to join."""
+    match = re.search(r"--jobserver-(?:auth|fds)=(\d+),(\d+)", os.environ.get("MAKEFLAGS", ""))
+    if not match:
+        return None
+    fds = (int(match.group(1)), int(match.group(2)))
+    try:
+        for fd in fds:
+            os.fstat(fd)
+    except OSError:
+        return None
+    return fds
+
+
+def build(build_dir, targets, jobs, make=None):
     """Configures and builds under an exclusive lock on build_dir: the unit tests and the
-    fuzz run of the test command start together on one tree."""
+    fuzz run of the test command start together on one tree. With make (run from a make
+    recipe), the build joins that make's job server instead of running its own jobs."""
     os.makedirs(build_dir, exist_ok=True)
     with open(os.path.join(build_dir, ".sanitizer_checks.lock"), "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
-        configure = ["cmake", "-S", SOURCE, "-B", build_dir] + CONFIGURE_OPTIONS
-        if run(configure, stdout=subprocess.DEVNULL).returncode != 0:
+        configure = ["cmake", "-S", SOURCE, "-B", build_dir, "-G", "Unix Makefiles"]
+        if run(configure + CONFIGURE_OPTIONS, stdout=subprocess.DEVNULL).returncode != 0:
             return False
+        fds = jobserver_fds() if make else None
+        if fds:
+            return run([make, "-C", build_dir] + targets, pass_fds=fds).returncode == 0
         return run(["cmake", "--build", build_dir, "-j", str(jobs), "--target"]
                    + targets).returncode == 0
 
@@ -156,7 +176,7 @@ def fuzz(args):
 
 
 def build_only(args):
-    return 0 if build(args.build_dir, TARGETS["build"], args.jobs) else 1
+    return 0 if build(args.build_dir, TARGETS["build"], args.jobs, args.make) else 1
 
 
 def main():
@@ -166,7 +186,10 @@ def main():
         p = sub.add_parser(name)
         p.add_argument("--build-dir", required=True)
         p.add_argument("-j", "--jobs", type=int, default=2)
-        if name != "build":
+        if name == "build":
+            p.add_argument("--make", help="the calling make (a recipe's $(MAKE)): join its "
+                           "job server when MAKEFLAGS names one")
+        else:
             p.add_argument("--junit")
         if name == "fuzz":
             p.add_argument("--seconds", type=int, default=60)
