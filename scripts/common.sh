@@ -21,9 +21,9 @@ SF_VERBOSE="${SF_VERBOSE:-0}"
 SF_CMAKE_ARGS=()
 SF_PACKAGE=sf_pkg
 
-# Debian packages needed to build, test and run the package.
-# rosbash provides rosrun (ros-core only recommends it). clang and libclang-rt-14-dev build
-# sf_estimation's sanitizer and libFuzzer checks (sf_estimation/scripts/sanitizer_checks.py).
+# Debian packages needed to build and run the package (and its gtest and rostest tests; the
+# test command adds SF_TEST_DEB_PACKAGES below).
+# rosbash provides rosrun (ros-core only recommends it).
 # python3-diagnostic-msgs: the Python messages of /diagnostics, for `rostopic echo
 # /diagnostics`, tools/diagnostics_monitor.py and its test (ros-diagnostic-msgs has only the
 # .msg files). tf2-tools: tf2_ros's executables, `rosrun tf2_ros static_transform_publisher`
@@ -43,9 +43,12 @@ SF_DEB_PACKAGES=(
   libgeographiclib-dev
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools pluginlib-dev
   cmake g++
-  clang libclang-rt-14-dev
-  stress-ng
 )
+# Only the test command's (scripts/run_tests.sh): clang and libclang-rt-14-dev build
+# sf_estimation's sanitizer and libFuzzer checks (sf_estimation/scripts/sanitizer_checks.py),
+# stress-ng is the load of the under-load check. clang is a third of the download and of the
+# install time of a fresh machine, which the main job does not need (doc/build_cost.md).
+SF_TEST_DEB_PACKAGES=(clang libclang-rt-14-dev stress-ng)
 
 sf_log() { printf '[sf_pkg] %s\n' "$*" >&2; }
 sf_die() { printf '[sf_pkg] ERROR: %s\n' "$*" >&2; exit 1; }

@@ -9,15 +9,16 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 # The package's own heavy checks (sanitizers, fuzzing, soak) are part of this command.
 SF_CMAKE_ARGS=(-DSF_PKG_HEAVY_TESTS=ON)
+SF_DEB_PACKAGES+=("${SF_TEST_DEB_PACKAGES[@]}")
 sf_prepare
 
 results="${SF_WS}/build/test_results"
 rm -rf "$results"
 
-# Three steps, so that what measures wall-clock behaviour runs without a compiler beside it
-# (doc/reliability.md, "Test order"): (1) every test executable and the sanitizer tree are
-# built (`tests`, which depends on the sanitizer build); (2) the tests that do not depend on
-# timing run two at a time (CMake's goal sf_untimed_tests); (3) the rostests run two at a time
+# Two steps, so that what measures wall-clock behaviour runs without a compiler beside it
+# (doc/reliability.md, "Test order"): (1) one goal, sf_untimed_tests, builds every test
+# executable and the sanitizer tree (`tests`) and runs the tests that do not depend on timing,
+# each as soon as what it runs is built, two jobs at a time; (2) the rostests run two at a time
 # (SF_ROSTEST_JOBS), then the soak and the under-load check (which brings its own load,
 # stress-ng) one at a time. Under a plain `catkin_make -j2 run_tests` a compiler or the fuzz
 # run would compete with the 1 kHz nodes of the online tests, a load nobody chose and no test
@@ -31,23 +32,22 @@ read -r -a timed <<<"$(sed -n 's/^SF_PKG_TIMED_TEST_GROUPS:INTERNAL=//p' "${buil
 # Each rostest has its own master and waits for events, not for time; two at a time took the
 # rostests from 230 to 120 s on 2 cores with the same margins (doc/reliability.md).
 SF_ROSTEST_JOBS="${SF_ROSTEST_JOBS:-2}"
-groups=() timed_targets=()
+timed_targets=()
 for name in "${timed[@]}"; do
   if has_target "run_tests_${SF_PACKAGE}_${name}"; then timed_targets+=("run_tests_${SF_PACKAGE}_${name}"); fi
 done
-# Step 2: one goal for sf_pkg's untimed groups (make runs the goals of a catkin build
-# directory one after another, but a goal's prerequisites side by side), and the whole
-# run_tests target of the workspace's other packages, if they have tests.
-if has_target sf_untimed_tests; then groups+=(sf_untimed_tests); fi
+# Step 1: CMake's goal for sf_pkg (make runs the goals of a catkin build directory one after
+# another, but a goal's prerequisites side by side), and the whole run_tests target of the
+# workspace's other packages, if they have tests.
+untimed=(sf_untimed_tests)
 for target in $(grep -E "^run_tests_[A-Za-z0-9]+$" <<<"$make_targets"); do
-  [[ "$target" == "run_tests_${SF_PACKAGE}" ]] || groups+=("$target")
+  [[ "$target" == "run_tests_${SF_PACKAGE}" ]] || untimed+=("$target")
 done
 
 sf_log "running tests (log: ${SF_WS}/tests.log)"
 t0=$SECONDS
 base=(catkin_make -C "$SF_WS" -k -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3
   -DSF_PKG_HEAVY_TESTS=ON)
-prebuild=(tests)
 # Show the tests' own output, not catkin/CMake/make chatter.
 filter() {
   if [[ "$SF_VERBOSE" == 1 ]]; then
@@ -62,12 +62,9 @@ filter() {
 }
 run_steps() {
   local rc=0 t=$SECONDS
-  sf_log "step 1: building the tests (${prebuild[*]})"
-  "${base[@]}" -j"${SF_JOBS}" "${prebuild[@]}" || rc=$?
-  sf_log "step 1 took $((SECONDS - t)) s; step 2: ${groups[*]}"
-  t=$SECONDS
-  "${base[@]}" -j"${SF_JOBS}" "${groups[@]}" || rc=$?
-  sf_log "step 2 took $((SECONDS - t)) s"
+  sf_log "step 1: building the tests, and running those that do not depend on timing (${untimed[*]})"
+  "${base[@]}" -j"${SF_JOBS}" "${untimed[@]}" || rc=$?
+  sf_log "step 1 took $((SECONDS - t)) s"
   if ((${#timed_targets[@]})); then
     t=$SECONDS
     local paired=() alone=() target
@@ -79,14 +76,14 @@ run_steps() {
       fi
     done
     if ((${#paired[@]})); then
-      sf_log "step 3: ${paired[*]}, ${SF_ROSTEST_JOBS} at a time"
+      sf_log "step 2: ${paired[*]}, ${SF_ROSTEST_JOBS} at a time"
       "${base[@]}" -j"${SF_ROSTEST_JOBS}" "${paired[@]}" || rc=$?
     fi
     if ((${#alone[@]})); then
-      sf_log "step 3, one at a time: ${alone[*]}"
+      sf_log "step 2, one at a time: ${alone[*]}"
       "${base[@]}" -j1 "${alone[@]}" || rc=$?
     fi
-    sf_log "step 3 took $((SECONDS - t)) s"
+    sf_log "step 2 took $((SECONDS - t)) s"
   fi
   return "$rc"
 }
