@@ -23,7 +23,8 @@ SF_PACKAGE=sf_pkg
 
 # Debian packages needed to build and run the package (and its gtest and rostest tests; the
 # test command adds SF_TEST_DEB_PACKAGES below).
-# rosbash provides rosrun (ros-core only recommends it).
+# rosbash provides rosrun (ros-core only recommends it); make, which cmake only recommends, is
+# not on a minimal Debian 12 (checked in a fresh debootstrap, doc/build_cost.md "Round seven").
 # python3-diagnostic-msgs: the Python messages of /diagnostics, for `rostopic echo
 # /diagnostics`, tools/diagnostics_monitor.py and its test (ros-diagnostic-msgs has only the
 # .msg files). tf2-tools: tf2_ros's executables, `rosrun tf2_ros static_transform_publisher`
@@ -42,7 +43,7 @@ SF_DEB_PACKAGES=(
   python3-diagnostic-msgs tf2-tools python3-rosservice python3-rostopic
   libgeographiclib-dev
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools pluginlib-dev
-  cmake g++
+  cmake make g++
 )
 # Only the test command's (scripts/run_tests.sh): clang and libclang-rt-14-dev build
 # sf_estimation's sanitizer and libFuzzer checks (sf_estimation/scripts/sanitizer_checks.py),

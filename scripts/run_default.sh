@@ -9,6 +9,9 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 # Only what the job runs: the default Pioneer nodes and the moving train (with --all or
 # --exe, every target, as the report may then run any node). The default nodes are read
 # from the report's source, not imported: its modules need packages sf_prepare installs.
+# The packages first: on a fresh machine even /usr/bin/python3, which reads the default nodes
+# below, comes with them.
+sf_ensure_packages
 targets=(sf_moving_train)
 if [[ " $* " != *" --all "* && " $* " != *" --exe "* ]]; then
   mapfile -t -O 1 targets < <(/usr/bin/python3 -c '
@@ -17,6 +20,7 @@ for node in ast.parse(open(sys.argv[1]).read()).body:
     if isinstance(node, ast.Assign) and getattr(node.targets[0], "id", "") == "DEFAULT_CONFIGS":
         print("\n".join("sf_" + c for c in ast.literal_eval(node.value)))
 ' "${SF_REPO_ROOT}/tools/eval/pioneer_report.py")
+  ((${#targets[@]} > 1)) || sf_die "no default nodes read from tools/eval/pioneer_report.py (DEFAULT_CONFIGS)"
 else
   targets=()
 fi
