@@ -20,7 +20,8 @@ for node in ast.parse(open(sys.argv[1]).read()).body:
     if isinstance(node, ast.Assign) and getattr(node.targets[0], "id", "") == "DEFAULT_CONFIGS":
         print("\n".join("sf_" + c for c in ast.literal_eval(node.value)))
 ' "${SF_REPO_ROOT}/tools/eval/pioneer_report.py")
-  ((${#targets[@]} > 1)) || sf_die "no default nodes read from tools/eval/pioneer_report.py (DEFAULT_CONFIGS)"
+  ((${#targets[@]} > 1)) \
+    || sf_die "no default nodes read from tools/eval/pioneer_report.py (DEFAULT_CONFIGS)"
 else
   targets=()
 fi

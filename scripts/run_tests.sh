@@ -34,7 +34,8 @@ read -r -a timed <<<"$(sed -n 's/^SF_PKG_TIMED_TEST_GROUPS:INTERNAL=//p' "${buil
 SF_ROSTEST_JOBS="${SF_ROSTEST_JOBS:-2}"
 timed_targets=()
 for name in "${timed[@]}"; do
-  if has_target "run_tests_${SF_PACKAGE}_${name}"; then timed_targets+=("run_tests_${SF_PACKAGE}_${name}"); fi
+  target="run_tests_${SF_PACKAGE}_${name}"
+  if has_target "$target"; then timed_targets+=("$target"); fi
 done
 # Step 1: CMake's goal for sf_pkg (make runs the goals of a catkin build directory one after
 # another, but a goal's prerequisites side by side), and the whole run_tests target of the
@@ -62,7 +63,8 @@ filter() {
 }
 run_steps() {
   local rc=0 t=$SECONDS
-  sf_log "step 1: building the tests, and running those that do not depend on timing (${untimed[*]})"
+  sf_log "step 1: building the tests and running those that do not depend on timing" \
+    "(${untimed[*]})"
   "${base[@]}" -j"${SF_JOBS}" "${untimed[@]}" || rc=$?
   sf_log "step 1 took $((SECONDS - t)) s"
   if ((${#timed_targets[@]})); then

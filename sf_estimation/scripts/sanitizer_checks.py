@@ -27,10 +27,10 @@ compiled once for both (doc/build_cost.md, "Round seven").
       builds both programs and stops. The package's test command builds it with the other
       tests (CMake target sf_sanitizer_builds, a dependency of `tests`), so that no compiler
       competes with the timing-sensitive rostests; the checks then find the tree up to date.
-      --make "$(MAKE)" from a make recipe: the build joins that make's job server. Both checks may run
-      at the same time on one DIR: configuring and building take a lock on DIR.
+      --make "$(MAKE)" from a make recipe: the build joins that make's job server. Both
+      checks may run at the same time on one DIR: configuring and building take a lock on DIR.
 
-Both need clang and libclang-rt-14-dev (scripts/common.sh installs them).
+All need clang and libclang-rt-14-dev (scripts/run_tests.sh installs them).
 """
 
 import argparse
