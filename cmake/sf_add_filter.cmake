@@ -1,8 +1,9 @@
-# sf_add_filter(<node name> <configuration header> [NO_INSTALL] [NODELET <plugin xml>])
+# sf_add_filter(<node name> <configuration header> [NO_INSTALL | TEST] [NODELET <plugin xml>])
 #
 # Builds a fusion node executable from one configuration header (see doc/configuration.md)
 # and installs it into the package's lib/ folder (rosrun), unless NO_INSTALL is given (a node
-# only for tests). Exported through catkin: a package that find_package()s sf_pkg can call it
+# that is not installed) or TEST (a node only for tests: not installed either, and built with
+# the tests, by catkin's `tests` and `run_tests` targets, not by `all`). Exported through catkin: a package that find_package()s sf_pkg can call it
 # with its own headers. The header path is relative to the calling CMakeLists.txt or absolute.
 #
 # NODELET <plugin xml>: also the nodelet plugin library lib<node name>_nodelet with the class
@@ -70,6 +71,16 @@ function(_sf_filter_unit_flags target)
   endif()
 endfunction()
 
+# Targets only tests use: built by catkin's `tests` target (which `run_tests` builds), not by
+# `all`, so that a package's build compiles what it ships.
+function(_sf_build_with_tests)
+  set_target_properties(${ARGN} PROPERTIES EXCLUDE_FROM_ALL TRUE)
+  if(NOT TARGET tests)
+    add_custom_target(tests)
+  endif()
+  add_dependencies(tests ${ARGN})
+endfunction()
+
 # The prelude (sf_filter/node_unit_prelude.hpp: Eigen, ROS serialization, the common messages,
 # the filters, the fusion core) is precompiled once per package, by the first sf_add_filter()
 # call, and force-included in every unit of the package: parsing it was 40 % of a unit's
@@ -99,7 +110,12 @@ function(_sf_filter_includes target)
     target_include_directories(${target} PRIVATE
       $<TARGET_PROPERTY:sf_fusion_node,INTERFACE_INCLUDE_DIRECTORIES>)
     target_compile_definitions(${target} PRIVATE
-      $<TARGET_PROPERTY:sf_fusion_node,INTERFACE_COMPILE_DEFINITIONS>)
+      $<TARGET_PROPERTY:sf_fusion_node,INTERFACE_COMPILE_DEFINITIONS>
+      $<TARGET_PROPERTY:sf_estimation,INTERFACE_COMPILE_DEFINITIONS>)
+  else()
+    # Installed: the Eigen setting sf_estimation's own target carries (SF_ESTIMATION_EIGEN_DEFINITIONS
+    # in sf_estimation/CMakeLists.txt), which catkin's exported variables do not.
+    target_compile_definitions(${target} PRIVATE EIGEN_CACHEFRIENDLY_PRODUCT_THRESHOLD=16)
   endif()
   # The message headers (sf_msgs) are generated before the node compiles when sf_msgs is in
   # the same workspace (catkin defines empty targets for installed packages).
@@ -116,7 +132,7 @@ function(_sf_filter_link target)
 endfunction()
 
 function(sf_add_filter name header)
-  cmake_parse_arguments(_sf "NO_INSTALL" "NODELET" "" ${ARGN})
+  cmake_parse_arguments(_sf "NO_INSTALL;TEST" "NODELET" "" ${ARGN})
   if(_sf_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "sf_add_filter(${name}): unknown arguments ${_sf_UNPARSED_ARGUMENTS}")
   endif()
@@ -138,6 +154,10 @@ function(sf_add_filter name header)
   endif()
   _sf_filter_unit(${_unit} "${_header}")
   add_executable(${name} $<TARGET_OBJECTS:${_unit}>)
+  if(_sf_TEST)
+    set(_sf_NO_INSTALL TRUE)
+    _sf_build_with_tests(${_unit} ${name})
+  endif()
   if(_sf_NODELET)
     add_library(${name}_nodelet SHARED "${SF_PKG_NODELET_PLUGIN}" $<TARGET_OBJECTS:${_unit}>)
     target_compile_definitions(${name}_nodelet PRIVATE SF_NODELET_CLASS=${name})
@@ -157,7 +177,9 @@ function(sf_add_filter name header)
     target_link_options(${name}_nodelet PRIVATE "LINKER:-Bsymbolic")
     set_target_properties(${name}_nodelet PROPERTIES LIBRARY_OUTPUT_DIRECTORY
       "${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_LIB_DESTINATION}")
-    if(NOT _sf_NO_INSTALL)
+    if(_sf_TEST)
+      _sf_build_with_tests(${name}_nodelet)
+    elseif(NOT _sf_NO_INSTALL)
       install(TARGETS ${name}_nodelet LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
     endif()
   endif()

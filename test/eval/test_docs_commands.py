@@ -5,7 +5,7 @@ commands out of their code blocks and checks, without running them, that what th
 there:
   - `rosrun sf_pkg X`: X is an executable that CMakeLists.txt builds (sf_add_filter,
     add_executable, also in add_subdirectory()'d CMakeLists) and installs (install(TARGETS),
-    sf_add_filter without NO_INSTALL), or a script of the tree with mode 755 that the install
+    sf_add_filter without NO_INSTALL or TEST), or a script of the tree with mode 755 that the install
     rules install;
   - `roslaunch sf_pkg X`: launch/X exists;
   - `bash scripts/...`, `python3 tools/...` and the like: the file exists; a script called
@@ -320,7 +320,7 @@ class CMakeTargets:
             if "IMPORTED" in values or "ALIAS" in values:
                 return
             self._target(values[0])
-            if name == "sf_add_filter" and "NO_INSTALL" not in values:
+            if name == "sf_add_filter" and not {"NO_INSTALL", "TEST"} & set(values):
                 self.installed.add(values[0])
         elif name == "install" and values and values[0] == "TARGETS":
             for v in values[1:]:
@@ -533,7 +533,8 @@ class CMakeReadingTest(unittest.TestCase):
                 f.write('set(CONFIGS a b) # comment (with parentheses)\n'
                         'set(MORE c)\nlist(TRANSFORM MORE PREPEND sf_)\n'
                         'foreach(config ${CONFIGS})\n  sf_add_filter(sf_${config} x.h)\nendforeach()\n'
-                        'sf_add_filter(sf_only_tested t.h NO_INSTALL)\n'
+                        'sf_add_filter(sf_only_tested t.h TEST)\n'
+                        'sf_add_filter(sf_not_installed n.h NO_INSTALL)\n'
                         'function(helper name)\n  add_executable(${name} y.cpp)\nendfunction()\n'
                         'if(FOO)\n  add_executable(node_${MORE} "z.cpp")\nendif()\n'
                         'catkin_install_python(PROGRAMS tools/a.py tools/b.py\n'
@@ -548,7 +549,8 @@ class CMakeReadingTest(unittest.TestCase):
                         'install(TARGETS ${EXES} RUNTIME DESTINATION bin)\n')
             targets = CMakeTargets(tmp)
         self.assertEqual(targets.executables,
-                         {"sf_a", "sf_b", "sf_only_tested", "node_sf_c", "sf_demo"})
+                         {"sf_a", "sf_b", "sf_only_tested", "sf_not_installed", "node_sf_c",
+                          "sf_demo"})
         self.assertEqual(targets.installed, {"sf_a", "sf_b", "sf_demo"})
         self.assertEqual(targets.unresolved, [])
         self.assertEqual(targets.programs, {"tools/a.py", "tools/b.py"})
