@@ -3,8 +3,8 @@
 # Builds a fusion node executable from one configuration header (see doc/configuration.md)
 # and installs it into the package's lib/ folder (rosrun), unless NO_INSTALL is given (a node
 # that is not installed) or TEST (a node only for tests: not installed either, and built with
-# the tests, by catkin's `tests` and `run_tests` targets, not by `all`). Exported through catkin: a package that find_package()s sf_pkg can call it
-# with its own headers. The header path is relative to the calling CMakeLists.txt or absolute.
+# the tests, by catkin's `tests` and `run_tests` targets, not by `all`). Exported through
+# catkin: a package that find_package()s sf_pkg can call it with its own headers. The header path is relative to the calling CMakeLists.txt or absolute.
 #
 # NODELET <plugin xml>: also the nodelet plugin library lib<node name>_nodelet with the class
 # sf_nodelets::<node name> (doc/filter_node.md#nodelet). The header's translation unit is
@@ -113,8 +113,9 @@ function(_sf_filter_includes target)
       $<TARGET_PROPERTY:sf_fusion_node,INTERFACE_COMPILE_DEFINITIONS>
       $<TARGET_PROPERTY:sf_estimation,INTERFACE_COMPILE_DEFINITIONS>)
   else()
-    # Installed: the Eigen setting sf_estimation's own target carries (SF_ESTIMATION_EIGEN_DEFINITIONS
-    # in sf_estimation/CMakeLists.txt), which catkin's exported variables do not.
+    # Installed: the Eigen setting that sf_estimation's target carries
+    # (SF_ESTIMATION_EIGEN_DEFINITIONS in sf_estimation/CMakeLists.txt), which catkin's
+    # exported variables do not.
     target_compile_definitions(${target} PRIVATE EIGEN_CACHEFRIENDLY_PRODUCT_THRESHOLD=16)
   endif()
   # The message headers (sf_msgs) are generated before the node compiles when sf_msgs is in
