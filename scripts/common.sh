@@ -46,8 +46,7 @@ SF_DEB_PACKAGES=(
   cmake make g++
 )
 # Only the test command's (scripts/run_tests.sh): clang and libclang-rt-14-dev build
-# sf_estimation's libFuzzer check (sf_estimation/scripts/sanitizer_checks.py; the sanitized unit
-# tests use GCC's runtimes, which come with g++),
+# sf_estimation's sanitizer and libFuzzer checks (sf_estimation/scripts/sanitizer_checks.py),
 # stress-ng is the load of the under-load check: 320 of the 1654 MB a fresh Debian 12 installs,
 # which the main job does not need (doc/build_cost.md, "Round seven").
 # shellcheck disable=SC2034  # read by scripts/run_tests.sh

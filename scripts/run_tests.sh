@@ -8,7 +8,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 # The package's own heavy checks (sanitizers, fuzzing, soak) are part of this command.
-SF_CMAKE_ARGS=(-DSF_PKG_HEAVY_TESTS=ON)
+SF_CMAKE_ARGS=(-DSF_PKG_HEAVY_TESTS=ON -DSF_ESTIMATION_EXPLICIT_INSTANCES=ON)
 SF_DEB_PACKAGES+=("${SF_TEST_DEB_PACKAGES[@]}")
 sf_prepare
 
@@ -48,7 +48,7 @@ done
 sf_log "running tests (log: ${SF_WS}/tests.log)"
 t0=$SECONDS
 base=(catkin_make -C "$SF_WS" -k -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3
-  -DSF_PKG_HEAVY_TESTS=ON)
+  "${SF_CMAKE_ARGS[@]}")
 # Show the tests' own output, not catkin/CMake/make chatter.
 filter() {
   if [[ "$SF_VERBOSE" == 1 ]]; then

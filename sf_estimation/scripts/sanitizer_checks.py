@@ -23,12 +23,10 @@ compiled once for both (doc/build_cost.md, "Round seven").
       input), leak, sanitizer report or an exception other than estimation::EstimationError
       fails the check; libFuzzer then leaves the input as DIR/crash-* (or leak-*, timeout-*).
 
-  sanitizer_checks.py build --build-dir DIR [--programs unit-tests fuzz] [--make MAKE]
-      builds the programs (default both) and stops. The package's test command builds the
-      fuzzer so with the other tests (CMake target sf_sanitizer_builds, a dependency of `tests`),
-      so that no compiler competes with the timing-sensitive rostests; the fuzz check then finds
-      the tree up to date. (Its unit tests run sanitized in the catkin build itself, compiled by
-      GCC: -DSF_ESTIMATION_SANITIZE_TESTS=ON.)
+  sanitizer_checks.py build --build-dir DIR [--make MAKE]
+      builds both programs and stops. The package's test command builds it with the other
+      tests (CMake target sf_sanitizer_builds, a dependency of `tests`), so that no compiler
+      competes with the timing-sensitive rostests; the checks then find the tree up to date.
       --make "$(MAKE)" from a make recipe: the build joins that make's job server. Both
       checks may run at the same time on one DIR: configuring and building take a lock on DIR.
 
@@ -62,7 +60,8 @@ def run(cmd, **kwargs):
 CONFIGURE_OPTIONS = ["-DCMAKE_BUILD_TYPE=Sanitize", "-DCMAKE_CXX_COMPILER=clang++",
                      "-DSF_ESTIMATION_SANITIZE=ON", "-DSF_ESTIMATION_FUZZ=ON",
                      "-DSF_ESTIMATION_BUILD_TESTS=ON", "-DSF_ESTIMATION_EXPLICIT_INSTANCES=OFF"]
-TARGETS = {"unit-tests": ["sf_estimation_tests"], "fuzz": ["sf_estimation_fuzz"]}
+TARGETS = {"unit-tests": ["sf_estimation_tests"], "fuzz": ["sf_estimation_fuzz"],
+           "build": ["sf_estimation_tests", "sf_estimation_fuzz"]}
 
 
 def jobserver_fds():
@@ -177,8 +176,7 @@ def fuzz(args):
 
 
 def build_only(args):
-    targets = [t for program in args.programs for t in TARGETS[program]]
-    return 0 if build(args.build_dir, targets, args.jobs, args.make) else 1
+    return 0 if build(args.build_dir, TARGETS["build"], args.jobs, args.make) else 1
 
 
 def main():
@@ -189,8 +187,6 @@ def main():
         p.add_argument("--build-dir", required=True)
         p.add_argument("-j", "--jobs", type=int, default=2)
         if name == "build":
-            p.add_argument("--programs", nargs="+", choices=sorted(TARGETS),
-                           default=sorted(TARGETS), help="what to build (default: both)")
             p.add_argument("--make", help="the calling make (a recipe's $(MAKE)): join its "
                            "job server when MAKEFLAGS names one")
         else:
