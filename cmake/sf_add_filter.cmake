@@ -4,7 +4,8 @@
 # and installs it into the package's lib/ folder (rosrun), unless NO_INSTALL is given (a node
 # that is not installed) or TEST (a node only for tests: not installed either, and built with
 # the tests, by catkin's `tests` and `run_tests` targets, not by `all`). Exported through
-# catkin: a package that find_package()s sf_pkg can call it with its own headers. The header path is relative to the calling CMakeLists.txt or absolute.
+# catkin: a package that find_package()s sf_pkg can call it with its own headers. The header
+# path is relative to the calling CMakeLists.txt or absolute.
 #
 # NODELET <plugin xml>: also the nodelet plugin library lib<node name>_nodelet with the class
 # sf_nodelets::<node name> (doc/filter_node.md#nodelet). The header's translation unit is

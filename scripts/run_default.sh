@@ -24,7 +24,7 @@ for node in ast.parse(open(sys.argv[1]).read()).body:
     || sf_die "no default nodes read from tools/eval/pioneer_report.py (DEFAULT_CONFIGS)"
   # Nine nodes built once: each compiles the fixed-size steps of its own sizes, instead of the
   # library compiling the whole size grid for every node to come (doc/build_cost.md, "The main
-  # job's build"). Every other build of the workspace turns the grid back on.
+  # job's build"). run_tests.sh and --all turn the grid back on.
   SF_CMAKE_ARGS=(-DSF_ESTIMATION_EXPLICIT_INSTANCES=OFF)
 else
   targets=()
