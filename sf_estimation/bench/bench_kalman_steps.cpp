@@ -3,7 +3,8 @@
 // at the sizes of the shipped headers (nav3ctrl: 7 states, 4 measurements; the Husky GPS
 // header: 8 states) and at 8 x 6, the largest of the grid. At 8 states Eigen would evaluate the
 // products with its matrix-matrix kernel unless the threshold of sf_estimation's target
-// (EIGEN_CACHEFRIENDLY_PRODUCT_THRESHOLD) is raised: doc/build_cost.md, "Round eight".
+// (EIGEN_CACHEFRIENDLY_PRODUCT_THRESHOLD) is raised: doc/build_cost.md, "Eigen's fixed-size
+// products".
 #include <benchmark/benchmark.h>
 
 #include "sf_estimation/kalman_correction.hpp"
