@@ -7,6 +7,12 @@
 // The innovation covariance is then block-diagonal with an identity block, its inverse is the
 // reduced inverse padded with that identity, and the gain's column for the missing entry is
 // zero: exactly the reduced update, covariance included.
+//
+// Products are written as `out.noalias() = a.lazyProduct(b)`: for the small fixed sizes here
+// that is the coefficient loop Eigen's `a * b` would pick anyway (the same sums in the same
+// order), without the temporary and the product dispatch that a plain `=` instantiates for
+// every expression; those made up most of a grid unit's compile time (doc/build_cost.md,
+// "Lazy products").
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -78,17 +84,25 @@ void kalmanGain(const Matrix<N, M>& crossCovariance, const Matrix<M, M>& S, Matr
 template <int N, int M>
 void linearCorrection(Vector<N>& x, Matrix<N, N>& P, const Matrix<M, N>& H, const Vector<M>& y,
                       const Matrix<M, M>& R) {
-  const Matrix<N, M> PHt = P * H.transpose();
-  Matrix<M, M> S = H * PHt + R;
+  const Index n = P.rows();
+  const Index m = H.rows();
+  Matrix<N, M> PHt(n, m);
+  PHt.noalias() = P.lazyProduct(H.transpose());
+  Matrix<M, M> S = R;
+  S.noalias() += H.lazyProduct(PHt);
   symmetrize(S);
-  Matrix<N, M> K(P.rows(), H.rows());
+  Matrix<N, M> K(n, m);
   kalmanGain<N, M>(PHt, S, K);
-  x += K * y;
-  Matrix<N, N> IKH = -K * H;
-  IKH.diagonal().array() += 1.0;
+  x.noalias() += K.lazyProduct(y);
+  Matrix<N, N> IKH = Matrix<N, N>::Identity(n, n);
+  IKH.noalias() -= K.lazyProduct(H);
   // (I - K H) P = P - K (P H^T)^T as P is symmetric: reuses P H^T, n^2 m instead of n^3.
-  const Matrix<N, N> IKHP = P - K * PHt.transpose();
-  P = IKHP * IKH.transpose() + K * R * K.transpose();
+  Matrix<N, N> IKHP = P;
+  IKHP.noalias() -= K.lazyProduct(PHt.transpose());
+  Matrix<N, M> KR(n, m);
+  KR.noalias() = K.lazyProduct(R);
+  P.noalias() = IKHP.lazyProduct(IKH.transpose());
+  P.noalias() += KR.lazyProduct(K.transpose());
 }
 
 /// Correction of (x, P) from the predicted measurement's mean zMean and covariance Pzz (R
@@ -119,22 +133,29 @@ void crossCovarianceCorrection(const Measurement<M>& z, const Vector<M>& zMean,
   symmetrize(S);
   Matrix<N, M> K(x.size(), m);
   kalmanGain<N, M>(Pxz, S, K);
-  x += K * y;
-  P -= K * S * K.transpose();
+  x.noalias() += K.lazyProduct(y);
+  Matrix<N, M> KS(x.size(), m);
+  KS.noalias() = K.lazyProduct(S);
+  P.noalias() -= KS.lazyProduct(K.transpose());
 }
 
 /// Covariance time update P_next = A P A^T + Q, shared by KF and EKF.
 template <int N>
 void propagateCovariance(const Matrix<N, N>& A, const Matrix<N, N>& P, const Matrix<N, N>& Q,
                          Matrix<N, N>& next) {
-  next = A * P * A.transpose() + Q;
+  Matrix<N, N> AP(A.rows(), P.cols());
+  AP.noalias() = A.lazyProduct(P);
+  next = Q;
+  next.noalias() += AP.lazyProduct(A.transpose());
 }
 
 /// Covariance of a linear(ised) measurement of the state, H P H^T, shared by KF and EKF
 /// (their measurement predictions for the gate and the NIS check).
 template <int N, int M>
 void projectCovariance(const Matrix<M, N>& H, const Matrix<N, N>& P, Matrix<M, M>& out) {
-  out = H * P * H.transpose();
+  Matrix<M, N> HP(H.rows(), P.cols());
+  HP.noalias() = H.lazyProduct(P);
+  out.noalias() = HP.lazyProduct(H.transpose());
 }
 
 // The size-only steps above are compiled once in the library for the state sizes N = 1..8

@@ -41,9 +41,17 @@ void requireSize(const std::string& method, const std::string& name,
 void requireCovariance(const std::string& method, const std::string& name,
                        const Eigen::Ref<const Eigen::MatrixXd>& value, Index size, bool strict);
 
+/// P <- (P + P^T) / 2, in place (a loop: the expression form cost a temporary and its own
+/// instantiations per size).
 template <class Derived>
 void symmetrize(Eigen::MatrixBase<Derived>& P) {
-  P = (0.5 * (P + P.transpose())).eval();
+  for (Index j = 0; j < P.cols(); ++j) {
+    for (Index i = j + 1; i < P.rows(); ++i) {
+      const double mean = 0.5 * (P(i, j) + P(j, i));
+      P(i, j) = mean;
+      P(j, i) = mean;
+    }
+  }
 }
 
 }  // namespace estimation
