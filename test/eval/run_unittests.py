@@ -21,7 +21,12 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 
 
 class RecordingResult(unittest.TextTestResult):
-    """TextTestResult that also keeps (test id, outcome, detail, seconds) per test."""
+    """TextTestResult that also keeps (test id, outcome, detail, seconds) per test.
+
+    A test whose subTest failed gets neither addSuccess nor addFailure from unittest, only
+    addSubTest: each failed subtest is recorded as a case of its own (the test's name plus
+    the subtest's parameters), so that the JUnit file counts it as failed instead of
+    leaving the test out."""
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
@@ -32,9 +37,16 @@ class RecordingResult(unittest.TextTestResult):
         self._started[test.id()] = time.monotonic()
         super().startTest(test)
 
-    def _record(self, test, outcome, detail=""):
+    def _record(self, test, outcome, detail="", label=""):
         t0 = self._started.get(test.id(), time.monotonic())
-        self.records.append((test.id(), outcome, detail, time.monotonic() - t0))
+        self.records.append((test.id(), label, outcome, detail, time.monotonic() - t0))
+
+    def addSubTest(self, test, subtest, err):
+        super().addSubTest(test, subtest, err)
+        if err is not None:
+            outcome = "failure" if issubclass(err[0], test.failureException) else "error"
+            self._record(test, outcome, "".join(traceback.format_exception(*err)),
+                         label=subtest._subDescription())
 
     def addSuccess(self, test):
         super().addSuccess(test)
@@ -62,15 +74,15 @@ class RecordingResult(unittest.TextTestResult):
 
 
 def write_junit(path, records, suite_name):
-    count = lambda o: sum(1 for r in records if r[1] == o)
+    count = lambda o: sum(1 for r in records if r[2] == o)
     suite = ET.Element("testsuite", name=suite_name, tests=str(len(records)),
                        failures=str(count("failure")), errors=str(count("error")),
                        skipped=str(count("skipped")),
-                       time="%.3f" % sum(r[3] for r in records))
-    for test_id, outcome, detail, seconds in records:
+                       time="%.3f" % sum(r[4] for r in records))
+    for test_id, label, outcome, detail, seconds in records:
         classname, _, name = test_id.rpartition(".")
-        case = ET.SubElement(suite, "testcase", classname=classname, name=name,
-                             time="%.3f" % seconds)
+        case = ET.SubElement(suite, "testcase", classname=classname,
+                             name=name + (" " + label if label else ""), time="%.3f" % seconds)
         if outcome in ("failure", "error"):
             last = detail.strip().splitlines()[-1] if detail.strip() else outcome
             ET.SubElement(case, outcome, message=last).text = detail
