@@ -19,8 +19,8 @@ rm -rf "$results"
 # (doc/reliability.md, "Test order"): (1) one goal, sf_untimed_tests, builds every test
 # executable and the sanitizer tree (`tests`) and runs the tests that do not depend on timing,
 # each as soon as what it runs is built, two jobs at a time; (2) the rostests run two at a time
-# (SF_ROSTEST_JOBS), then the soak and the under-load check (which brings its own load,
-# stress-ng) one at a time. Under a plain `catkin_make -j2 run_tests` a compiler or the fuzz
+# (SF_ROSTEST_JOBS) but those playing a bag in real time alone, then the soak and the
+# under-load check (which brings its own load, stress-ng) one at a time. Under a plain `catkin_make -j2 run_tests` a compiler or the fuzz
 # run would compete with the 1 kHz nodes of the online tests, a load nobody chose and no test
 # asserts against.
 build_dir="${SF_WS}/build"
@@ -30,7 +30,8 @@ has_target() { grep -qx -- "$1" <<<"$make_targets"; }
 read -r -a timed <<<"$(sed -n 's/^SF_PKG_TIMED_TEST_GROUPS:INTERNAL=//p' "${build_dir}/CMakeCache.txt" \
   | tr ';' ' ')"
 # Each rostest has its own master and waits for events, not for time; two at a time took the
-# rostests from 230 to 120 s on 2 cores with the same margins (doc/reliability.md).
+# rostests from 230 to 120 s on 2 cores with the same margins (doc/reliability.md). Those that
+# play a bag in real time against the node's offline replay run alone (sf_online_rostests).
 SF_ROSTEST_JOBS="${SF_ROSTEST_JOBS:-2}"
 timed_targets=()
 for name in "${timed[@]}"; do
@@ -77,7 +78,13 @@ run_steps() {
         alone+=("$target")
       fi
     done
-    if ((${#paired[@]})); then
+    if ((${#paired[@]})) && has_target sf_paired_rostests && has_target sf_online_rostests; then
+      # The rostests that compare the node online with its replay run alone (CMakeLists.txt).
+      sf_log "step 2: the rostests, ${SF_ROSTEST_JOBS} at a time (sf_paired_rostests)," \
+        "then those playing a bag in real time one at a time (sf_online_rostests)"
+      "${base[@]}" -j"${SF_ROSTEST_JOBS}" sf_paired_rostests || rc=$?
+      "${base[@]}" -j1 sf_online_rostests || rc=$?
+    elif ((${#paired[@]})); then
       sf_log "step 2: ${paired[*]}, ${SF_ROSTEST_JOBS} at a time"
       "${base[@]}" -j"${SF_ROSTEST_JOBS}" "${paired[@]}" || rc=$?
     fi
