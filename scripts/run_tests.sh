@@ -20,9 +20,9 @@ rm -rf "$results"
 # executable and the sanitizer tree (`tests`) and runs the tests that do not depend on timing,
 # each as soon as what it runs is built, two jobs at a time; (2) the rostests run two at a time
 # (SF_ROSTEST_JOBS) but those playing a bag in real time alone, then the soak and the
-# under-load check (which brings its own load, stress-ng) one at a time. Under a plain `catkin_make -j2 run_tests` a compiler or the fuzz
-# run would compete with the 1 kHz nodes of the online tests, a load nobody chose and no test
-# asserts against.
+# under-load check (which brings its own load, stress-ng) one at a time. Under a plain
+# `catkin_make -j2 run_tests` a compiler or the fuzz run would compete with the 1 kHz nodes of
+# the online tests, a load nobody chose and no test asserts against.
 build_dir="${SF_WS}/build"
 make_targets="$(make -C "$build_dir" help 2>/dev/null | sed -n 's/^\.\.\. \([^ ]*\).*$/\1/p')"
 has_target() { grep -qx -- "$1" <<<"$make_targets"; }

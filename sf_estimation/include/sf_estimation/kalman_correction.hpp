@@ -9,10 +9,13 @@
 // zero: exactly the reduced update, covariance included.
 //
 // Products are written as `out.noalias() = a.lazyProduct(b)`: for the small fixed sizes here
-// that is the coefficient loop Eigen's `a * b` would pick anyway (the same sums in the same
-// order), without the temporary and the product dispatch that a plain `=` instantiates for
-// every expression; those made up most of a grid unit's compile time (doc/build_cost.md,
-// "Lazy products").
+// that is the coefficient-based product Eigen's `a * b` picks anyway, without the temporary
+// and the product dispatch that a plain `=` instantiates for every expression; those made up
+// most of a grid unit's compile time (doc/build_cost.md, "Lazy products"). Some results can
+// differ from the expression form's in the last bit (Eigen evaluated those expressions in
+// another order; the cause was not traced further). Dynamic sizes take the same coefficient loop,
+// which suits the factory's small filters; Eigen's blocked product would only pay off from a few
+// dozen states.
 #pragma once
 
 #include <Eigen/Cholesky>
