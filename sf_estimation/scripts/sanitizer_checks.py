@@ -5,11 +5,12 @@ catkin_test_results.
 
 One build directory serves both commands: it is configured with the sanitizers, the unit
 tests and the fuzz target (-DSF_ESTIMATION_FUZZ=ON, which instruments the library for
-libFuzzer's coverage as well), build type Sanitize (-O1, Eigen assertions on), and without the
-library's generated fixed-size instances (-DSF_ESTIMATION_EXPLICIT_INSTANCES=OFF): the tests
-and the fuzzer instantiate the same templates for the sizes they use, which costs 30 % less
-CPU than compiling the whole size grid under the sanitizers. The library's sources are
-compiled once for both (doc/build_cost.md, "Round seven").
+libFuzzer's coverage as well), build type Sanitize (-O0 with line tables, Eigen assertions
+on), and without the library's generated fixed-size instances
+(-DSF_ESTIMATION_EXPLICIT_INSTANCES=OFF): the tests and the fuzzer instantiate the same
+templates for the sizes they use, which costs 30 % less CPU than compiling the whole size
+grid under the sanitizers. The library's sources are compiled once for both
+(doc/build_cost.md, "Round seven").
 
   sanitizer_checks.py unit-tests --build-dir DIR [--junit FILE]
       builds sf_estimation_tests in DIR and runs every test; any sanitizer report aborts the

@@ -9,8 +9,6 @@
 #include <random>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
-
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/models/navigation.hpp"
 #include "sf_estimation/types.hpp"
@@ -44,11 +42,11 @@ double relDiff(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& ref) {
   return scale > 0.0 ? diff / scale : diff;
 }
 
+/// The eigenvalues of a symmetric matrix, in increasing order.
+Eigen::VectorXd symmetricEigenvalues(const Eigen::MatrixXd& P);
+
 /// A square root of a symmetric positive semi-definite matrix (for simulating noise).
-inline Eigen::MatrixXd psdRoot(const Eigen::MatrixXd& P) {
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(P);
-  return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
-}
+Eigen::MatrixXd psdRoot(const Eigen::MatrixXd& P);
 
 /// One step of input: the control set before the step and the measurement of the step.
 template <int M, int L>
@@ -62,10 +60,10 @@ struct Step {
 /// `missingProbability`) and every `allMissingEvery`-th step without any measurement.
 template <int N, int M, int L>
 std::vector<Step<M, L>> simulateLinear(const Matrix<N, N>& A, const Matrix<N, L>& B,
-                                        const Matrix<M, N>& H, const Matrix<N, N>& Q,
-                                        const Matrix<M, M>& R, const Vector<N>& x0, int steps,
-                                        std::uint64_t seed, double missingProbability,
-                                        int allMissingEvery, double controlScale) {
+                                       const Matrix<M, N>& H, const Matrix<N, N>& Q,
+                                       const Matrix<M, M>& R, const Vector<N>& x0, int steps,
+                                       std::uint64_t seed, double missingProbability,
+                                       int allMissingEvery, double controlScale) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -95,35 +93,8 @@ std::vector<Step<M, L>> simulateLinear(const Matrix<N, N>& A, const Matrix<N, L>
 /// |omega| < 0.7 rad/s, |a| < 1 m/s^2) for the nav3 models: controls u = (v command, omega
 /// command), measurements (gyro, accelerometer, left wheel, right wheel) with the noise of
 /// nav3MeasurementNoise(), random missing entries and every `allMissingEvery`-th step empty.
-inline std::vector<Step<4, 2>> simulateNav3Drive(int steps, std::uint64_t seed,
-                                                 double missingProbability, int allMissingEvery,
-                                                 double T = 0.1, double radius = 0.3) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  std::bernoulli_distribution missing(missingProbability);
-  const double f1 = 0.05 + 0.2 * uniform(rng), f2 = 0.05 + 0.2 * uniform(rng);
-  const double p1 = 6.3 * uniform(rng), p2 = 6.3 * uniform(rng);
-  const Vector<4> sigma = estimation::models::nav3MeasurementNoise().diagonal().cwiseSqrt();
-  auto speed = [&](double t) { return 0.4 + 0.5 * std::sin(f1 * t + p1); };
-  auto turn = [&](double t) { return 0.6 * std::sin(f2 * t + p2); };
-  std::vector<Step<4, 2>> run;
-  for (int k = 0; k < steps; ++k) {
-    const double t = k * T;
-    Step<4, 2> step{Vector<2>(speed(t + T), turn(t + T)), Measurement<4>(4)};
-    const double v = speed(t), omega = turn(t);
-    const double a = 0.5 * f1 * std::cos(f1 * t + p1);
-    step.z.value << omega + sigma(0) * normal(rng), a + sigma(1) * normal(rng),
-        1000.0 * (v - radius * omega) + sigma(2) * normal(rng),
-        1000.0 * (v + radius * omega) + sigma(3) * normal(rng);
-    for (Index i = 0; i < 4; ++i) step.z.available(i) = !missing(rng);
-    if (allMissingEvery > 0 && k % allMissingEvery == allMissingEvery - 1) {
-      step.z.available.setConstant(false);
-    }
-    run.push_back(step);
-  }
-  return run;
-}
+std::vector<Step<4, 2>> simulateNav3Drive(int steps, std::uint64_t seed, double missingProbability,
+                                          int allMissingEvery, double T = 0.1, double radius = 0.3);
 
 /// Hand-derived Jacobian of the nav3ctrl transition (eqs. 5.8-5.14) at x:
 ///   x'     = x + ds cos(th)  -> d/dth = -ds sin(th), d/dds = cos(th)
@@ -133,38 +104,12 @@ inline std::vector<Step<4, 2>> simulateNav3Drive(int steps, std::uint64_t seed,
 ///   ds'    = v T             -> d/dv = T
 ///   v'     = v + a T         -> d/da = T
 ///   a'     = (u0 - v) / T    -> d/dv = -1/T
-inline Matrix<7, 7> nav3CtrlTransitionJacobian(const estimation::models::Nav3Ctrl& model,
-                                               const Vector<7>& x) {
-  const double T = model.T, th = x(2), ds = x(4);
-  Matrix<7, 7> A = Matrix<7, 7>::Zero();
-  A(0, 0) = 1.0;
-  A(0, 2) = -ds * std::sin(th);
-  A(0, 4) = std::cos(th);
-  A(1, 1) = 1.0;
-  A(1, 2) = ds * std::cos(th);
-  A(1, 4) = std::sin(th);
-  A(2, 2) = 1.0;
-  A(2, 3) = T;
-  A(4, 5) = T;
-  A(5, 5) = 1.0;
-  A(5, 6) = T;
-  A(6, 5) = -1.0 / T;
-  return A;
-}
+Matrix<7, 7> nav3CtrlTransitionJacobian(const estimation::models::Nav3Ctrl& model,
+                                        const Vector<7>& x);
 
 /// Hand-derived Jacobian of the nav3 observation (eqs. 5.15-5.18):
 ///   [0 0 0 1 0 0 0], [0 0 0 0 0 0 1], [0 0 0 -1000R 0 1000 0], [0 0 0 1000R 0 1000 0].
-inline Matrix<4, 7> nav3CtrlObservationJacobian(const estimation::models::Nav3Ctrl& model) {
-  const double R = model.radius;
-  Matrix<4, 7> H = Matrix<4, 7>::Zero();
-  H(0, 3) = 1.0;
-  H(1, 6) = 1.0;
-  H(2, 3) = -1000.0 * R;
-  H(2, 5) = 1000.0;
-  H(3, 3) = 1000.0 * R;
-  H(3, 5) = 1000.0;
-  return H;
-}
+Matrix<4, 7> nav3CtrlObservationJacobian(const estimation::models::Nav3Ctrl& model);
 
 /// The model `Model` observing only the measurement rows in `rows` (in that order).
 template <class Model>
@@ -187,8 +132,7 @@ struct RowSubsetModel {
   }
 
   template <class S>
-  void observation(const Eigen::Matrix<S, StateSize, 1>& x,
-                   Eigen::Matrix<S, Dynamic, 1>& z) const {
+  void observation(const Eigen::Matrix<S, StateSize, 1>& x, Eigen::Matrix<S, Dynamic, 1>& z) const {
     Eigen::Matrix<S, Model::MeasurementSize, 1> full(model.measurementSize());
     model.observation(x, full);
     z.resize(measurementSize());
@@ -245,20 +189,7 @@ Measurement<Dynamic> selectMeasurement(const Measurement<M>& z, const std::vecto
 
 /// A symmetric positive definite 4x4 measurement noise with correlated entries, on the
 /// scales of nav3's sensors (gyro rad/s, accelerometer m/s^2, wheels mm/s).
-inline Matrix<4, 4> correlatedNav3MeasurementNoise() {
-  Matrix<4, 4> L = Matrix<4, 4>::Zero();
-  L(0, 0) = 0.013;
-  L(1, 0) = 0.01;
-  L(1, 1) = 0.5;
-  L(2, 0) = 0.2;
-  L(2, 1) = 0.1;
-  L(2, 2) = 1.4;
-  L(3, 0) = -0.2;
-  L(3, 1) = 0.1;
-  L(3, 2) = 0.3;
-  L(3, 3) = 1.3;
-  return L * L.transpose();
-}
+Matrix<4, 4> correlatedNav3MeasurementNoise();
 
 /// x' = x (scalar random walk), z = x^2: the simplest nonlinear observation, with the
 /// Jacobian 2x and closed-form unscented moments.

@@ -9,7 +9,6 @@
 #include <random>
 #include <string>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include "filter_test_utils.hpp"
@@ -104,19 +103,17 @@ TEST(NumericsInnovation, NegativeUnscentedInnovationVariance) {
 
 TEST(NumericsOverflow, NonFiniteEstimateIsRejected) {
   // exp(800) overflows: the time update is not finite.
-  ExtendedKalmanFilter<ExponentialModel> ekf(ExponentialModel{}, Matrix<1, 1>::Constant(0.1),
-                                             Matrix<1, 1>::Constant(0.1),
-                                             Vector<1>::Constant(800.0),
-                                             Matrix<1, 1>::Constant(1.0));
+  ExtendedKalmanFilter<ExponentialModel> ekf(
+      ExponentialModel{}, Matrix<1, 1>::Constant(0.1), Matrix<1, 1>::Constant(0.1),
+      Vector<1>::Constant(800.0), Matrix<1, 1>::Constant(1.0));
   EXPECT_THROW(ekf.estimate(Measurement<1>::missing()), NumericalError);
   EXPECT_THROW(ekf.estimate(Measurement<1>::complete(Vector<1>::Constant(1.0))), NumericalError);
   EXPECT_EQ(ekf.state()(0), 800.0);
   EXPECT_EQ(ekf.covariance()(0, 0), 1.0);
 
-  UnscentedKalmanFilter<ExponentialModel> ukf(ExponentialModel{}, Matrix<1, 1>::Constant(0.1),
-                                              Matrix<1, 1>::Constant(0.1),
-                                              Vector<1>::Constant(800.0),
-                                              Matrix<1, 1>::Constant(1.0));
+  UnscentedKalmanFilter<ExponentialModel> ukf(
+      ExponentialModel{}, Matrix<1, 1>::Constant(0.1), Matrix<1, 1>::Constant(0.1),
+      Vector<1>::Constant(800.0), Matrix<1, 1>::Constant(1.0));
   EXPECT_THROW(ukf.estimate(Measurement<1>::complete(Vector<1>::Constant(1.0))), NumericalError);
   EXPECT_EQ(ukf.state()(0), 800.0);
   EXPECT_EQ(ukf.covariance()(0, 0), 1.0);
@@ -124,17 +121,16 @@ TEST(NumericsOverflow, NonFiniteEstimateIsRejected) {
   // A belief from which the step is fine works afterwards.
   ekf.setBelief(Vector<1>::Constant(0.0), Matrix<1, 1>::Constant(1.0));
   ekf.estimate(Measurement<1>::missing());
-  EXPECT_NEAR(ekf.state()(0), 1.0, 1e-15);  // exp(0)
+  EXPECT_NEAR(ekf.state()(0), 1.0, 1e-15);          // exp(0)
   EXPECT_NEAR(ekf.covariance()(0, 0), 1.1, 1e-15);  // exp(0)^2 * 1 + 0.1
 }
 
 TEST(NumericsOverflow, HugeCovarianceGivesNumericalErrorNotNan) {
   // P = 1e100 (the largest covariance entry a filter accepts, parameter_checks.hpp) and
   // H = 1e210: P H^T = 1e310 and H P H^T overflow to inf, so the gain is inf / inf.
-  KalmanFilter<1, 1> kf(Matrix<1, 1>::Constant(1.0), Matrix<1, 0>(),
-                        Matrix<1, 1>::Constant(1e210), Matrix<1, 1>::Constant(0.0),
-                        Matrix<1, 1>::Constant(1.0), Vector<1>::Constant(2.0),
-                        Matrix<1, 1>::Constant(1e100));
+  KalmanFilter<1, 1> kf(Matrix<1, 1>::Constant(1.0), Matrix<1, 0>(), Matrix<1, 1>::Constant(1e210),
+                        Matrix<1, 1>::Constant(0.0), Matrix<1, 1>::Constant(1.0),
+                        Vector<1>::Constant(2.0), Matrix<1, 1>::Constant(1e100));
   EXPECT_THROW(kf.estimate(Measurement<1>::complete(Vector<1>::Constant(1.0))), NumericalError);
   EXPECT_EQ(kf.state()(0), 2.0);
   EXPECT_EQ(kf.covariance()(0, 0), 1e100);
@@ -145,7 +141,7 @@ TEST(NumericsOverflow, HugeCovarianceGivesNumericalErrorNotNan) {
 // ---------------------------------------------------------------------------------------------
 
 struct CovarianceHealth {
-  double asymmetry = 0.0;  // max |P - P^T|
+  double asymmetry = 0.0;                                               // max |P - P^T|
   double minEigenvalueRatio = std::numeric_limits<double>::infinity();  // lambda_min / lambda_max
   bool finite = true;
 };
@@ -170,7 +166,7 @@ CovarianceHealth runNav3Ctrl(Filter& filter, int steps, std::uint64_t seed) {
     health.finite = health.finite && P.allFinite() && filter.state().allFinite();
     health.asymmetry = std::max(health.asymmetry, (P - P.transpose()).cwiseAbs().maxCoeff());
     if (k % 100 == 99) {
-      const Vector<7> eig = Eigen::SelfAdjointEigenSolver<Matrix<7, 7>>(P).eigenvalues();
+      const Vector<7> eig = sftest::symmetricEigenvalues(P);
       health.minEigenvalueRatio = std::min(health.minEigenvalueRatio, eig(0) / eig(6));
     }
   }
@@ -190,8 +186,8 @@ TEST(NumericsLongRun, Nav3CtrlCovarianceStaysSymmetricOver10000Steps) {
   const CovarianceHealth u = runNav3Ctrl(ukf, 10000, 71);
   const CovarianceHealth u1 = runNav3Ctrl(ukf1, 10000, 71);
   std::cout << "[ measured ] 10000 nav3ctrl steps: EKF asymmetry " << e.asymmetry
-            << ", min eig ratio " << e.minEigenvalueRatio << "; UKF default " << u.asymmetry
-            << ", " << u.minEigenvalueRatio << "; UKF alpha=1 " << u1.asymmetry << ", "
+            << ", min eig ratio " << e.minEigenvalueRatio << "; UKF default " << u.asymmetry << ", "
+            << u.minEigenvalueRatio << "; UKF alpha=1 " << u1.asymmetry << ", "
             << u1.minEigenvalueRatio << "\n";
   for (const CovarianceHealth& h : {e, u, u1}) {
     EXPECT_TRUE(h.finite);

@@ -7,9 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include <Eigen/Cholesky>
-
 #include "sf_estimation/errors.hpp"
+#include "sf_estimation/probability/cholesky.hpp"
 #include "sf_estimation/types.hpp"
 
 namespace estimation {
@@ -117,15 +116,15 @@ void Measurement<M>::validateCovariances() const {
       if (j != i && covarianceUsed(i, j)) block(i, j) = covariance(i, j);
     }
   }
-  if (Eigen::LLT<Matrix<M, M>>(block).info() != Eigen::Success) {
+  if (!probability::choleskyInPlace(block)) {
     throw InvalidInputError("covariance block of measurements " + entries +
                             " is not positive definite");
   }
 }
 
-// The check of given covariances (an LLT of the block) is compiled once in the library for
-// the dynamic size and the measurement sizes 1..6 (src/measurement_checks.cpp); other sizes
-// instantiate it where they use it.
+// The check of given covariances (a Cholesky factorisation of the block) is compiled once in
+// the library for the dynamic size and the measurement sizes 1..6 (src/measurement_checks.cpp);
+// other sizes instantiate it where they use it.
 #define SF_ESTIMATION_FOR_CHECKED_MEASUREMENT_SIZES(X) X(Dynamic) X(1) X(2) X(3) X(4) X(5) X(6)
 #ifndef SF_ESTIMATION_INSTANTIATING_MEASUREMENT_CHECKS
 #define SF_ESTIMATION_EXTERN_MEASUREMENT_CHECK(M) \

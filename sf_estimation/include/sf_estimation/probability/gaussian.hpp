@@ -22,6 +22,7 @@
 #include <boost/random/uniform_01.hpp>
 
 #include "sf_estimation/errors.hpp"
+#include "sf_estimation/probability/cholesky.hpp"
 #include "sf_estimation/types.hpp"
 
 namespace estimation {
@@ -127,30 +128,6 @@ double logSumExp(const Eigen::MatrixBase<Derived>& v) {
   // from producing denormal numbers, on which x86 arithmetic is many times slower.
   constexpr double kLogFloor = -700.0;
   return largest + std::log((v.array() - largest).max(kLogFloor).exp().sum());
-}
-
-/// Cholesky factorisation A = L L^T of a symmetric positive definite matrix, in place: L
-/// overwrites the lower triangle (only the lower triangle is read; the strict upper triangle
-/// is left as it was). Returns false, like Eigen::LLT, when a pivot is not positive. It is
-/// Eigen's unblocked algorithm written as plain loops: Eigen::LLT works on run-time-sized
-/// blocks, which costs several times more on the 3x3 to 7x7 matrices of a filter step.
-template <int N>
-bool choleskyInPlace(Matrix<N, N>& A) {
-  const Index n = A.rows();
-  for (Index k = 0; k < n; ++k) {
-    double squares = 0.0;
-    for (Index j = 0; j < k; ++j) squares += A(k, j) * A(k, j);
-    const double pivot = A(k, k) - squares;
-    if (pivot <= 0.0) return false;
-    const double diagonal = std::sqrt(pivot);
-    A(k, k) = diagonal;
-    for (Index i = k + 1; i < n; ++i) {
-      double sum = A(i, k);
-      for (Index j = 0; j < k; ++j) sum -= A(i, j) * A(k, j);
-      A(i, k) = sum / diagonal;
-    }
-  }
-  return true;
 }
 
 /// Square root S of a covariance P with S * S^T = P, from the pivoted LDLT factorisation
