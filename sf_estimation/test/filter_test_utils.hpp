@@ -12,6 +12,7 @@
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/models/navigation.hpp"
 #include "sf_estimation/types.hpp"
+#include "sf_estimation/unscented_transform.hpp"
 
 namespace sftest {
 
@@ -210,5 +211,32 @@ struct SquareModel {
     z(0) = x(0) * x(0);
   }
 };
+
+/// x' = x + 1, z = x^2 (scalar): the observation Jacobian 2x differs between the previous
+/// and the predicted state, so the hand computation shows where H is evaluated.
+struct ShiftSquareModel {
+  static constexpr int StateSize = 1;
+  static constexpr int MeasurementSize = 1;
+  static constexpr int ControlSize = 0;
+  Index stateSize() const { return 1; }
+  Index measurementSize() const { return 1; }
+  Index controlSize() const { return 0; }
+  template <class S>
+  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
+                  Eigen::Matrix<S, 1, 1>& next) const {
+    next(0) = x(0) + 1.0;
+  }
+  template <class S>
+  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
+    z(0) = x(0) * x(0);
+  }
+};
+
+/// The unscented transform's parameters with alpha = 1 (the default is 1e-3).
+inline estimation::UnscentedParameters alphaOne() {
+  estimation::UnscentedParameters p;
+  p.alpha = 1.0;
+  return p;
+}
 
 }  // namespace sftest

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "factory_test_utils.hpp"
+
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/estimator_factory.hpp"
 #include "sf_estimation/parameter_checks.hpp"
@@ -40,14 +42,7 @@ ParameterMap valid(const std::string& method) {
   return p;
 }
 
-std::string refusal(const std::string& method, const ParameterMap& map) {
-  try {
-    EstimatorFactory::create(method, map);
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
+using sftest::refusal;
 
 /// `method` with matrix `name` replaced by [[a, b], [c, d]].
 std::string refusalWith(const std::string& method, const std::string& name, double a, double b,

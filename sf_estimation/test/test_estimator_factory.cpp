@@ -157,9 +157,9 @@ std::pair<double, double> compare(IEstimator& dynamic, Filter& fixed,
 
 TEST(EstimatorFactory, ListsEveryMethod) {
   const auto& m = EstimatorFactory::methods();
-  for (const char* name : {"KalmanFilter", "ExtendedKalmanFilter", "UnscentedKalmanFilter",
-                           "ParticleFilterSIR", "MovingAverage", "MovingMedian",
-                           "ConfidenceWeightedAveraging"}) {
+  for (const char* name :
+       {"KalmanFilter", "ExtendedKalmanFilter", "UnscentedKalmanFilter", "ParticleFilterSIR",
+        "MovingAverage", "MovingMedian", "ConfidenceWeightedAveraging"}) {
     EXPECT_NE(std::find(m.begin(), m.end(), name), m.end()) << name;
   }
 }
@@ -331,8 +331,7 @@ TEST(EstimatorFactory, AveragingMethodsRunThroughTheInterface) {
   for (IEstimator* e : {average.get(), median.get(), fused.get()}) {
     EXPECT_FALSE(e->description().empty());
     EXPECT_NO_THROW(e->setControlInput(Input()));
-    EXPECT_THROW(e->setControlInput(toInput(Eigen::VectorXd::Constant(1, 1.0))),
-                 InvalidInputError);
+    EXPECT_THROW(e->setControlInput(toInput(Eigen::VectorXd::Constant(1, 1.0))), InvalidInputError);
   }
   EXPECT_NE(median->description().find("MovingMedian"), std::string::npos);
   EXPECT_NE(fused->description().find("ConfidenceWeightedAveraging"), std::string::npos)
@@ -356,8 +355,8 @@ TEST(EstimatorFactory, ControlInputKeepsMissingEntries) {
   EXPECT_EQ(values(out)(3), -0.3);  // omega' = u1
   // Wrong size and non-finite controls are refused.
   EXPECT_THROW(estimator->setControlInput(toInput(Eigen::Vector3d(1, 2, 3))), InvalidInputError);
-  EXPECT_THROW(estimator->setControlInput(toInput(Eigen::Vector2d(
-                   0.1, std::numeric_limits<double>::infinity()))),
+  EXPECT_THROW(estimator->setControlInput(
+                   toInput(Eigen::Vector2d(0.1, std::numeric_limits<double>::infinity()))),
                InvalidInputError);
 }
 
@@ -449,8 +448,8 @@ std::vector<WrongSizeCase> wrongSizeCases() {
   train["model"] = trainFunctionModel();
   train["Q"] = Eigen::MatrixXd(Eigen::MatrixXd::Identity(3, 3));
   train["R"] = Eigen::MatrixXd(Eigen::MatrixXd::Identity(2, 2));
-  for (const char* method : {"ExtendedKalmanFilter", "UnscentedKalmanFilter",
-                             "ParticleFilterSIR"}) {
+  for (const char* method :
+       {"ExtendedKalmanFilter", "UnscentedKalmanFilter", "ParticleFilterSIR"}) {
     cases.push_back({method, train, "'Q'", "2x2"});
   }
   // R 3x3 for the 4 measurements of nav3ctrl.
@@ -474,8 +473,7 @@ std::vector<WrongSizeCase> wrongSizeCases() {
 TEST(EstimatorFactoryErrors, WrongSizeIsRefusedWithParameterError) {
   for (const auto& c : wrongSizeCases()) {
     const std::string message = parameterError(c.method, c.parameters);
-    EXPECT_TRUE(contains(message, c.method)) << c.method << " " << c.parameter << ": "
-                                             << message;
+    EXPECT_TRUE(contains(message, c.method)) << c.method << " " << c.parameter << ": " << message;
   }
 }
 

@@ -57,10 +57,9 @@ TEST(ExtendedKalmanFilterLinear, MovingTrainEqualsKalmanFilter) {
   R << 0.4, 0.02, 0.02, 0.1;
   const Vector<2> x0(1.0, 0.5);
   const Matrix<2, 2> P0 = Matrix<2, 2>::Identity();
-  const auto run = sftest::simulateLinear<2, 2, 0>(train.transitionMatrix(),
-                                                   train.controlMatrix(),
-                                                   train.observationMatrix(), Q, R, x0, 500,
-                                                   11, 0.3, 10, 0.0);
+  const auto run =
+      sftest::simulateLinear<2, 2, 0>(train.transitionMatrix(), train.controlMatrix(),
+                                      train.observationMatrix(), Q, R, x0, 500, 11, 0.3, 10, 0.0);
   const auto diff = compareWithKalman(train, train.transitionMatrix(), train.controlMatrix(),
                                       train.observationMatrix(), Q, R, x0, P0, run);
   std::cout << "[ measured ] EKF vs KF, moving train, 500 steps: state " << diff.first
@@ -98,25 +97,7 @@ TEST(ExtendedKalmanFilterLinear, CorrelatedNoiseNav3ReducedEqualsKalmanFilter) {
   EXPECT_LE(diff.second, 1e-9);
 }
 
-/// x' = x + 1, z = x^2 (scalar): the observation Jacobian 2x differs between the previous
-/// and the predicted state, so the hand computation shows where H is evaluated.
-struct ShiftSquareModel {
-  static constexpr int StateSize = 1;
-  static constexpr int MeasurementSize = 1;
-  static constexpr int ControlSize = 0;
-  estimation::Index stateSize() const { return 1; }
-  estimation::Index measurementSize() const { return 1; }
-  estimation::Index controlSize() const { return 0; }
-  template <class S>
-  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
-                  Eigen::Matrix<S, 1, 1>& next) const {
-    next(0) = x(0) + 1.0;
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
-    z(0) = x(0) * x(0);
-  }
-};
+using sftest::ShiftSquareModel;
 
 TEST(ExtendedKalmanFilterNonlinear, OneStepMatchesHandComputation) {
   // x0 = 1, P0 = 0.5, Q = 0.1, R = 0.2, z = 5.
@@ -126,8 +107,7 @@ TEST(ExtendedKalmanFilterNonlinear, OneStepMatchesHandComputation) {
   //   y = 5 - 2^2 = 1, x = 2 + 2.4 / 9.8
   //   P = (1 - K H) P- = (1 - 9.6 / 9.8) 0.6 = 0.12 / 9.8
   ExtendedKalmanFilter<ShiftSquareModel> ekf(ShiftSquareModel{}, Matrix<1, 1>::Constant(0.1),
-                                             Matrix<1, 1>::Constant(0.2),
-                                             Vector<1>::Constant(1.0),
+                                             Matrix<1, 1>::Constant(0.2), Vector<1>::Constant(1.0),
                                              Matrix<1, 1>::Constant(0.5));
   ekf.estimate(Measurement<1>::complete(Vector<1>::Constant(5.0)));
   EXPECT_NEAR(ekf.state()(0), 2.0 + 2.4 / 9.8, 1e-14);

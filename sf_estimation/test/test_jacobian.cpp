@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include "filter_test_utils.hpp"
 #include "sf_estimation/errors.hpp"
@@ -31,8 +31,7 @@ using sftest::maxAbsDiff;
 Vector<7> randomState(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Vector<7> x;
-  x << 50 * u(rng), 50 * u(rng), 20 * u(rng), 1.2 * u(rng), 0.2 * u(rng), 1.5 * u(rng),
-      3 * u(rng);
+  x << 50 * u(rng), 50 * u(rng), 20 * u(rng), 1.2 * u(rng), 0.2 * u(rng), 1.5 * u(rng), 3 * u(rng);
   return x;
 }
 
@@ -48,9 +47,10 @@ TEST(JacobianNav3Ctrl, AutomaticTransitionJacobianEqualsAnalytic) {
       Matrix<7, 7> A;
       estimation::transitionJacobian(model, x, control, A);
       const Matrix<7, 7> expected = sftest::nav3CtrlTransitionJacobian(model, x);
-      ASSERT_LE(maxAbsDiff(A, expected), 1e-12) << "T = " << T << ", x = " << x.transpose()
-                                                << "\nA =\n" << A << "\nexpected =\n"
-                                                << expected;
+      ASSERT_LE(maxAbsDiff(A, expected), 1e-12)
+          << "T = " << T << ", x = " << x.transpose() << "\nA =\n"
+          << A << "\nexpected =\n"
+          << expected;
       // omega' = u1 does not depend on the state at all.
       EXPECT_EQ(A.row(3), (Matrix<1, 7>::Zero()));
       EXPECT_EQ(A(6, 5), -1.0 / T);
@@ -68,15 +68,16 @@ TEST(JacobianNav3Ctrl, AutomaticObservationJacobianEqualsAnalytic) {
       Matrix<4, 7> H;
       estimation::observationJacobian(model, x, H);
       ASSERT_LE(maxAbsDiff(H, sftest::nav3CtrlObservationJacobian(model)), 1e-12)
-          << "radius " << radius << "\n" << H;
+          << "radius " << radius << "\n"
+          << H;
     }
   }
   // The rows written out: gyro, accelerometer, left and right wheel (R = 0.3).
   Matrix<4, 7> H;
   estimation::observationJacobian(Nav3Ctrl{}, Vector<7>::Constant(0.4), H);
   Matrix<4, 7> rows;
-  rows << 0, 0, 0, 1, 0, 0, 0,  //
-      0, 0, 0, 0, 0, 0, 1,      //
+  rows << 0, 0, 0, 1, 0, 0, 0,    //
+      0, 0, 0, 0, 0, 0, 1,        //
       0, 0, 0, -300, 0, 1000, 0,  //
       0, 0, 0, 300, 0, 1000, 0;
   EXPECT_LE(maxAbsDiff(H, rows), 1e-12);
@@ -181,9 +182,7 @@ TEST(JacobianFunctionModel, GivenJacobiansAreUsedAndMissingOnesRefused) {
 
   // With given Jacobians: exactly those are returned.
   plain.setJacobians(
-      [](const Eigen::VectorXd&, const Eigen::VectorXd&, Eigen::MatrixXd& a) {
-        a << 1, 2, 3, 4;
-      },
+      [](const Eigen::VectorXd&, const Eigen::VectorXd&, Eigen::MatrixXd& a) { a << 1, 2, 3, 4; },
       [](const Eigen::VectorXd&, Eigen::MatrixXd& h) { h << 5, 6; });
   ASSERT_TRUE(plain.hasJacobians());
   plain.transitionJacobian(Eigen::Vector2d::Zero(), Eigen::VectorXd(0), A);

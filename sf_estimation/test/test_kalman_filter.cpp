@@ -1,12 +1,14 @@
 // Tests of KalmanFilter (thesis Algorithm 3.1) against hand computations, the analytic and
 // numerical solutions of the discrete algebraic Riccati equation, and a textbook reference
 // implementation written here in plain Eigen.
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <random>
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
+
+#include "filter_test_utils.hpp"
 
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/kalman_filter.hpp"
@@ -21,17 +23,8 @@ using estimation::Matrix;
 using estimation::Measurement;
 using estimation::Vector;
 
-/// Largest absolute entry of a - b.
-template <class A, class B>
-double maxAbsDiff(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b) {
-  return (a.template cast<double>() - b.template cast<double>()).cwiseAbs().maxCoeff();
-}
-
-/// Largest absolute entry of a reference, used to make tolerances relative.
-template <class A>
-double scaleOf(const Eigen::MatrixBase<A>& a) {
-  return a.cwiseAbs().maxCoeff();
-}
+using sftest::maxAbsDiff;
+using sftest::scaleOf;
 
 // ---------------------------------------------------------------------------------------------
 // Moving train (section 2.2.1), one step by hand.
@@ -61,9 +54,8 @@ TEST(KalmanFilterTrain, OneStepMatchesHandComputation) {
   Matrix<2, 2> Q = Matrix<2, 2>::Zero();
   Q.diagonal() << 0.99, 1.0;
   const Vector<2> x0(1.0, 2.0);
-  KalmanFilter<2, 2> kf(train.transitionMatrix(), train.controlMatrix(),
-                        train.observationMatrix(), Q, Matrix<2, 2>::Identity(), x0,
-                        Matrix<2, 2>::Identity());
+  KalmanFilter<2, 2> kf(train.transitionMatrix(), train.controlMatrix(), train.observationMatrix(),
+                        Q, Matrix<2, 2>::Identity(), x0, Matrix<2, 2>::Identity());
 
   kf.estimate(Measurement<2>::complete(Vector<2>(1.5, 1.0)));
 
@@ -87,9 +79,8 @@ TEST(KalmanFilterTrain, SecondStepWithOnlyVelocityMeasured) {
   const estimation::models::MovingTrain train;
   Matrix<2, 2> Q = Matrix<2, 2>::Zero();
   Q.diagonal() << 0.99, 1.0;
-  KalmanFilter<2, 2> kf(train.transitionMatrix(), train.controlMatrix(),
-                        train.observationMatrix(), Q, Matrix<2, 2>::Identity(),
-                        Vector<2>(1.0, 2.0), Matrix<2, 2>::Identity());
+  KalmanFilter<2, 2> kf(train.transitionMatrix(), train.controlMatrix(), train.observationMatrix(),
+                        Q, Matrix<2, 2>::Identity(), Vector<2>(1.0, 2.0), Matrix<2, 2>::Identity());
   kf.estimate(Measurement<2>::complete(Vector<2>(1.5, 1.0)));
 
   Measurement<2> z(2);
@@ -129,8 +120,8 @@ TEST(KalmanFilterRiccati, RandomWalkSteadyStateMatchesClosedForm) {
   ASSERT_NEAR(Pprior, 1.2807764064044151, 1e-15);
 
   KalmanFilter<1, 1> kf(Matrix<1, 1>::Constant(1.0), Matrix<1, 0>(), Matrix<1, 1>::Constant(1.0),
-                        Matrix<1, 1>::Constant(q), Matrix<1, 1>::Constant(r),
-                        Vector<1>::Zero(), Matrix<1, 1>::Constant(10.0));
+                        Matrix<1, 1>::Constant(q), Matrix<1, 1>::Constant(r), Vector<1>::Zero(),
+                        Matrix<1, 1>::Constant(10.0));
   // The variance contracts by about (1 - K)^2 = 0.37 per step: 200 steps reach the fixed point.
   for (int k = 0; k < 200; ++k) kf.estimate(Measurement<1>::complete(Vector<1>::Zero()));
   EXPECT_NEAR(kf.covariance()(0, 0), Ppost, 1e-14);
@@ -178,9 +169,9 @@ TEST(KalmanFilterRiccati, ConstantVelocitySteadyStateMatchesDareSolution) {
   const Eigen::Matrix2d Pdare = solveFilterDare(A, H, Q, r);
   // The reference solves the equation it claims to solve.
   const double s = H * Pdare * H.transpose() + r;
-  const Eigen::Matrix2d residual =
-      A * Pdare * A.transpose() -
-      A * Pdare * H.transpose() * (H * Pdare * A.transpose()) / s + Q - Pdare;
+  const Eigen::Matrix2d residual = A * Pdare * A.transpose() -
+                                   A * Pdare * H.transpose() * (H * Pdare * A.transpose()) / s + Q -
+                                   Pdare;
   ASSERT_LE(residual.cwiseAbs().maxCoeff(), 1e-14 * scaleOf(Pdare));
   const Eigen::Vector2d Kdare = Pdare * H.transpose() / s;
   const Eigen::Matrix2d PpostDare = Pdare - Kdare * s * Kdare.transpose();
@@ -252,8 +243,8 @@ TEST(KalmanFilterControl, PredictionWithControlIsAxPlusBu) {
 
 TEST(KalmanFilterControl, ManyStepsEqualTextbookReference) {
   const AccelerationInputModel m;
-  ReferenceKalman ref{m.A, m.B, m.H, m.Q, m.R, Eigen::Vector2d(0.5, 0.1),
-                      Eigen::Matrix2d::Identity()};
+  ReferenceKalman ref{
+      m.A, m.B, m.H, m.Q, m.R, Eigen::Vector2d(0.5, 0.1), Eigen::Matrix2d::Identity()};
   KalmanFilter<2, 2, 1> kf(m.A, m.B, m.H, m.Q, m.R, ref.x, ref.P);
   // Same algorithm with run-time sizes.
   KalmanFilter<estimation::Dynamic, estimation::Dynamic, estimation::Dynamic> dyn(
@@ -288,8 +279,8 @@ TEST(KalmanFilterControl, NoControlsWithZeroColumnB) {
   const estimation::models::MovingTrain train;
   const Matrix<2, 2> Q = Matrix<2, 2>::Identity() * 0.01;
   const Matrix<2, 2> R = Matrix<2, 2>::Identity() * 0.1;
-  KalmanFilter<2, 2> fixed(train.transitionMatrix(), Matrix<2, 0>(), train.observationMatrix(),
-                           Q, R);
+  KalmanFilter<2, 2> fixed(train.transitionMatrix(), Matrix<2, 0>(), train.observationMatrix(), Q,
+                           R);
   KalmanFilter<estimation::Dynamic, estimation::Dynamic, estimation::Dynamic> dyn(
       Eigen::MatrixXd(train.transitionMatrix()), Eigen::MatrixXd(2, 0),
       Eigen::MatrixXd(train.observationMatrix()), Eigen::MatrixXd(Q), Eigen::MatrixXd(R));
@@ -300,9 +291,12 @@ TEST(KalmanFilterControl, NoControlsWithZeroColumnB) {
   EXPECT_THROW(dyn.setControl(Eigen::VectorXd::Zero(1)), InvalidInputError);
 
   // Starting from x = 0, P = I the filter equals the textbook reference with B u = 0.
-  ReferenceKalman ref{Eigen::MatrixXd(train.transitionMatrix()), Eigen::MatrixXd(2, 0),
-                      Eigen::MatrixXd(train.observationMatrix()), Eigen::MatrixXd(Q),
-                      Eigen::MatrixXd(R), Eigen::VectorXd::Zero(2),
+  ReferenceKalman ref{Eigen::MatrixXd(train.transitionMatrix()),
+                      Eigen::MatrixXd(2, 0),
+                      Eigen::MatrixXd(train.observationMatrix()),
+                      Eigen::MatrixXd(Q),
+                      Eigen::MatrixXd(R),
+                      Eigen::VectorXd::Zero(2),
                       Eigen::MatrixXd::Identity(2, 2)};
   for (int k = 0; k < 20; ++k) {
     const Eigen::Vector2d z(0.2 * k, 2.0 + 0.1 * (k % 4));

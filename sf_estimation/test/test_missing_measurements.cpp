@@ -95,8 +95,8 @@ TEST(MissingMeasurementsKalman, PartialEqualsReducedFilterOverARun) {
       continue;
     }
     if (rows.size() < 4) ++partial;
-    DynamicKalman reduced(A, B, sftest::selectRows(H, rows), Q, sftest::selectSquare(R, rows),
-                          x, P);
+    DynamicKalman reduced(A, B, sftest::selectRows(H, rows), Q, sftest::selectSquare(R, rows), x,
+                          P);
     reduced.setControl(step.u);
     reduced.estimate(sftest::selectMeasurement(step.z, rows));
     ASSERT_LE(relDiff(kf.state(), reduced.state()), kRelative) << rows.size() << " rows";
@@ -193,9 +193,9 @@ TEST(MissingMeasurementsExtended, PartialEqualsReducedModelFilter) {
     ekf.setControl(Vector<2>(0.5, 0.3));
     ekf.estimate(z);
     const auto rows = sftest::presentRows(z);
-    ExtendedKalmanFilter<RowSubsetModel<Nav3Ctrl>> reduced(
-        RowSubsetModel<Nav3Ctrl>{model, rows}, Q, sftest::selectSquare(R, rows), nav3State(),
-        nav3Covariance());
+    ExtendedKalmanFilter<RowSubsetModel<Nav3Ctrl>> reduced(RowSubsetModel<Nav3Ctrl>{model, rows}, Q,
+                                                           sftest::selectSquare(R, rows),
+                                                           nav3State(), nav3Covariance());
     reduced.setControl(Vector<2>(0.5, 0.3));
     reduced.estimate(sftest::selectMeasurement(z, rows));
     EXPECT_LE(relDiff(ekf.state(), reduced.state()), kRelative) << z.available.transpose();
@@ -245,11 +245,7 @@ TEST(MissingMeasurementsExtended, GivenVarianceEqualsFilterWithThatR) {
 // Unscented Kalman filter.
 // ---------------------------------------------------------------------------------------------
 
-UnscentedParameters alphaOne() {
-  UnscentedParameters p;
-  p.alpha = 1.0;
-  return p;
-}
+using sftest::alphaOne;
 
 // The default alpha = 1e-3 gives mean weights W0 = 1 - 1/alpha^2 = -999999 and W_i = 1/(2
 // alpha^2) = 5e5, so the predicted measurement cancels terms 2e6 times larger than itself: the
@@ -279,8 +275,7 @@ TEST(MissingMeasurementsUnscented, PartialEqualsReducedModelFilter) {
           nav3Covariance(), params);
       reduced.setControl(Vector<2>(0.5, 0.3));
       reduced.estimate(sftest::selectMeasurement(z, rows));
-      const double stateTolerance =
-          params.alpha == 1.0 ? kRelative : kDefaultAlphaStateTolerance;
+      const double stateTolerance = params.alpha == 1.0 ? kRelative : kDefaultAlphaStateTolerance;
       EXPECT_LE(relDiff(ukf.state(), reduced.state()), stateTolerance)
           << "alpha " << params.alpha << ", mask " << z.available.transpose();
       EXPECT_LE(relDiff(ukf.covariance(), reduced.covariance()), kRelative)
@@ -406,8 +401,7 @@ TEST(MissingMeasurementsParticle, MaskedFullModelEqualsReducedModel) {
     resampled += full.resampledLastStep() ? 1 : 0;
     ASSERT_EQ(full.resampledLastStep(), reduced.resampledLastStep()) << "step " << k;
     ASSERT_LE(relDiff(full.particles(), reduced.particles()), kRelative) << "step " << k;
-    ASSERT_LE(sftest::maxAbsDiff(full.logWeights(), reduced.logWeights()), 1e-12)
-        << "step " << k;
+    ASSERT_LE(sftest::maxAbsDiff(full.logWeights(), reduced.logWeights()), 1e-12) << "step " << k;
     ASSERT_LE(relDiff(full.state(), reduced.state()), kRelative);
     ASSERT_LE(relDiff(full.covariance(), reduced.covariance()), kRelative);
   }
@@ -421,8 +415,8 @@ TEST(MissingMeasurementsParticle, WhollyMissingMovesParticlesAndKeepsWeights) {
   const Matrix<7, 7> Q = Matrix<7, 7>::Zero();
   ParticleFilterParameters params = particleParameters();
   params.resamplingThreshold = 0.0;  // keep non-uniform weights
-  ParticleFilterSIR<Nav3Ctrl> pf(model, Q, estimation::models::nav3MeasurementNoise(),
-                                 nav3State(), nav3Covariance(), params);
+  ParticleFilterSIR<Nav3Ctrl> pf(model, Q, estimation::models::nav3MeasurementNoise(), nav3State(),
+                                 nav3Covariance(), params);
   const Vector<2> u(0.5, 0.3);
   pf.setControl(u);
   pf.estimate(Measurement<4>::complete(Vector<4>(0.28, -0.1, 380.0, 560.0)));
@@ -450,8 +444,7 @@ TEST(MissingMeasurementsParticle, GivenVarianceEqualsFilterWithThatR) {
   Matrix<4, 4> R2 = R;
   R2(0, 0) = 0.02;
   R2(3, 3) = 6.0;
-  ParticleFilterSIR<Nav3Ctrl> pf(model, Q, R, nav3State(), nav3Covariance(),
-                                 particleParameters());
+  ParticleFilterSIR<Nav3Ctrl> pf(model, Q, R, nav3State(), nav3Covariance(), particleParameters());
   ParticleFilterSIR<Nav3Ctrl> ref(model, Q, R2, nav3State(), nav3Covariance(),
                                   particleParameters());
   for (const auto& step : sftest::simulateNav3Drive(20, 43, 0.0, 0)) {

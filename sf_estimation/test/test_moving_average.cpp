@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "window_test_utils.hpp"
+
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/estimator_adapter.hpp"
 #include "sf_estimation/moving_average.hpp"
@@ -23,19 +25,9 @@ using estimation::MovingAverage;
 using estimation::Output;
 using estimation::ParameterError;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-const double kMissing = std::nan("");  // marks a missing entry in the helper below
-
-// A measurement whose NaN entries are missing.
-Measurement<Eigen::Dynamic> measurementOf(std::vector<double> values) {
-  Measurement<Eigen::Dynamic> z(static_cast<Index>(values.size()));
-  for (Index i = 0; i < z.size(); ++i) {
-    const double v = values[static_cast<std::size_t>(i)];
-    z.available(i) = !std::isnan(v);
-    z.value(i) = std::isnan(v) ? 0.0 : v;
-  }
-  return z;
-}
+using sftest::kInf;
+using sftest::kMissing;
+using sftest::measurementOf;
 
 void expectOutput(const MovingAverage& filter, Index i, double value, double variance) {
   EXPECT_NEAR(filter.state()(i), value, 1e-12) << "entry " << i;

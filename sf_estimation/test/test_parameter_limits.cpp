@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "factory_test_utils.hpp"
+
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/estimator_factory.hpp"
 
@@ -14,14 +16,7 @@ namespace {
 using estimation::EstimatorFactory;
 using estimation::ParameterError;
 
-std::string refusal(const std::string& method, const estimation::ParameterMap& map) {
-  try {
-    EstimatorFactory::create(method, map);
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
+using sftest::refusal;
 
 TEST(ParameterLimits, ParticlesWindowAndInputCount) {
   const auto model = estimation::makeFunctionModel(

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include "filter_test_utils.hpp"
 #include "sf_estimation/errors.hpp"
@@ -75,8 +75,8 @@ Matrix<3, 3> sampleCovarianceSpread(const Matrix<2, 2>& P) {
   Matrix<3, 3> out;
   for (int a = 0; a < 3; ++a) {
     for (int b = 0; b < 3; ++b) {
-      out(a, b) = P(kRow[a], kRow[b]) * P(kCol[a], kCol[b]) +
-                  P(kRow[a], kCol[b]) * P(kCol[a], kRow[b]);
+      out(a, b) =
+          P(kRow[a], kRow[b]) * P(kCol[a], kCol[b]) + P(kRow[a], kCol[b]) * P(kCol[a], kRow[b]);
     }
   }
   return out;
@@ -121,9 +121,8 @@ TEST(ParticleFilterLinearGaussian, MeanMatchesKalmanFilterWithinMonteCarloError)
   KalmanFilter<2, 2> kf(A, train.controlMatrix(), train.observationMatrix(), Q, R, x0, P0);
   ParticleFilterSIR<MovingTrain> pf(train, Q, R, x0, P0, parameters(N, 2024));
 
-  const auto run = sftest::simulateLinear<2, 2, 0>(A, train.controlMatrix(),
-                                                   train.observationMatrix(), Q, R, x0, 30, 51,
-                                                   0.0, 0, 0.0);
+  const auto run = sftest::simulateLinear<2, 2, 0>(
+      A, train.controlMatrix(), train.observationMatrix(), Q, R, x0, 30, 51, 0.0, 0, 0.0);
   Matrix<2, 2> V = P0 / n;
   Matrix<3, 3> W = sampleCovarianceSpread(P0) / n;
   double worstMean = 0.0, worstVariance = 0.0, maxError = 0.0, minEss = n, maxSe = 0.0;
@@ -157,10 +156,9 @@ TEST(ParticleFilterLinearGaussian, MeanMatchesKalmanFilterWithinMonteCarloError)
     }
   }
   std::cout << "[ measured ] PF (N=20000) vs KF, moving train, 30 steps: max |mean error| "
-            << maxError << " (largest standard deviation " << maxSe
-            << "), max error / sd " << worstMean << ", max variance error / sd "
-            << worstVariance << ", min N_eff " << minEss << ", resampled in " << resampled
-            << " steps\n";
+            << maxError << " (largest standard deviation " << maxSe << "), max error / sd "
+            << worstMean << ", max variance error / sd " << worstVariance << ", min N_eff "
+            << minEss << ", resampled in " << resampled << " steps\n";
   EXPECT_GT(resampled, 0);
   EXPECT_GT(minEss, 1000.0);  // the Gaussian approximations above need a large N_eff
 }
@@ -178,10 +176,9 @@ TEST(ParticleFilterDeterminism, SameSeedSameOutputDifferentSeedDifferent) {
   ParticleFilterSIR<MovingTrain> a(train, Q, R, x0, P0, parameters(500, 7));
   ParticleFilterSIR<MovingTrain> b(train, Q, R, x0, P0, parameters(500, 7));
   ParticleFilterSIR<MovingTrain> c(train, Q, R, x0, P0, parameters(500, 8));
-  const auto run = sftest::simulateLinear<2, 2, 0>(train.transitionMatrix(),
-                                                   train.controlMatrix(),
-                                                   train.observationMatrix(), Q, R, x0, 25, 52,
-                                                   0.2, 0, 0.0);
+  const auto run =
+      sftest::simulateLinear<2, 2, 0>(train.transitionMatrix(), train.controlMatrix(),
+                                      train.observationMatrix(), Q, R, x0, 25, 52, 0.2, 0, 0.0);
   std::vector<Vector<2>> first;
   for (const auto& step : run) {
     a.estimate(step.z);
@@ -275,8 +272,7 @@ TEST(ParticleFilterResampling, SystematicResamplingCopiesFloorOrCeilOfNw) {
   EXPECT_EQ(always.particleCount(), N);
   EXPECT_EQ(always.particles().cols(), N);
   EXPECT_EQ(always.logWeights().size(), N);
-  EXPECT_EQ(always.logWeights(),
-            Eigen::VectorXd::Constant(N, -std::log(static_cast<double>(N))));
+  EXPECT_EQ(always.logWeights(), Eigen::VectorXd::Constant(N, -std::log(static_cast<double>(N))));
   EXPECT_EQ(always.effectiveSampleSize(), never.effectiveSampleSize());  // N_eff before
 
   std::map<std::pair<double, double>, Index> index;
@@ -337,8 +333,7 @@ TEST(ParticleFilterResampling, ThresholdDecidesWhenToResample) {
   const Matrix<2, 2> R = Matrix<2, 2>::Identity() * 0.3;
   ParticleFilterSIR<MovingTrain> pf(train, Q, R, Vector<2>(0.0, 1.0), Matrix<2, 2>::Identity(),
                                     parameters(600, 6, 0.5));
-  const auto run = sftest::simulateLinear<2, 2, 0>(train.transitionMatrix(),
-                                                   train.controlMatrix(),
+  const auto run = sftest::simulateLinear<2, 2, 0>(train.transitionMatrix(), train.controlMatrix(),
                                                    train.observationMatrix(), Q, R,
                                                    Vector<2>(0.0, 1.0), 30, 53, 0.0, 0, 0.0);
   int resampled = 0;
@@ -391,8 +386,8 @@ TEST(ParticleFilterRejection, NumericalErrorInsideAStepRestoresTheEngine) {
   // engine must be rewound, so the next step equals that of a filter that never tried it.
   const Matrix<1, 1> Q = Matrix<1, 1>::Constant(0.5);
   const Matrix<1, 1> R = Matrix<1, 1>::Constant(0.2);
-  ParticleFilterSIR<RandomWalk> a(RandomWalk{}, Q, R, Vector<1>::Zero(),
-                                  Matrix<1, 1>::Identity(), parameters(300, 78, 1.0));
+  ParticleFilterSIR<RandomWalk> a(RandomWalk{}, Q, R, Vector<1>::Zero(), Matrix<1, 1>::Identity(),
+                                  parameters(300, 78, 1.0));
   ParticleFilterSIR<RandomWalk> b = a;
   const Measurement<1> z1 = Measurement<1>::complete(Vector<1>::Constant(0.4));
   const Measurement<1> z2 = Measurement<1>::complete(Vector<1>::Constant(0.1));

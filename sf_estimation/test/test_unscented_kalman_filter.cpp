@@ -32,11 +32,7 @@ using estimation::models::Nav3Ctrl;
 using estimation::models::Nav3Reduced;
 using sftest::relDiff;
 
-UnscentedParameters alphaOne() {
-  UnscentedParameters p;
-  p.alpha = 1.0;
-  return p;
-}
+using sftest::alphaOne;
 
 /// Differences of UKF and KF over a run: per step relative to that step's KF values, and
 /// relative to the largest KF values of the whole run (the scale of the data).
@@ -52,9 +48,9 @@ std::ostream& operator<<(std::ostream& os, const Differences& d) {
 template <class Model, int N = Model::StateSize, int M = Model::MeasurementSize,
           int L = Model::ControlSize>
 Differences compareWithKalman(const Model& model, const Matrix<N, N>& A, const Matrix<N, L>& B,
-                              const Matrix<M, N>& H, const Matrix<N, N>& Q,
-                              const Matrix<M, M>& R, const Vector<N>& x0,
-                              const Matrix<N, N>& P0, const UnscentedParameters& params,
+                              const Matrix<M, N>& H, const Matrix<N, N>& Q, const Matrix<M, M>& R,
+                              const Vector<N>& x0, const Matrix<N, N>& P0,
+                              const UnscentedParameters& params,
                               const std::vector<sftest::Step<M, L>>& run) {
   KalmanFilter<N, M, L> kf(A, B, H, Q, R, x0, P0);
   UnscentedKalmanFilter<Model> ukf(model, Q, R, x0, P0, params);
@@ -106,18 +102,16 @@ TEST(UnscentedKalmanFilterLinear, MovingTrainEqualsKalmanFilterForAnyAlpha) {
   R << 0.4, 0.02, 0.02, 0.1;
   const Vector<2> x0(1.0, 0.5);
   const Matrix<2, 2> P0 = Matrix<2, 2>::Identity();
-  const auto run = sftest::simulateLinear<2, 2, 0>(train.transitionMatrix(),
-                                                   train.controlMatrix(),
-                                                   train.observationMatrix(), Q, R, x0, 500,
-                                                   21, 0.3, 10, 0.0);
+  const auto run =
+      sftest::simulateLinear<2, 2, 0>(train.transitionMatrix(), train.controlMatrix(),
+                                      train.observationMatrix(), Q, R, x0, 500, 21, 0.3, 10, 0.0);
   const auto one = compareWithKalman(train, train.transitionMatrix(), train.controlMatrix(),
                                      train.observationMatrix(), Q, R, x0, P0, alphaOne(), run);
-  const auto def = compareWithKalman(train, train.transitionMatrix(), train.controlMatrix(),
-                                     train.observationMatrix(), Q, R, x0, P0,
-                                     UnscentedParameters{}, run);
+  const auto def =
+      compareWithKalman(train, train.transitionMatrix(), train.controlMatrix(),
+                        train.observationMatrix(), Q, R, x0, P0, UnscentedParameters{}, run);
   std::cout << "[ measured ] UKF vs KF, moving train, 500 steps, alpha=1: " << one
-            << "\n[ measured ] UKF vs KF, moving train, 500 steps, default alpha: " << def
-            << "\n";
+            << "\n[ measured ] UKF vs KF, moving train, 500 steps, default alpha: " << def << "\n";
   EXPECT_LE(one.stateStep, 1e-9);
   EXPECT_LE(one.covarianceStep, 1e-9);
   EXPECT_LE(def.stateStep, kTrainDefaultAlphaTolerance);
@@ -138,9 +132,9 @@ void checkNav3Reduced(const Matrix<4, 4>& R, std::uint64_t seed, const char* lab
   other.kappa = 1.0;
   const auto alt = compareWithKalman(model, model.transitionMatrix(), model.controlMatrix(),
                                      model.observationMatrix(), Q, R, x0, P0, other, run);
-  const auto def = compareWithKalman(model, model.transitionMatrix(), model.controlMatrix(),
-                                     model.observationMatrix(), Q, R, x0, P0,
-                                     UnscentedParameters{}, run);
+  const auto def =
+      compareWithKalman(model, model.transitionMatrix(), model.controlMatrix(),
+                        model.observationMatrix(), Q, R, x0, P0, UnscentedParameters{}, run);
   std::cout << "[ measured ] UKF vs KF, nav3red " << label << ", 1000 steps, alpha=1: " << one
             << "\n[ measured ] UKF vs KF, nav3red " << label
             << ", alpha=0.5 beta=0 kappa=1: " << alt << "\n[ measured ] UKF vs KF, nav3red "
@@ -162,24 +156,7 @@ TEST(UnscentedKalmanFilterLinear, CorrelatedNoiseNav3ReducedEqualsKalmanFilter) 
   checkNav3Reduced(sftest::correlatedNav3MeasurementNoise(), 23, "correlated R");
 }
 
-/// x' = x + 1, z = x^2 (scalar).
-struct ShiftSquareModel {
-  static constexpr int StateSize = 1;
-  static constexpr int MeasurementSize = 1;
-  static constexpr int ControlSize = 0;
-  estimation::Index stateSize() const { return 1; }
-  estimation::Index measurementSize() const { return 1; }
-  estimation::Index controlSize() const { return 0; }
-  template <class S>
-  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
-                  Eigen::Matrix<S, 1, 1>& next) const {
-    next(0) = x(0) + 1.0;
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
-    z(0) = x(0) * x(0);
-  }
-};
+using sftest::ShiftSquareModel;
 
 // Closed-form unscented moments of z = x^2 for n = 1, mean m, variance P. With
 // s = n + lambda = alpha^2 (1 + kappa), the points are m and m +- c, c^2 = s P, and the weights
@@ -193,8 +170,7 @@ struct ShiftSquareModel {
 // K = 2.4 / Szz, x = 2 + K (5 - 4.6), P = 0.6 - 2.4^2 / Szz.
 void checkSquareStep(const UnscentedParameters& params, double tolerance) {
   UnscentedKalmanFilter<ShiftSquareModel> ukf(ShiftSquareModel{}, Matrix<1, 1>::Constant(0.1),
-                                              Matrix<1, 1>::Constant(0.2),
-                                              Vector<1>::Constant(1.0),
+                                              Matrix<1, 1>::Constant(0.2), Vector<1>::Constant(1.0),
                                               Matrix<1, 1>::Constant(0.5), params);
   ukf.estimate(Measurement<1>::complete(Vector<1>::Constant(5.0)));
   const double a2k = params.alpha * params.alpha * params.kappa;
