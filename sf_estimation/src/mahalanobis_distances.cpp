@@ -1,5 +1,7 @@
 // The innovation likelihood terms (squared Mahalanobis distance, log det S) of a whole
-// measurement vector for the measurement sizes 1..6, compiled once (measurement_prediction.hpp).
+// measurement vector for the measurement sizes 1..6 and the run-time size of the window filters
+// (moving average, median, confidence-weighted averaging), compiled once
+// (measurement_prediction.hpp).
 #define SF_ESTIMATION_INSTANTIATING_MAHALANOBIS
 #include "sf_estimation/measurement_prediction.hpp"
 
@@ -16,4 +18,6 @@ template InnovationLikelihood innovationLikelihood<5>(const MeasurementPredictio
                                                       const Measurement<5>&);
 template InnovationLikelihood innovationLikelihood<6>(const MeasurementPrediction<6>&,
                                                       const Measurement<6>&);
+template InnovationLikelihood innovationLikelihood<Dynamic>(const MeasurementPrediction<Dynamic>&,
+                                                            const Measurement<Dynamic>&);
 }  // namespace estimation

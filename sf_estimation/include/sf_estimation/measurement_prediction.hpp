@@ -115,7 +115,9 @@ double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction, In
 }
 
 // The likelihood terms of a whole measurement vector are compiled once in the library for the
-// measurement sizes 1..6 (src/mahalanobis_distances.cpp); other sizes are instantiated where used.
+// measurement sizes 1..6 and Dynamic (src/mahalanobis_distances.cpp); other sizes are
+// instantiated where used. Dynamic is the window filters' size: inline, its Eigen::LLT on a
+// run-time-sized matrix brought Eigen's blocked product kernels into each of their nodes.
 #ifndef SF_ESTIMATION_INSTANTIATING_MAHALANOBIS
 extern template InnovationLikelihood innovationLikelihood<1>(const MeasurementPrediction<1>&,
                                                              const Measurement<1>&);
@@ -129,6 +131,8 @@ extern template InnovationLikelihood innovationLikelihood<5>(const MeasurementPr
                                                              const Measurement<5>&);
 extern template InnovationLikelihood innovationLikelihood<6>(const MeasurementPrediction<6>&,
                                                              const Measurement<6>&);
+extern template InnovationLikelihood innovationLikelihood<Dynamic>(
+    const MeasurementPrediction<Dynamic>&, const Measurement<Dynamic>&);
 #endif
 
 /// True if Filter has predictMeasurement(MeasurementPrediction<MeasurementSize>&) const.
