@@ -60,7 +60,8 @@ constexpr double kCovarianceTolerance = 1e-9;
 /// The part of repairCovariance() after a failed Cholesky factorisation: judges P by a
 /// pivoted LDLT and, if it is indefinite beyond rounding, floors its eigenvalues. Compiled
 /// once in the library (src/numerical_repairs.cpp): an eigen-solver instantiated for every
-/// state size cost most of a configuration's compile time. Allocation-free up to 16 states.
+/// state size cost most of a configuration's compile time. The judgement is allocation-free up
+/// to 16 states; the repair itself, a counted fault, works on a heap copy.
 bool repairIndefiniteCovariance(Eigen::Ref<Eigen::MatrixXd> P);
 
 /// Makes a finite symmetric P positive semi-definite if it is not (see the rules above).
