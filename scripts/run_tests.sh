@@ -7,8 +7,10 @@ set -euo pipefail
 # shellcheck source=scripts/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-# The package's own heavy checks (sanitizers, fuzzing, soak) are part of this command.
-SF_CMAKE_ARGS=(-DSF_PKG_HEAVY_TESTS=ON -DSF_ESTIMATION_EXPLICIT_INSTANCES=ON)
+# The package's own heavy checks (sanitizers, fuzzing, soak) are part of this command, and so
+# are the benchmarks, built and installed (the install-space test checks them).
+SF_CMAKE_ARGS=(-DSF_PKG_HEAVY_TESTS=ON -DSF_ESTIMATION_EXPLICIT_INSTANCES=ON
+  -DSF_BUILD_BENCHMARKS=ON)
 SF_DEB_PACKAGES+=("${SF_TEST_DEB_PACKAGES[@]}")
 sf_prepare
 
