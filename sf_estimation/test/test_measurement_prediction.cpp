@@ -4,7 +4,11 @@
 // on a linear model, the EKF on z = x^2 by hand, and the particle filter equal to the moments
 // of the particles its next step draws.
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <random>
+
+#include <Eigen/Cholesky>
 
 #include <gtest/gtest.h>
 
@@ -128,6 +132,50 @@ TEST(MeasurementPrediction, InnovationLikelihoodByHand) {
   l = estimation::innovationLikelihood(p, z);
   EXPECT_NEAR(l.logDeterminant, std::log(2.5), 1e-14);
   EXPECT_EQ(estimation::innovationLikelihood(p, Measurement<2>::missing()).logDeterminant, 0.0);
+}
+
+// The likelihood's factor is written as loops in Eigen::LLT's order (probability/cholesky.hpp)
+// so that it gives exactly what Eigen::LLT gave: NIS values, gates and the tuned files depend on
+// those bits. Random covariances over twelve orders of magnitude, compared bit for bit.
+template <int M>
+void expectLikelihoodOfEigenLlt(int m, std::mt19937_64& random) {
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> exponent(-6.0, 6.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    Eigen::MatrixXd B(m, m + trial % 3);
+    for (Eigen::Index i = 0; i < B.size(); ++i) {
+      B.data()[i] = normal(random) * std::pow(10.0, exponent(random) * (trial % 2));
+    }
+    MeasurementPrediction<M> p(m);
+    p.noise = B * B.transpose();
+    if (trial % 5 == 0) p.noise.diagonal().array() += std::pow(10.0, exponent(random));
+    Vector<M> y(m);
+    for (int i = 0; i < m; ++i) y(i) = normal(random) * std::pow(10.0, exponent(random));
+    const Eigen::LLT<Matrix<M, M>> llt(p.noise);
+    if (llt.info() != Eigen::Success) {
+      EXPECT_THROW(estimation::innovationLikelihood(p, Measurement<M>::complete(y)),
+                   estimation::NumericalError);
+      continue;
+    }
+    double logDeterminant = 0.0;
+    for (int i = 0; i < m; ++i) logDeterminant += 2.0 * std::log(llt.matrixLLT()(i, i));
+    const double squaredDistance = llt.matrixL().solve(y).squaredNorm();
+    const estimation::InnovationLikelihood l =
+        estimation::innovationLikelihood(p, Measurement<M>::complete(y));
+    ASSERT_EQ(std::memcmp(&l.squaredDistance, &squaredDistance, sizeof(double)), 0)
+        << "size " << m << ", trial " << trial << ": " << l.squaredDistance << " vs "
+        << squaredDistance;
+    ASSERT_EQ(std::memcmp(&l.logDeterminant, &logDeterminant, sizeof(double)), 0)
+        << "size " << m << ", trial " << trial;
+  }
+}
+
+TEST(MeasurementPrediction, InnovationLikelihoodIsEigenLltBitForBit) {
+  std::mt19937_64 random(7);
+  expectLikelihoodOfEigenLlt<4>(4, random);
+  expectLikelihoodOfEigenLlt<6>(6, random);
+  expectLikelihoodOfEigenLlt<estimation::Dynamic>(5, random);
+  expectLikelihoodOfEigenLlt<estimation::Dynamic>(9, random);
 }
 
 TEST(MeasurementPrediction, RefusesAnInnovationCovarianceThatIsNotPositiveDefinite) {

@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include <Eigen/Cholesky>
+
 #include <gtest/gtest.h>
 
 #include "filter_test_utils.hpp"

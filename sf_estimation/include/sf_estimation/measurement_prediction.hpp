@@ -14,12 +14,13 @@
 #include <type_traits>
 #include <utility>
 
-#include <Eigen/Cholesky>
+#include <Eigen/Core>
 
 #include "sf_estimation/angles.hpp"
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/measurement_noise.hpp"
+#include "sf_estimation/probability/cholesky.hpp"
 #include "sf_estimation/types.hpp"
 
 namespace estimation {
@@ -73,21 +74,25 @@ struct InnovationLikelihood {
 };
 
 /// Throws NumericalError when S is not positive definite.
+///
+/// The factor is Eigen::LLT's bit for bit (CholeskyOrder::sumFirst; checked on 2.7 million
+/// random matrices of sizes 1..9 when it replaced Eigen::LLT, doc/build_cost.md), so the NIS
+/// values, gates and tuned files are what they were; Eigen::LLT cost 3-4 s of compile time per
+/// measurement size.
 template <int M>
 InnovationLikelihood innovationLikelihood(const MeasurementPrediction<M>& prediction,
                                           const Measurement<M>& z) {
   const Index m = prediction.size();
-  Matrix<M, M> S(m, m);
-  prediction.innovationCovariance(z, S);  // missing entries: identity, log det 0
+  Matrix<M, M> factor(m, m);
+  prediction.innovationCovariance(z, factor);  // missing entries: identity, log det 0
   Vector<M> y(m);
   for (Index i = 0; i < m; ++i) y(i) = z.available(i) ? prediction.innovation(i, z.value(i)) : 0.0;
-  const Eigen::LLT<Matrix<M, M>> factor(S);
-  if (factor.info() != Eigen::Success) {
+  if (!probability::choleskyInPlace<M, probability::CholeskyOrder::sumFirst>(factor)) {
     throw NumericalError("innovation covariance is not positive definite; no Mahalanobis distance");
   }
   InnovationLikelihood result;
-  result.squaredDistance = factor.matrixL().solve(y).squaredNorm();
-  for (Index i = 0; i < m; ++i) result.logDeterminant += 2.0 * std::log(factor.matrixLLT()(i, i));
+  result.squaredDistance = factor.template triangularView<Eigen::Lower>().solve(y).squaredNorm();
+  for (Index i = 0; i < m; ++i) result.logDeterminant += 2.0 * std::log(factor(i, i));
   return result;
 }
 
@@ -116,8 +121,8 @@ double squaredMahalanobisDistance(const MeasurementPrediction<M>& prediction, In
 
 // The likelihood terms of a whole measurement vector are compiled once in the library for the
 // measurement sizes 1..6 and Dynamic (src/mahalanobis_distances.cpp); other sizes are
-// instantiated where used. Dynamic is the window filters' size: inline, its Eigen::LLT on a
-// run-time-sized matrix brought Eigen's blocked product kernels into each of their nodes.
+// instantiated where used. Dynamic is the window filters' size: inline, it brought Eigen's
+// run-time-sized kernels into each of their nodes.
 #ifndef SF_ESTIMATION_INSTANTIATING_MAHALANOBIS
 extern template InnovationLikelihood innovationLikelihood<1>(const MeasurementPrediction<1>&,
                                                              const Measurement<1>&);

@@ -10,12 +10,23 @@
 namespace estimation {
 namespace probability {
 
+/// The order in which an entry of L below the diagonal takes off the products of the columns
+/// before it; the two round differently in the last bits.
+enum class CholeskyOrder {
+  /// ((A(i,k) - p_0) - p_1) - ...: the sigma points' and the checks' order.
+  chained,
+  /// A(i,k) - (p_0 + p_1 + ...): Eigen::LLT's, which runs them as a matrix-vector product; with
+  /// it the factor is Eigen::LLT's bit for bit (innovationLikelihood).
+  sumFirst,
+};
+
 /// Cholesky factorisation A = L L^T of a symmetric positive definite matrix, in place: L
 /// overwrites the lower triangle (only the lower triangle is read; the strict upper triangle
 /// is left as it was). Returns false, like Eigen::LLT, when a pivot is not positive. It is
 /// Eigen's unblocked algorithm written as plain loops: Eigen::LLT works on run-time-sized
-/// blocks, which costs several times more on the 3x3 to 7x7 matrices of a filter step.
-template <int N>
+/// blocks, which costs several times more on the 3x3 to 7x7 matrices of a filter step, and
+/// instantiates Eigen's blocked matrix kernels, several seconds of compile time per size.
+template <int N, CholeskyOrder order = CholeskyOrder::chained>
 bool choleskyInPlace(Matrix<N, N>& A) {
   const Index n = A.rows();
   for (Index k = 0; k < n; ++k) {
@@ -26,9 +37,15 @@ bool choleskyInPlace(Matrix<N, N>& A) {
     const double diagonal = std::sqrt(pivot);
     A(k, k) = diagonal;
     for (Index i = k + 1; i < n; ++i) {
-      double sum = A(i, k);
-      for (Index j = 0; j < k; ++j) sum -= A(i, j) * A(k, j);
-      A(i, k) = sum / diagonal;
+      if constexpr (order == CholeskyOrder::chained) {
+        double sum = A(i, k);
+        for (Index j = 0; j < k; ++j) sum -= A(i, j) * A(k, j);
+        A(i, k) = sum / diagonal;
+      } else {
+        double products = 0.0;
+        for (Index j = 0; j < k; ++j) products += A(i, j) * A(k, j);
+        A(i, k) = (A(i, k) - products) / diagonal;
+      }
     }
   }
   return true;
