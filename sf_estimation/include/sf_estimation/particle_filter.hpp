@@ -15,7 +15,7 @@
 #include <string>
 #include <utility>
 
-#include <Eigen/Cholesky>
+#include <Eigen/Core>
 
 #include "sf_estimation/angles.hpp"
 #include "sf_estimation/measurement.hpp"
@@ -92,7 +92,7 @@ class ParticleFilterSIR {
     weights_.resize(p);
     state_.resize(n);
     covariance_.resize(n, n);
-    if (!noiseWhitening(R_, maskedNoise_, fullWhitening_)) {
+    if (!noiseWhitening(R_, noiseFactor_, fullWhitening_)) {
       throw ParameterError(method + ": R must be positive definite");
     }
     maskedWhitening_ = fullWhitening_;
@@ -250,7 +250,7 @@ class ParticleFilterSIR {
     const Matrix<M, M>* whitening = &fullWhitening_;
     if (z.availableCount() != m || z.varianceGiven.any() || z.covarianceGiven.any()) {
       effectiveMeasurementNoise(R_, z, reducedR_);
-      if (!noiseWhitening(reducedR_, maskedNoise_, maskedWhitening_)) {
+      if (!noiseWhitening(reducedR_, noiseFactor_, maskedWhitening_)) {
         throw NumericalError("ParticleFilterSIR: measurement noise is not positive definite");
       }
       whitening = &maskedWhitening_;
@@ -391,7 +391,7 @@ class ParticleFilterSIR {
   bool noisePerRow_ = false;  // see findNoiseSources()
   Eigen::Matrix<Index, N, 1> noiseSource_;
   Vector<N> noiseScale_;
-  Eigen::LLT<Matrix<M, M>> maskedNoise_;
+  Matrix<M, M> noiseFactor_;                      // scratch of noiseWhitening()
   Matrix<M, M> fullWhitening_, maskedWhitening_;  // L^-1 of R and of this step's noise
   Matrix<M, M> reducedR_;
   Vector<L> u_;
