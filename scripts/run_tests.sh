@@ -19,16 +19,16 @@ rm -rf "$results"
 
 # What measures wall-clock behaviour never has a compiler or another test beside it at its own
 # priority (doc/reliability.md, "Test order"). (1) The programs the timed tests run are built
-# (goal sf_timed_test_programs). (2) The timed tests run: the soak and the under-load check
-# (which brings its own load, stress-ng) one at a time, then the rostests two at a time
-# (SF_ROSTEST_JOBS) but those playing a bag in real time alone. Beside the rostests, which
-# mostly wait for bags played in real time, one goal at nice 19, sf_untimed_tests, builds every
+# (goal sf_timed_test_programs). (2) The timed tests run: the rostests two at a time
+# (SF_ROSTEST_JOBS) but those playing a bag in real time alone, then the soak and the
+# under-load check (which brings its own load, stress-ng) one at a time. Beside them, at the
+# lowest CPU and I/O priority (nice 19, ionice idle), one goal, sf_untimed_tests, builds every
 # other test program and the sanitizer tree (`tests`) and runs the tests that do not depend on
-# timing, each as soon as what it runs is built, two jobs at a time: it takes the CPU the
-# rostests leave and yields it whenever they want it. (3) The fuzz run, whose strength is the
-# CPU it gets in its 60 s (sf_whole_core_tests), runs at normal priority after the timed tests,
-# beside what remains of the untimed goal. SF_UNTIMED_BESIDE=0 runs the untimed goal alone,
-# before the timed tests, instead.
+# timing, each as soon as what it runs is built, two jobs at a time: it takes the CPU the timed
+# tests leave while bags play in real time, and yields it whenever they want it. (3) The fuzz
+# run, whose strength is the CPU it gets in its 60 s (sf_whole_core_tests), runs at normal
+# priority once the timed tests are done. SF_UNTIMED_BESIDE=0 runs the untimed goal first,
+# alone, instead of beside the timed tests.
 build_dir="${SF_WS}/build"
 make_targets="$(make -C "$build_dir" help 2>/dev/null | sed -n 's/^\.\.\. \([^ ]*\).*$/\1/p')"
 has_target() { grep -qx -- "$1" <<<"$make_targets"; }
@@ -69,36 +69,28 @@ filter() {
   fi
 }
 SF_UNTIMED_BESIDE="${SF_UNTIMED_BESIDE:-1}"
-rostest_targets=() busy_targets=()
-for target in "${timed_targets[@]}"; do
-  if [[ "$target" == "run_tests_${SF_PACKAGE}_rostest" ]]; then
-    rostest_targets+=("$target")
-  else
-    busy_targets+=("$target")
-  fi
-done
-# The soak and the under-load check keep both cores busy themselves: one at a time.
-run_busy_timed() {
-  local rc=0
-  if ((${#busy_targets[@]})); then
-    sf_log "one at a time: ${busy_targets[*]}"
-    "${base[@]}" -j1 "${busy_targets[@]}" || rc=$?
-  fi
-  return "$rc"
-}
-# The rostests mostly wait for bags played in real time.
-run_rostests() {
-  local rc=0
-  if ((${#rostest_targets[@]})) && has_target sf_paired_rostests \
-    && has_target sf_online_rostests; then
+run_timed() {
+  local rc=0 paired=() alone=() target
+  for target in "${timed_targets[@]}"; do
+    if [[ "$target" == "run_tests_${SF_PACKAGE}_rostest" ]]; then
+      paired+=("$target")
+    else
+      alone+=("$target")
+    fi
+  done
+  if ((${#paired[@]})) && has_target sf_paired_rostests && has_target sf_online_rostests; then
     # The rostests that compare the node online with its replay run alone (CMakeLists.txt).
     sf_log "the rostests, ${SF_ROSTEST_JOBS} at a time (sf_paired_rostests)," \
       "then those playing a bag in real time one at a time (sf_online_rostests)"
     "${base[@]}" -j"${SF_ROSTEST_JOBS}" sf_paired_rostests || rc=$?
     "${base[@]}" -j1 sf_online_rostests || rc=$?
-  elif ((${#rostest_targets[@]})); then
-    sf_log "${rostest_targets[*]}, ${SF_ROSTEST_JOBS} at a time"
-    "${base[@]}" -j"${SF_ROSTEST_JOBS}" "${rostest_targets[@]}" || rc=$?
+  elif ((${#paired[@]})); then
+    sf_log "${paired[*]}, ${SF_ROSTEST_JOBS} at a time"
+    "${base[@]}" -j"${SF_ROSTEST_JOBS}" "${paired[@]}" || rc=$?
+  fi
+  if ((${#alone[@]})); then
+    sf_log "one at a time: ${alone[*]}"
+    "${base[@]}" -j1 "${alone[@]}" || rc=$?
   fi
   return "$rc"
 }
@@ -110,22 +102,23 @@ run_steps() {
     sf_log "step 1 took $((SECONDS - t)) s"
   fi
   t=$SECONDS
-  if [[ "$SF_UNTIMED_BESIDE" == 1 ]] && ((${#rostest_targets[@]})); then
-    sf_log "step 2: the timed tests; beside the rostests, at nice 19, the other tests are built" \
-      "and run (${untimed[*]}; their output follows)"
-    run_busy_timed || rc=$?
+  if [[ "$SF_UNTIMED_BESIDE" == 1 ]] && ((${#timed_targets[@]})); then
+    sf_log "step 2: the timed tests; beside them at nice 19 the other tests are built and run" \
+      "(${untimed[*]}; their output follows the timed tests')"
     # make, not catkin_make: the build space is configured, and a second catkin_make would
     # check the CMake configuration at the same time as the first.
-    nice -n 19 make -C "$build_dir" -k -j"${SF_JOBS}" "${untimed[@]}" >"$untimed_log" 2>&1 &
+    nice -n 19 ionice -c 3 make -C "$build_dir" -k -j"${SF_JOBS}" "${untimed[@]}" \
+      >"$untimed_log" 2>&1 &
     untimed_pid=$!
-    run_rostests || rc=$?
+    run_timed || rc=$?
     sf_log "the timed tests took $((SECONDS - t)) s"
   else
     sf_log "step 2: building the tests and running those that do not depend on timing" \
-      "(${untimed[*]}), then the timed tests"
+      "(${untimed[*]})"
     "${base[@]}" -j"${SF_JOBS}" "${untimed[@]}" || rc=$?
-    run_busy_timed || rc=$?
-    run_rostests || rc=$?
+    if ((${#timed_targets[@]})); then
+      run_timed || rc=$?
+    fi
   fi
   if has_target sf_whole_core_tests; then
     sf_log "step 3: the fuzz run at normal priority (sf_whole_core_tests)"
