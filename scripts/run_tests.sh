@@ -17,18 +17,14 @@ sf_prepare
 results="${SF_WS}/build/test_results"
 rm -rf "$results"
 
-# What measures wall-clock behaviour never has a compiler or another test beside it at its own
-# priority (doc/reliability.md, "Test order"). (1) The programs the timed tests run are built
-# (goal sf_timed_test_programs). (2) The timed tests run: the rostests two at a time
+# Two steps, so that what measures wall-clock behaviour runs without a compiler beside it
+# (doc/reliability.md, "Test order"): (1) one goal, sf_untimed_tests, builds every test
+# executable and the sanitizer tree (`tests`) and runs the tests that do not depend on timing,
+# each as soon as what it runs is built, two jobs at a time; (2) the rostests run two at a time
 # (SF_ROSTEST_JOBS) but those playing a bag in real time alone, then the soak and the
-# under-load check (which brings its own load, stress-ng) one at a time. Beside them, at the
-# lowest CPU and I/O priority (nice 19, ionice idle), one goal, sf_untimed_tests, builds every
-# other test program and the sanitizer tree (`tests`) and runs the tests that do not depend on
-# timing, each as soon as what it runs is built, two jobs at a time: it takes the CPU the timed
-# tests leave while bags play in real time, and yields it whenever they want it. (3) The fuzz
-# run, whose strength is the CPU it gets in its 60 s (sf_whole_core_tests), runs at normal
-# priority once the timed tests are done. SF_UNTIMED_BESIDE=0 runs the untimed goal first,
-# alone, instead of beside the timed tests.
+# under-load check (which brings its own load, stress-ng) one at a time. Under a plain
+# `catkin_make -j2 run_tests` a compiler or the fuzz run would compete with the 1 kHz nodes of
+# the online tests, a load nobody chose and no test asserts against.
 build_dir="${SF_WS}/build"
 make_targets="$(make -C "$build_dir" help 2>/dev/null | sed -n 's/^\.\.\. \([^ ]*\).*$/\1/p')"
 has_target() { grep -qx -- "$1" <<<"$make_targets"; }
@@ -44,7 +40,7 @@ for name in "${timed[@]}"; do
   target="run_tests_${SF_PACKAGE}_${name}"
   if has_target "$target"; then timed_targets+=("$target"); fi
 done
-# The untimed goal for sf_pkg (make runs the goals of a catkin build directory one after
+# Step 1: CMake's goal for sf_pkg (make runs the goals of a catkin build directory one after
 # another, but a goal's prerequisites side by side), and the whole run_tests target of the
 # workspace's other packages, if they have tests.
 untimed=(sf_untimed_tests)
@@ -68,69 +64,38 @@ filter() {
     { print; fflush() }'
   fi
 }
-SF_UNTIMED_BESIDE="${SF_UNTIMED_BESIDE:-1}"
-run_timed() {
-  local rc=0 paired=() alone=() target
-  for target in "${timed_targets[@]}"; do
-    if [[ "$target" == "run_tests_${SF_PACKAGE}_rostest" ]]; then
-      paired+=("$target")
-    else
-      alone+=("$target")
-    fi
-  done
-  if ((${#paired[@]})) && has_target sf_paired_rostests && has_target sf_online_rostests; then
-    # The rostests that compare the node online with its replay run alone (CMakeLists.txt).
-    sf_log "the rostests, ${SF_ROSTEST_JOBS} at a time (sf_paired_rostests)," \
-      "then those playing a bag in real time one at a time (sf_online_rostests)"
-    "${base[@]}" -j"${SF_ROSTEST_JOBS}" sf_paired_rostests || rc=$?
-    "${base[@]}" -j1 sf_online_rostests || rc=$?
-  elif ((${#paired[@]})); then
-    sf_log "${paired[*]}, ${SF_ROSTEST_JOBS} at a time"
-    "${base[@]}" -j"${SF_ROSTEST_JOBS}" "${paired[@]}" || rc=$?
-  fi
-  if ((${#alone[@]})); then
-    sf_log "one at a time: ${alone[*]}"
-    "${base[@]}" -j1 "${alone[@]}" || rc=$?
-  fi
-  return "$rc"
-}
 run_steps() {
-  local rc=0 t=$SECONDS untimed_log="${SF_WS}/untimed_tests.log" untimed_pid="" untimed_rc=0
-  if ((${#timed_targets[@]})) && has_target sf_timed_test_programs; then
-    sf_log "step 1: building what the timed tests run (sf_timed_test_programs)"
-    "${base[@]}" -j"${SF_JOBS}" sf_timed_test_programs || rc=$?
-    sf_log "step 1 took $((SECONDS - t)) s"
-  fi
-  t=$SECONDS
-  if [[ "$SF_UNTIMED_BESIDE" == 1 ]] && ((${#timed_targets[@]})); then
-    sf_log "step 2: the timed tests; beside them at nice 19 the other tests are built and run" \
-      "(${untimed[*]}; their output follows the timed tests')"
-    # make, not catkin_make: the build space is configured, and a second catkin_make would
-    # check the CMake configuration at the same time as the first.
-    nice -n 19 ionice -c 3 make -C "$build_dir" -k -j"${SF_JOBS}" "${untimed[@]}" \
-      >"$untimed_log" 2>&1 &
-    untimed_pid=$!
-    run_timed || rc=$?
-    sf_log "the timed tests took $((SECONDS - t)) s"
-  else
-    sf_log "step 2: building the tests and running those that do not depend on timing" \
-      "(${untimed[*]})"
-    "${base[@]}" -j"${SF_JOBS}" "${untimed[@]}" || rc=$?
-    if ((${#timed_targets[@]})); then
-      run_timed || rc=$?
+  local rc=0 t=$SECONDS
+  sf_log "step 1: building the tests and running those that do not depend on timing" \
+    "(${untimed[*]})"
+  "${base[@]}" -j"${SF_JOBS}" "${untimed[@]}" || rc=$?
+  sf_log "step 1 took $((SECONDS - t)) s"
+  if ((${#timed_targets[@]})); then
+    t=$SECONDS
+    local paired=() alone=() target
+    for target in "${timed_targets[@]}"; do
+      if [[ "$target" == "run_tests_${SF_PACKAGE}_rostest" ]]; then
+        paired+=("$target")
+      else
+        alone+=("$target")
+      fi
+    done
+    if ((${#paired[@]})) && has_target sf_paired_rostests && has_target sf_online_rostests; then
+      # The rostests that compare the node online with its replay run alone (CMakeLists.txt).
+      sf_log "step 2: the rostests, ${SF_ROSTEST_JOBS} at a time (sf_paired_rostests)," \
+        "then those playing a bag in real time one at a time (sf_online_rostests)"
+      "${base[@]}" -j"${SF_ROSTEST_JOBS}" sf_paired_rostests || rc=$?
+      "${base[@]}" -j1 sf_online_rostests || rc=$?
+    elif ((${#paired[@]})); then
+      sf_log "step 2: ${paired[*]}, ${SF_ROSTEST_JOBS} at a time"
+      "${base[@]}" -j"${SF_ROSTEST_JOBS}" "${paired[@]}" || rc=$?
     fi
+    if ((${#alone[@]})); then
+      sf_log "step 2, one at a time: ${alone[*]}"
+      "${base[@]}" -j1 "${alone[@]}" || rc=$?
+    fi
+    sf_log "step 2 took $((SECONDS - t)) s"
   fi
-  if has_target sf_whole_core_tests; then
-    sf_log "step 3: the fuzz run at normal priority (sf_whole_core_tests)"
-    "${base[@]}" -j1 sf_whole_core_tests || rc=$?
-  fi
-  if [[ -n "$untimed_pid" ]]; then
-    wait "$untimed_pid" || untimed_rc=$?
-    sf_log "the untimed tests beside them (exit ${untimed_rc}):"
-    cat "$untimed_log"
-    ((untimed_rc == 0)) || rc=$untimed_rc
-  fi
-  sf_log "steps 2 and 3 took $((SECONDS - t)) s"
   return "$rc"
 }
 run_steps 2>&1 | tee "${SF_WS}/tests.log" | filter && test_rc=0 || test_rc=$?
