@@ -131,7 +131,10 @@ bool UnscentedTransform<N>::choleskySigmaPoints(const Vector<N>& mean, const Mat
                                                 Points<N>& points) const {
   Matrix<N, N> root = (static_cast<double>(n_) + lambda_) * P;
   if (!probability::choleskyInPlace(root)) return false;
-  for (Index col = 1; col < n_; ++col) root.col(col).head(col).setZero();
+  // Element by element: at N = 1 the loop never runs, yet GCC 12 warned (-Warray-bounds) about
+  // the vectorized store of a column block it saw there.
+  for (Index col = 1; col < n_; ++col)
+    for (Index row = 0; row < col; ++row) root(row, col) = 0.0;
   fillPoints(mean, root, points);
   return true;
 }
