@@ -214,21 +214,11 @@ struct SquareModel {
 
 /// x' = x + 1, z = x^2 (scalar): the observation Jacobian 2x differs between the previous
 /// and the predicted state, so the hand computation shows where H is evaluated.
-struct ShiftSquareModel {
-  static constexpr int StateSize = 1;
-  static constexpr int MeasurementSize = 1;
-  static constexpr int ControlSize = 0;
-  Index stateSize() const { return 1; }
-  Index measurementSize() const { return 1; }
-  Index controlSize() const { return 0; }
+struct ShiftSquareModel : SquareModel {
   template <class S>
   void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<0>&,
                   Eigen::Matrix<S, 1, 1>& next) const {
     next(0) = x(0) + 1.0;
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
-    z(0) = x(0) * x(0);
   }
 };
 
