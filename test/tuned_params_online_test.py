@@ -5,14 +5,14 @@ changes the offline replay's, without a rebuild (test/tuned_params_online.test).
 The test identifies Q and R of test/configs/tune_cart_kf.h on a simulated cart bag
 (tools/sim/cart_sim.py, seed 1), loads the written file into the node's namespace with
 `rosparam load`, starts the node (sf_tune_cart_kf), plays a second cart bag (seed 2,
-readings in mid-period: --mid-period) with `rosbag play --clock --hz=1000`, and compares
+readings in mid-period: --mid-period) with `rosbag play --clock --hz=1000` once the node is
+subscribed and this test connected to its output, and compares
 the states the node publishes on ~state with the offline replay of the same bag given the
 file by --params.
 
 Why the two must agree to rounding: the model is linear and time-invariant, so a period's
 estimate depends only on which readings fall into which period. Offline the schedule starts
-at the first message, online at the first /clock the node sees, which rosbag play holds at
-the bag's start during its delay; every reading lies 30 ms or more from a period end (the
+at the first message, online at the first /clock the node sees, the bag's start; every reading lies 30 ms or more from a period end (the
 bag's --mid-period layout), so scheduling jitter below that does not move a reading into
 another period. A reading that a stall of more than 30 ms did move shows as a run of
 differing periods, which the test counts and prints; it requires identical estimates (1e-9)
@@ -81,16 +81,24 @@ class TunedParamsOnlineTest(unittest.TestCase):
             offline, header = read_states(offline_csv), read_states(header_csv)
 
             states = []
-            rospy.Subscriber("/%s/state" % NAME, StateEstimateStamped, lambda m: states.append(
-                (m.header.stamp.to_sec(), m.state[0], m.state[1])))
+            subscriber = rospy.Subscriber("/%s/state" % NAME, StateEstimateStamped,
+                                          lambda m: states.append(
+                                              (m.header.stamp.to_sec(), m.state[0], m.state[1])))
             subprocess.run(["rosparam", "load", tuned, "/" + NAME], check=True)
             node = subprocess.Popen([exe, "__name:=" + NAME])
             player = None
             try:
-                # the player's delay gives the node time to subscribe; during it, rosbag play
-                # holds /clock at the bag's start, where the node then starts its schedule
-                player = subprocess.Popen(["rosbag", "play", "--clock", "--hz=1000", "-d", "3",
-                                           "-q", online_bag])
+                # Events, not delays: the player starts once this test is connected to the
+                # node's output and the node subscribed to both topics of the bag
+                # (--wait-for-subscribers); the node's schedule starts at the first /clock.
+                start = time.monotonic()
+                while subscriber.get_num_connections() == 0:
+                    self.assertLess(time.monotonic() - start, WALL_TIMEOUT,
+                                    "not connected to the node's %s/state" % NAME)
+                    self.assertIsNone(node.poll(), "the node exited")
+                    time.sleep(0.05)
+                player = subprocess.Popen(["rosbag", "play", "--clock", "--hz=1000",
+                                           "--wait-for-subscribers", "-q", online_bag])
                 end = offline[-1][0] - PERIOD / 2
                 start = time.monotonic()
                 while time.monotonic() - start < WALL_TIMEOUT and not rospy.is_shutdown():
