@@ -21,10 +21,18 @@ to its start, where the robot rests at least 2 s) must then be within the offlin
 DELTA, and the RMSE along the path within the offline RMSE + DELTA. Where the offline
 estimate itself moves faster than 0.7 m/s (other parameters), its top speed replaces v_max.
 
-With ~params (test/nav3ctrl_params_online.test, replay parity of issue 13 item 2) the node
-got a YAML file of private parameters by rosparam and the replay gets the same file by
---params; the file must move the offline estimate by more than twice the bound from the
-header's, so that a node or a replay ignoring it fails.
+A run with a parameter file (replay parity of issue 13 item 2): the node got a YAML file of
+private parameters by rosparam and the replay gets the same file by --params; the file must
+move the offline estimate by more than twice the bound from the header's, so that a node or a
+replay ignoring it fails.
+
+~runs lists the nodes that one playback feeds (test/nav3ctrl_online.test: the header's node
+and one given test/configs/nav3ctrl_params.yaml, side by side), each with its output topic and
+parameter file; every run is checked as above. Without ~runs the test checks one node,
+/nav3ctrl_ekf on odometry/filtered, with ~params if given (test/nav3ctrl_params_online.test,
+which the under-load check runs). The player starts once every node is connected to it on
+every input and the test subscribed to each output: the test subscribes to the ground truth,
+the player's last waited-for topic, only then.
 """
 
 import math
@@ -34,7 +42,10 @@ import sys
 import tempfile
 import time
 import unittest
+import xmlrpc.client
 
+import rosgraph
+import rosnode
 import rospy
 import rostest
 from geometry_msgs.msg import PoseStamped
@@ -52,6 +63,9 @@ PERIOD = 0.1     # s, ESTIMATION_PERIOD of config/nav3ctrl_ekf.h
 CLOCK_STEP = 2.0 / 1000.0
 DELTA = V_MAX * PERIOD
 WALL_TIMEOUT = 110.0
+PLAYER = "/player"
+# what the player plays besides the nodes' inputs: the test's reference, and ROS's own topics
+NOT_INPUTS = ("/ground_truth/pose", "/clock", "/rosout")
 
 
 def find_executable(name):
@@ -63,21 +77,77 @@ def find_executable(name):
     return found[0]
 
 
+def configured_runs():
+    """[(node, output topic, parameter file or "")] from ~runs, or the single default run."""
+    runs = rospy.get_param("~runs", None)
+    if runs is None:
+        return [("/nav3ctrl_ekf", "odometry/filtered", rospy.get_param("~params", ""))]
+    return [(r["node"], r["output"], r.get("params", "")) for r in runs]
+
+
+def player_connections():
+    """{topic: set of subscriber nodes} of the player's connected publications, or None while
+    the player is not up."""
+    try:
+        uri = rosnode.get_api_uri(rosgraph.Master(rospy.get_name()), PLAYER)
+        if not uri:
+            return None
+        code, _, bus = xmlrpc.client.ServerProxy(uri).getBusInfo(rospy.get_name())
+    except (OSError, xmlrpc.client.Error, rosnode.ROSNodeIOException):
+        return None
+    if code != 1:
+        return None
+    connections = {}
+    for info in bus:
+        # [connection id, destination caller id, direction, transport, topic, connected, ...]
+        if info[2] == "o" and (len(info) < 6 or info[5]):
+            connections.setdefault(info[4], set()).add(info[1])
+    return connections
+
+
+def player_inputs():
+    """The topics the player publishes that are the nodes' inputs, or None while unknown."""
+    try:
+        publishers, _, _ = rosgraph.Master(rospy.get_name()).getSystemState()
+    except (OSError, rosgraph.MasterException):
+        return None
+    topics = [t for t, nodes in publishers if PLAYER in nodes and t not in NOT_INPUTS]
+    return topics or None
+
+
 class Nav3ctrlOnlineTest(unittest.TestCase):
+    def wait_until_nodes_connected(self, nodes):
+        """Until the player is connected to every node on every input (rosbag play's
+        --wait-for-subscribers waits for one subscriber per topic only)."""
+        start = time.monotonic()
+        while not rospy.is_shutdown():
+            inputs, connections = player_inputs(), player_connections()
+            if inputs and connections is not None and all(
+                    set(nodes) <= connections.get(t, set()) for t in inputs):
+                return
+            self.assertLess(time.monotonic() - start, WALL_TIMEOUT,
+                            "the nodes %s did not connect to the player's inputs %s (%s)" %
+                            (nodes, inputs, connections))
+            time.sleep(0.05)
+
     def test_online_matches_offline_and_truth(self):
-        received = []
-        rospy.Subscriber("odometry/filtered", Odometry, lambda m: received.append(
-            (m.header.stamp.to_sec(), m.pose.pose.position.x, m.pose.pose.position.y)))
+        runs = configured_runs()
+        received = {}
+        for node, output, _ in runs:
+            received[node] = []
+            rospy.Subscriber(output, Odometry, lambda m, r=received[node]: r.append(
+                (m.header.stamp.to_sec(), m.pose.pose.position.x, m.pose.pose.position.y)))
         # The bag is read before the player starts: reading it costs seconds of CPU, which on
         # a loaded machine the node needs while the bag plays.
         bag = rospy.get_param("~bag")
         truth = evaluate.load_truth(bag)
+        self.wait_until_nodes_connected([node for node, _, _ in runs])
         # The player starts once every topic it plays has a subscriber (--wait-for-subscribers):
-        # the node's inputs, and ground_truth/pose, which only this test reads - so no estimate
+        # the nodes' inputs, and ground_truth/pose, which only this test reads - so no estimate
         # is published before the test listens.
         rospy.Subscriber("ground_truth/pose", PoseStamped, lambda m: None)
 
-        # the bag ends at rest at the start: wait for an estimate at its end. The node estimates
+        # the bag ends at rest at the start: wait for an estimate at its end. A node estimates
         # every period that ended by its last clock reading, which is at least the last message
         # time - CLOCK_STEP; its periods' phase is that of its first /clock, so the last one
         # ends less than a period before that reading (its end is not truth.t[-1] - PERIOD
@@ -85,38 +155,39 @@ class Nav3ctrlOnlineTest(unittest.TestCase):
         end = truth.t[-1] - CLOCK_STEP - PERIOD
         start = time.monotonic()
         while not rospy.is_shutdown() and time.monotonic() - start < WALL_TIMEOUT:
-            if received and received[-1][0] >= end:
+            if all(r and r[-1][0] >= end for r in received.values()):
                 break
             time.sleep(0.2)
-        self.assertTrue(received, "no odometry received")
-        self.assertGreaterEqual(received[-1][0], end, "the node did not estimate up to the end")
+        failures = []
+        for node, _, params in runs:
+            failures += self.check_run(node, received[node], bag, truth, end, params)
+        if failures:
+            self.fail("\n".join(failures))
 
-        # with ~params (test/nav3ctrl_params_online.test): the node got the YAML file by
-        # rosparam, the replay gets it by --params
-        params = rospy.get_param("~params", "")
-        with tempfile.TemporaryDirectory(prefix="sf_online_test_") as tmp:
-            csv_path = os.path.join(tmp, "offline.csv")
-            exe = find_executable("sf_nav3ctrl_ekf")
-            subprocess.run([exe, "--replay", bag, "--csv", csv_path] +
-                           (["--params", params] if params else []),
-                           check=True, stdout=subprocess.PIPE, timeout=60)
-            offline = evaluate.load_result_csv(csv_path, ["pose_x", "pose_y"])
+    def check_run(self, node, received, bag, truth, end, params):
+        """The failed checks of one node's run, as texts; prints its figures."""
+        if not received:
+            return ["%s: no odometry received" % node]
+        if received[-1][0] < end:
+            return ["%s: the node did not estimate up to the end (%.3f s < %.3f s)" % (
+                node, received[-1][0], end)]
+        exe = find_executable("sf_nav3ctrl_ekf")
+        offline = self.replay(exe, bag, params)
         # the bound's v_max: the bag's, or the estimate's own top speed if that is higher (a
         # filter given other parameters may estimate a faster path than the robot drove)
         speed = max(math.hypot(offline.x[k + 1] - offline.x[k], offline.y[k + 1] - offline.y[k]) /
                     (offline.t[k + 1] - offline.t[k]) for k in range(len(offline.t) - 1))
         delta = max(V_MAX, speed) * PERIOD
+        failures = []
         if params:
             # the file must move the estimates well beyond the bound, or the parity proves
             # nothing: a node or replay that ignored it would then fail the comparison
-            with tempfile.TemporaryDirectory(prefix="sf_online_test_") as tmp:
-                header_csv = os.path.join(tmp, "header.csv")
-                subprocess.run([exe, "--replay", bag, "--csv", header_csv], check=True,
-                               stdout=subprocess.PIPE, timeout=60)
-                header = evaluate.load_result_csv(header_csv, ["pose_x", "pose_y"])
+            header = self.replay(exe, bag, "")
             moved = max(math.hypot(hx - ox, hy - oy) for hx, hy, ox, oy in
                         zip(header.x, header.y, offline.x, offline.y))
-            self.assertGreater(moved, 2 * delta, "the parameter file hardly changes the estimates")
+            if not moved > 2 * delta:
+                failures.append("%s: the parameter file hardly changes the estimates (%.4f m)" %
+                                (node, moved))
         online = evaluate.make_trajectory(*zip(*received))
         ev_on = evaluate.evaluate(online, truth)
         ev_off = evaluate.evaluate(offline, truth)
@@ -128,23 +199,40 @@ class Nav3ctrlOnlineTest(unittest.TestCase):
             if ref is not None:
                 gaps.append(math.hypot(x - ref[0], y - ref[1]))
                 gap_times.append(t - truth.t[0])
+        if len(gaps) <= 0.9 * len(offline.t):
+            return failures + ["%s: too few online estimates (%d of %d)" % (
+                node, len(gaps), len(offline.t))]
         # where the online path left the offline one (for a failure under load): the largest
         # growth of the gap from one estimate to the next, and its bag time
         step, at = max(((b - a, t) for a, b, t in zip(gaps, gaps[1:], gap_times[1:])),
                        default=(0.0, 0.0))
-        print("largest growth of the online - offline gap: %.4f m at %.1f s of the bag" % (step, at))
-        self.assertGreater(len(gaps), 0.9 * len(offline.t), "too few online estimates")
         final_gap = math.hypot(online.x[-1] - offline.x[-1], online.y[-1] - offline.y[-1])
-        print("online: %d estimates, final error %.4f m, RMSE %.4f m; offline: %d estimates, "
+        print("%s%s: largest growth of the online - offline gap %.4f m at %.1f s of the bag; "
+              "online: %d estimates, final error %.4f m, RMSE %.4f m; offline: %d estimates, "
               "final error %.4f m, RMSE %.4f m; online - offline: final %.4f m, max %.4f m, "
               "mean %.4f m (bound %.3f m)" % (
+                  node, " (%s)" % os.path.basename(params) if params else "", step, at,
                   len(online.t), ev_on.final_pos_err, ev_on.rmse_pos, len(offline.t),
                   ev_off.final_pos_err, ev_off.rmse_pos, final_gap, max(gaps),
                   sum(gaps) / len(gaps), delta))
-        self.assertLess(max(gaps), delta)
-        self.assertLess(final_gap, delta)
-        self.assertLess(ev_on.final_pos_err, ev_off.final_pos_err + delta)
-        self.assertLess(ev_on.rmse_pos, ev_off.rmse_pos + delta)
+        for name, value, bound in (
+                ("max online - offline gap", max(gaps), delta),
+                ("final online - offline gap", final_gap, delta),
+                ("online final error", ev_on.final_pos_err, ev_off.final_pos_err + delta),
+                ("online RMSE", ev_on.rmse_pos, ev_off.rmse_pos + delta)):
+            if not value < bound:
+                failures.append("%s: %s %.4f m, not below %.4f m" % (node, name, value, bound))
+        return failures
+
+    @staticmethod
+    def replay(exe, bag, params):
+        """The offline replay's trajectory of `bag`, given the parameter file `params` if any."""
+        with tempfile.TemporaryDirectory(prefix="sf_online_test_") as tmp:
+            csv_path = os.path.join(tmp, "offline.csv")
+            subprocess.run([exe, "--replay", bag, "--csv", csv_path] +
+                           (["--params", params] if params else []),
+                           check=True, stdout=subprocess.PIPE, timeout=60)
+            return evaluate.load_result_csv(csv_path, ["pose_x", "pose_y"])
 
 
 if __name__ == "__main__":
