@@ -207,12 +207,13 @@ void printGpsCounters(const std::string& name, const sf_filter::MessageSink& sin
   }
 }
 
-/// Offline replay: `<node> --replay in.bag [--csv out.csv] [--bag out.bag] [options]`.
+/// Offline replay: `<node> --replay in.bag [more.bag...] [--csv out.csv] [--bag out.bag]
+/// [options]`.
 int replayMain(int argc, char** argv, const NodeDefinition& def) {
   const std::string program = argv[0];
   const std::string usage =
       "usage: " + program +
-      " --replay INPUT.bag [--csv OUT.csv] [--bag OUT.bag] [--name NODE]\n"
+      " --replay INPUT.bag [INPUT.bag]... [--csv OUT.csv] [--bag OUT.bag] [--name NODE]\n"
       "       [--estimation-period S | --estimation-period-ms MS] [--scale-q FACTOR]\n"
       "       [--scale-r FACTOR] [--seed N] [--strict]\n"
       "       [--frame-id FRAME] [--child-frame-id FRAME] [--base-frame FRAME]\n"
@@ -222,10 +223,12 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       "       [--static-transform X Y Z YAW PITCH ROLL PARENT CHILD]...\n"
       "   or: " +
       program +
-      " --tune INPUT.bag [--free LIST] [--out TUNED.yaml]\n"
+      " --tune INPUT.bag [INPUT.bag]... [--free LIST] [--out TUNED.yaml]\n"
       "       [--tune-range F] [--max-evaluations N] [the replay's options but --csv, --bag]\n"
       "Replays the bag through this node's filter without a ROS master, in recorded-time\n"
       "order, and writes the estimates. Without --csv and --bag only a summary is printed.\n"
+      "Several bags are one recording: their messages are merged in recorded-time order\n"
+      "(the parts of rosbag record --split, or topics recorded into separate bags).\n"
       "--frame-id, --child-frame-id: frames of the output bag's odometry (default odom,\n"
       "base_link, like the node's ~frame_id, ~child_frame_id); --base-frame: the frame\n"
       "FRAME_ALIGNED_INPUTS are rotated into (default BASE_FRAME, like ~base_frame), with\n"
@@ -305,11 +308,17 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       if (arg == "--help") {
         std::cout << usage << std::endl;
         return EXIT_SUCCESS;
-      } else if (arg == "--replay") {
-        options.inputBag = value();
-      } else if (arg == "--tune") {
-        options.inputBag = value();
-        tune = true;
+      } else if (arg == "--replay" || arg == "--tune") {
+        if (!options.inputBags.empty()) {
+          throw std::invalid_argument(arg + ": the bags are given once, after --replay or --tune");
+        }
+        // the bags: the value, and every following argument up to the next option or remap
+        options.inputBags.push_back(value());
+        while (i + 1 < argc && argv[i + 1][0] != '-' &&
+               std::string(argv[i + 1]).find(":=") == std::string::npos) {
+          options.inputBags.push_back(argv[++i]);
+        }
+        tune = tune || arg == "--tune";
       } else if (arg == "--free") {
         freeList = value();
       } else if (arg == "--out") {
@@ -570,8 +579,9 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       std::cerr << program << ": interrupted (" << strsignal(signal) << "), no output written"
                 << std::endl;
     } else {
-      std::cerr << program << ": reading bag " << options.inputBag << " crashed the bag library ("
-                << strsignal(signal) << "): the bag is corrupt; no output written" << std::endl;
+      std::cerr << program << ": reading bag " << sf_filter::commaSeparated(options.inputBags)
+                << " crashed the bag library (" << strsignal(signal)
+                << "): the bag is corrupt; no output written" << std::endl;
     }
   });
 }

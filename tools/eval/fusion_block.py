@@ -6,11 +6,12 @@ launch/soccer_fusion_block.launch, without a ROS master.
   1. the bag is replayed through the per-sensor filters, each writing its output bag
        sf_soccer_vision_kf   (config/soccer_vision_kf.h)   vision_kf/position/{x,y}
        sf_soccer_encoder_kf  (config/soccer_encoder_kf.h)  encoder_kf/position/{x,y}
-  2. their output bags are merged into one, in time order (python3-rosbag)
-  3. the merged bag is replayed through the confidence-weighted averaging of each axis
+  2. both output bags are replayed as one recording (--replay with two bags: merged in time
+     order) through the confidence-weighted averaging of each axis
        sf_soccer_cwa_x, sf_soccer_cwa_y (config/soccer_fusion_cwa.h)  fused/position/{x,y}
-  4. the two axes are joined into fusion_block.csv (time,x0,x1,var0,var1,present_inputs) and every
-     position into fusion_block.bag, the recording of the whole block.
+  3. the two axes are joined into fusion_block.csv (time,x0,x1,var0,var1,present_inputs) and every
+     position is merged into fusion_block.bag (python3-rosbag), the recording of the whole
+     block.
 
 It prints each stage's summary line and the position errors of the vision filter, the
 encoder filter and the fused position against the bag's ground_truth/pose.
@@ -132,22 +133,19 @@ def run_chain(bag, lib_dir, work_dir, timeout=120, log=print, record=False):
                                       ["--bag", stage_bags[-1], "--name", label], timeout)
         summaries[label] = evaluate.summary_line(output)
         log("  %-12s %s" % (label, summaries[label]))
-    merged = os.path.join(work_dir, "sensor_filters.bag")
-    counts = merge_bags(stage_bags, merged, keep=is_position)
-    log("  %-12s %d messages on %d topics" % ("merged", sum(counts.values()), len(counts)))
     axis_csvs, axis_bags = [], []
     for name, axis in AXIS_FUSION:
         label = "cwa_" + axis
         axis_csvs.append(os.path.join(work_dir, label + ".csv"))
         axis_bags.append(os.path.join(work_dir, label + ".bag"))
-        output = pioneer_nodes.replay(exe(name), merged, axis_csvs[-1],
+        output = pioneer_nodes.replay(exe(name), stage_bags, axis_csvs[-1],
                                       ["--bag", axis_bags[-1], "--name", label], timeout)
         summaries[label] = evaluate.summary_line(output)
         log("  %-12s %s" % (label, summaries[label]))
     csvs["fusion_block"] = os.path.join(work_dir, "fusion_block.csv")
     join_axes(axis_csvs[0], axis_csvs[1], csvs["fusion_block"])
     if record:
-        merge_bags([merged] + axis_bags, os.path.join(work_dir, "fusion_block.bag"),
+        merge_bags(stage_bags + axis_bags, os.path.join(work_dir, "fusion_block.bag"),
                    keep=is_position)
     return csvs, summaries
 

@@ -97,9 +97,11 @@ def slug(label):
 
 
 def replay(exe, bag, csv_path, extra=(), timeout=120):
-    """Runs `exe --replay bag --csv csv_path extra...`; returns its summary (stdout).
-    Raises RuntimeError naming the command when it fails or times out."""
-    cmd = [exe, "--replay", bag, "--csv", csv_path] + list(extra)
+    """Runs `exe --replay bag --csv csv_path extra...`; returns its summary (stdout). `bag`:
+    a path, or a list of paths read as one recording. Raises RuntimeError naming the command
+    when it fails or times out."""
+    bags = [bag] if isinstance(bag, str) else list(bag)
+    cmd = [exe, "--replay"] + bags + ["--csv", csv_path] + list(extra)
     if not os.access(exe, os.X_OK):
         raise RuntimeError("%s is not an executable" % exe)
     if not has_replay_mode(exe):

@@ -71,18 +71,20 @@ inline bool sameFile(const std::string& a, const std::string& b) {
          sa.st_ino == sb.st_ino;
 }
 
-/// Refuses outputs that would destroy the input or each other, before anything is read: an
-/// output (or its temporary name) that is the input bag, the same file for two outputs, an
+/// Refuses outputs that would destroy an input or each other, before anything is read: an
+/// output (or its temporary name) that is an input bag, the same file for two outputs, an
 /// existing target or temporary name that is not a regular file.
-inline void checkOutputs(const std::string& input,
+inline void checkOutputs(const std::vector<std::string>& inputs,
                          const std::vector<std::pair<std::string, std::string>>& outputs) {
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     const auto& [option, path] = outputs[k];
     if (path.empty()) continue;
     for (const std::string& p : {path, partialPath(path)}) {
-      if (sameFile(p, input)) {
-        throw ReplayError(option + " " + path + " is the input bag " + input +
-                          ": refusing to overwrite the input");
+      for (const std::string& input : inputs) {
+        if (sameFile(p, input)) {
+          throw ReplayError(option + " " + path + " is the input bag " + input +
+                            ": refusing to overwrite the input");
+        }
       }
     }
     atomic_output_detail::requireRegularOrNew(path, option);

@@ -1,13 +1,14 @@
-// Offline replay: reads a bag directly (no ROS master), feeds its messages in recorded-time
-// order through the same fusion core as the online node, and writes the estimates as CSV
-// and/or as a bag with the node's own output topics, as fast as the machine allows. The
-// recorded time plays the role of the node's clock, so the result is deterministic.
-// A node with FRAME_ALIGNED_INPUTS gets the bag's /tf_static and /tf through
-// readTransforms() (see replay_frame_aligner.hpp).
+// Offline replay: reads a bag directly (no ROS master), or several as one recording, feeds its
+// messages in recorded-time order through the same fusion core as the online node, and writes the
+// estimates as CSV and/or as a bag with the node's own output topics, as fast as the machine
+// allows. The recorded time plays the role of the node's clock, so the result is deterministic. A
+// node with FRAME_ALIGNED_INPUTS gets the bag's /tf_static and /tf through readTransforms() (see
+// replay_frame_aligner.hpp).
 #pragma once
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdint>
@@ -43,7 +44,9 @@
 namespace sf_filter {
 
 struct ReplayOptions {
-  std::string inputBag;
+  /// The bags to replay, read as one recording: their messages merged in recorded-time order
+  /// (the parts of a `rosbag record --split`, or topics recorded into separate bags).
+  std::vector<std::string> inputBags;
   std::string csvPath;                 ///< empty: no CSV
   std::string outputBag;               ///< empty: no bag
   std::string nodeName = "sf_filter";  ///< namespace of the ~state topic in the output bag
@@ -53,6 +56,13 @@ struct ReplayOptions {
   /// missing in every period (true; at least one configured topic must be there).
   bool allowMissingTopics = false;
 };
+
+/// "a, b, c": the bags or topics of a message.
+inline std::string commaSeparated(const std::vector<std::string>& items) {
+  std::string list;
+  for (const std::string& item : items) list += (list.empty() ? "" : ", ") + item;
+  return list;
+}
 
 struct ReplaySummary {
   std::uint64_t messages = 0;
@@ -130,21 +140,22 @@ class BagReplay final : public MessageSink {
   /// the values that then cannot be rotated are the sink's to report.
   void readTransforms(TransformSink sink) { transformSink_ = std::move(sink); }
 
-  /// Replays the whole bag. Throws ReplayError with a one-line reason on failure; outputs are
-  /// then not created. The bag's topics and types are checked before any output is opened.
+  /// Replays the whole recording. Throws ReplayError with a one-line reason on failure; outputs
+  /// are then not created. The bags' topics and types are checked before any output is opened.
   ReplaySummary run() {
-    checkOutputs(options_.inputBag, {{"--csv", options_.csvPath}, {"--bag", options_.outputBag}});
-    rosbag::Bag input;
-    openInput(input);
-    const std::map<std::string, Recorded> recorded = readInput([&] { return connections(input); });
+    checkOutputs(options_.inputBags, {{"--csv", options_.csvPath}, {"--bag", options_.outputBag}});
+    const std::vector<std::unique_ptr<rosbag::Bag>> inputs = openInputs();
+    const std::map<std::string, Recorded> recorded = readInput([&] { return connections(inputs); });
     checkTypes(recorded);
     std::vector<std::string> topics = recordedTopics(recorded);
-    std::string tfTopic;  // the bag's name of /tf, if read
+    const bool readTf = transformSink_ && recorded.count(kTf);
     if (transformSink_) {
       if (recorded.count(kTfStatic)) {
-        readInput([&] { readStaticTransforms(input, recorded.at(kTfStatic).name); });
+        readInput([&] { readStaticTransforms(inputs, recorded.at(kTfStatic).names); });
       }
-      if (recorded.count(kTf)) topics.push_back(tfTopic = recorded.at(kTf).name);
+      if (readTf) {
+        topics.insert(topics.end(), recorded.at(kTf).names.begin(), recorded.at(kTf).names.end());
+      }
     }
 
     AtomicOutput csvFile(options_.csvPath), bagFile(options_.outputBag);
@@ -167,9 +178,10 @@ class BagReplay final : public MessageSink {
       if (output) writeOutput(bagFile, [&] { writeBag(*output, e); });
     };
     readInput([&] {
-      rosbag::View view(input, rosbag::TopicQuery(topics));
+      rosbag::View view;
+      for (const auto& input : inputs) view.addQuery(*input, rosbag::TopicQuery(topics));
       for (const rosbag::MessageInstance& m : view) {
-        if (!tfTopic.empty() && m.getTopic() == tfTopic) {
+        if (readTf && absolute(m.getTopic()) == kTf) {
           transformSink_(*instantiate<tf2_msgs::TFMessage>(m, kTf), false);
           continue;
         }
@@ -222,11 +234,15 @@ class BagReplay final : public MessageSink {
     return msg;
   }
 
-  /// A topic of the bag: its recorded name (a recorder may have stored names without the
+  /// A connection's message type, and the bag that holds it.
+  struct RecordedType {
+    std::string datatype, md5sum, bag;
+  };
+  /// A topic of the bags: its recorded names (a recorder may have stored names without the
   /// leading slash) and the message types of its connections.
   struct Recorded {
-    std::string name;
-    std::vector<std::pair<std::string, std::string>> types;  ///< (datatype, md5sum)
+    std::vector<std::string> names;
+    std::vector<RecordedType> types;
   };
 
   /// The output bag. When the replay fails it is abandoned, not closed: closing writes the
@@ -256,8 +272,24 @@ class BagReplay final : public MessageSink {
     std::string datatype, md5sum;
   };
 
-  void openInput(rosbag::Bag& bag) const {
-    const std::string& path = options_.inputBag;
+  /// Opens every input bag; refuses one given twice (its messages would be read twice).
+  std::vector<std::unique_ptr<rosbag::Bag>> openInputs() const {
+    if (options_.inputBags.empty()) throw ReplayError("no input bag");
+    std::vector<std::unique_ptr<rosbag::Bag>> bags;
+    for (std::size_t k = 0; k < options_.inputBags.size(); ++k) {
+      const std::string& path = options_.inputBags[k];
+      for (std::size_t j = 0; j < k; ++j) {
+        if (sameFile(options_.inputBags[j], path)) {
+          throw ReplayError("bag " + path + " is given twice (as " + options_.inputBags[j] + ")");
+        }
+      }
+      bags.push_back(std::make_unique<rosbag::Bag>());
+      openInput(*bags.back(), path);
+    }
+    return bags;
+  }
+
+  static void openInput(rosbag::Bag& bag, const std::string& path) {
     if (::access(path.c_str(), R_OK) != 0) {
       throw ReplayError("cannot read bag " + path + ": " + std::strerror(errno));
     }
@@ -272,18 +304,24 @@ class BagReplay final : public MessageSink {
     }
   }
 
-  /// Runs `read` on the input bag; its library's exceptions become a ReplayError naming it.
+  /// "bag A", or "one of the bags A, B" for several: where a read failed (rosbag's merged
+  /// view does not say which bag a record came from).
+  std::string inputsName() const {
+    if (options_.inputBags.size() == 1) return "bag " + options_.inputBags.front();
+    return "one of the bags " + commaSeparated(options_.inputBags);
+  }
+
+  /// Runs `read` on the input bags; their library's exceptions become a ReplayError naming them.
   template <class Read>
   auto readInput(Read read) const -> decltype(read()) {
-    const std::string& path = options_.inputBag;
     try {
       return read();
     } catch (const rosbag::BagException& e) {
-      throw ReplayError("bag " + path + " is corrupt or truncated: " + e.what());
+      throw ReplayError(inputsName() + " is corrupt or truncated: " + e.what());
     } catch (const ros::Exception& e) {  // a message that does not deserialise
-      throw ReplayError("bag " + path + " is corrupt, a message could not be decoded: " + e.what());
+      throw ReplayError(inputsName() + " is corrupt, a message could not be decoded: " + e.what());
     } catch (const std::bad_alloc&) {
-      throw ReplayError("bag " + path + " is corrupt: a record claims more memory than there is");
+      throw ReplayError(inputsName() + " is corrupt: a record claims more memory than there is");
     }
   }
 
@@ -303,14 +341,19 @@ class BagReplay final : public MessageSink {
                        "): " + std::strerror(errno));
   }
 
-  /// Absolute topic name -> what the bag holds under it.
-  static std::map<std::string, Recorded> connections(rosbag::Bag& bag) {
+  /// Absolute topic name -> what the bags hold under it.
+  std::map<std::string, Recorded> connections(
+      const std::vector<std::unique_ptr<rosbag::Bag>>& bags) const {
     std::map<std::string, Recorded> recorded;
-    rosbag::View all(bag);
-    for (const rosbag::ConnectionInfo* c : all.getConnections()) {
-      Recorded& r = recorded[absolute(c->topic)];
-      r.name = c->topic;
-      r.types.emplace_back(c->datatype, c->md5sum);
+    for (std::size_t k = 0; k < bags.size(); ++k) {
+      rosbag::View all(*bags[k]);
+      for (const rosbag::ConnectionInfo* c : all.getConnections()) {
+        Recorded& r = recorded[absolute(c->topic)];
+        if (std::find(r.names.begin(), r.names.end(), c->topic) == r.names.end()) {
+          r.names.push_back(c->topic);
+        }
+        r.types.push_back({c->datatype, c->md5sum, options_.inputBags[k]});
+      }
     }
     return recorded;
   }
@@ -328,15 +371,15 @@ class BagReplay final : public MessageSink {
     for (const auto& [topic, type] : expected) {
       const auto it = recorded.find(topic);
       if (it == recorded.end()) continue;
-      for (const auto& [datatype, md5sum] : it->second.types) {
+      for (const auto& [datatype, md5sum, bag] : it->second.types) {
         // Another name with the same definition (md5sum) is the same message: tf/tfMessage of
         // a tf1-era recording is tf2_msgs/TFMessage.
         if (datatype != type.datatype && md5sum != type.md5sum) {
-          throw ReplayError("bag " + options_.inputBag + ": topic " + topic + " holds " + datatype +
+          throw ReplayError("bag " + bag + ": topic " + topic + " holds " + datatype +
                             ", the configuration reads " + type.datatype);
         }
         if (md5sum != type.md5sum && md5sum != "*") {
-          throw ReplayError("bag " + options_.inputBag + ": topic " + topic + " holds " + datatype +
+          throw ReplayError("bag " + bag + ": topic " + topic + " holds " + datatype +
                             " of another definition (md5sum " + md5sum + ", this build has " +
                             type.md5sum + ")");
         }
@@ -344,8 +387,10 @@ class BagReplay final : public MessageSink {
     }
   }
 
-  void readStaticTransforms(rosbag::Bag& bag, const std::string& topic) {
-    rosbag::View view(bag, rosbag::TopicQuery(topic));
+  void readStaticTransforms(const std::vector<std::unique_ptr<rosbag::Bag>>& bags,
+                            const std::vector<std::string>& names) {
+    rosbag::View view;
+    for (const auto& bag : bags) view.addQuery(*bag, rosbag::TopicQuery(names));
     for (const rosbag::MessageInstance& m : view) {
       transformSink_(*instantiate<tf2_msgs::TFMessage>(m, kTfStatic), true);
     }
@@ -360,14 +405,14 @@ class BagReplay final : public MessageSink {
       if (it == recorded.end()) {
         missing.push_back(handler.first);
       } else {
-        topics.push_back(it->second.name);
+        topics.insert(topics.end(), it->second.names.begin(), it->second.names.end());
       }
     }
     if (missing.empty()) return topics;
-    std::string list;
-    for (const std::string& topic : missing) list += (list.empty() ? "" : ", ") + topic;
+    const std::string bags = commaSeparated(options_.inputBags);
     const std::string what =
-        "bag " + options_.inputBag + " has no topic " + list + " that the configuration reads";
+        (options_.inputBags.size() == 1 ? "bag " + bags + " has" : "bags " + bags + " have") +
+        " no topic " + commaSeparated(missing) + " that the configuration reads";
     if (!options_.allowMissingTopics) {
       throw ReplayError(what + " (--allow-missing-topics replays without it)");
     }
