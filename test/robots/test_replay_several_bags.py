@@ -7,7 +7,8 @@ Reference: the replay of the whole bag. bags/diff_drive_seed1.bag (odom, imu/dat
 split in two at mid-time, as `rosbag record --split` would, and by topic (the IMU in one bag,
 the rest in the other); each replay of the parts must write the same CSV, byte for byte. The
 noise identification of test/configs/tune_cart_kf.h on a simulated cart bag split in two must
-write the same tuned file. Refused: a bag given twice, a part holding a configured topic of
+write the same tuned file. A topic stored under two spellings ("odom" and "/odom") is read
+under both. Refused: a bag given twice, a part holding a configured topic of
 another type (named with its bag), and a topic that none of the bags holds.
 """
 
@@ -116,6 +117,26 @@ class SeveralBagsTest(unittest.TestCase):
             tuned.append(lines[:1] + lines[2:])
         self.assertIn("measurement_noise_covariance:", "\n".join(tuned[0]))
         self.assertEqual(tuned[1], tuned[0])
+
+    def test_a_topic_under_two_spellings_is_read_whole(self):
+        # a recorder may store a name with or without its leading slash; the recording read
+        # as one holds both spellings of odom (the shipped bag stores "odom")
+        import rosbag
+
+        respelled = self.path("respelled.bag")
+        with rosbag.Bag(BAG) as bag, rosbag.Bag(respelled, "w") as out:
+            count = 0
+            for topic, raw, t, header in bag.read_messages(raw=True,
+                                                           return_connection_header=True):
+                if topic == "odom":
+                    count += 1
+                    if count % 2:
+                        topic = "/odom"
+                        header = dict(header, topic="/odom")
+                out.write(topic, raw, t, raw=True, connection_header=header)
+        self.assertGreater(count, 100)
+        self.assertEqual(self.replay_csv([respelled], "respelled.csv"),
+                         self.replay_csv([BAG], "whole.csv"))
 
     def test_a_bag_given_twice_is_refused(self):
         proc = self.run_node(self.exe, "--replay", BAG, BAG, "--csv", self.path("out.csv"))
