@@ -8,3 +8,24 @@ namespace estimation {
   template void Measurement<M>::validateCovariances() const;
 SF_ESTIMATION_FOR_CHECKED_MEASUREMENT_SIZES(SF_ESTIMATION_MEASUREMENT_CHECK)
 }  // namespace estimation
+
+namespace estimation {
+namespace detail {
+
+void refuseInputSize(const char* what, Index size, Index expected) {
+  throw InvalidInputError(std::string(what) + " vector has " + std::to_string(size) +
+                          " entries, the filter expects " + std::to_string(expected));
+}
+
+void refuseNonFiniteInput(const char* what, Index i, double value) {
+  throw InvalidInputError(std::string(what) + " " + std::to_string(i) + " is not finite (" +
+                          std::to_string(value) + ")");
+}
+
+void refuseMeasurementVariance(Index i, double variance) {
+  throw InvalidInputError("variance of measurement " + std::to_string(i) +
+                          " must be finite and positive, got " + std::to_string(variance));
+}
+
+}  // namespace detail
+}  // namespace estimation

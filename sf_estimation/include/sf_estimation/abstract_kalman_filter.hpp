@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sf_estimation/angles.hpp"
+#include "sf_estimation/kalman_correction.hpp"
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/parameter_checks.hpp"
@@ -56,9 +57,7 @@ class AbstractKalmanFilter {
   }
 
   std::string description() const {
-    return method_ + "(n=" + std::to_string(stateSize()) +
-           ", m=" + std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) +
-           ")";
+    return filterDescription(method_, stateSize(), measurementSize(), controlSize());
   }
 
  protected:
@@ -66,20 +65,10 @@ class AbstractKalmanFilter {
                        const Vector<N>& x0, const Matrix<N, N>& P0, Index controlSize,
                        const AngularComponents& angles)
       : method_(std::move(method)), x_(x0), x0_(x0), P_(P0), P0_(P0), Q_(Q), R_(R) {
-    const Index n = Q.rows();
-    if (n < 1) {
-      throw ParameterError(method_ + ": the state must have at least one variable (Q is " +
-                           sizeText(Q.rows(), Q.cols()) + ")");
-    }
-    requireCovariance(method_, "Q", Q, n, false);
-    requireCovariance(method_, "R", R, R.rows(), true);
-    requireSize(method_, "x0", x0, n, 1);
-    requireCovariance(method_, "P0", P0, n, false);
-    if (controlSize < 0 || (L != Dynamic && controlSize != L)) {
-      throw ParameterError(method_ + ": control size must be " + std::to_string(L));
-    }
+    requireFilterParameters(method_, Q, R, x0, P0);
+    requireControlSize(method_, controlSize, L);
     u_ = Vector<L>::Zero(controlSize);
-    angleStates_ = AngleMask<N>(angles.states, n, method_, "state");
+    angleStates_ = AngleMask<N>(angles.states, Q.rows(), method_, "state");
     angleMeasurements_ = AngleMask<M>(angles.measurements, R.rows(), method_, "measurement");
     angleStates_.wrap(x0_);
     x_ = x0_;
@@ -90,15 +79,7 @@ class AbstractKalmanFilter {
   /// NumericalError and the filter keeps its previous belief. `repairedBefore` counts a
   /// repair the step already made (the UKF's predicted covariance).
   void commit(Vector<N>& x, Matrix<N, N>& P, bool repairedBefore = false) {
-    symmetrize(P);
-    if (!x.allFinite() || !P.allFinite()) {
-      throw NumericalError(method_ + ": the estimate became non-finite; step rejected");
-    }
-    const bool repaired = repairCovariance(P);
-    if (!P.allFinite()) {
-      throw NumericalError(method_ + ": the covariance repair failed; step rejected");
-    }
-    angleStates_.wrap(x);
+    const bool repaired = settleBelief(x, P, angleStates_, method_);
     x_ = x;
     P_ = P;
     repairs_.covariance += (repaired ? 1 : 0) + (repairedBefore ? 1 : 0);

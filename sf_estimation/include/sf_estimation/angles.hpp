@@ -39,6 +39,12 @@ inline double wrapAngle(double a) {
   return a;
 }
 
+/// Throws ParameterError naming `method` and `what` for an index of `indices` outside
+/// [0, size) or listed twice. Compiled once in the library (src/angles.cpp), for masks of
+/// every size.
+void requireAngleIndices(const std::vector<Index>& indices, Index size, const std::string& method,
+                         const std::string& what);
+
 /// Which entries of a vector of size Rows are angles, as a mask built once at construction
 /// (a step then only tests booleans, and nothing is done when no entry is an angle).
 template <int Rows>
@@ -52,18 +58,9 @@ class AngleMask {
   AngleMask(const std::vector<Index>& indices, Index size, const std::string& method,
             const std::string& what)
       : AngleMask(size) {
-    for (const Index i : indices) {
-      if (i < 0 || i >= size) {
-        throw ParameterError(method + ": angle " + what + " index " + std::to_string(i) +
-                             " is out of range [0, " + std::to_string(size) + ")");
-      }
-      if (angular_(i)) {
-        throw ParameterError(method + ": angle " + what + " index " + std::to_string(i) +
-                             " is listed twice");
-      }
-      angular_(i) = true;
-      any_ = true;
-    }
+    requireAngleIndices(indices, size, method, what);
+    for (const Index i : indices) angular_(i) = true;
+    any_ = !indices.empty();
   }
 
   bool any() const { return any_; }

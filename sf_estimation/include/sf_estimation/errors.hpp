@@ -31,4 +31,8 @@ class NumericalError : public EstimationError {
   using EstimationError::EstimationError;
 };
 
+/// Throws NumericalError "<method>: <reason>; step rejected" (compiled once in the library,
+/// src/errors.cpp, for the filters of every size).
+[[noreturn]] void rejectStep(const std::string& method, const char* reason);
+
 }  // namespace estimation

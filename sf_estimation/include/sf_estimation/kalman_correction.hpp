@@ -24,6 +24,7 @@
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/measurement_noise.hpp"
+#include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/parameter_checks.hpp"
 
 namespace estimation {
@@ -161,6 +162,21 @@ void projectCovariance(const Matrix<M, N>& H, const Matrix<N, N>& P, Matrix<M, M
   out.noalias() = HP.lazyProduct(H.transpose());
 }
 
+/// Readies a step's result (x, P) to become the belief: P symmetrised and, if it lost positive
+/// semi-definiteness, repaired; angle states of x wrapped. A non-finite x or P is refused with
+/// NumericalError naming `method` (the caller then keeps its belief). Returns whether P was
+/// repaired.
+template <int N>
+bool settleBelief(Vector<N>& x, Matrix<N, N>& P, const AngleMask<N>& angleStates,
+                  const std::string& method) {
+  symmetrize(P);
+  if (!x.allFinite() || !P.allFinite()) rejectStep(method, "the estimate became non-finite");
+  const bool repaired = repairCovariance(P);
+  if (!P.allFinite()) rejectStep(method, "the covariance repair failed");
+  angleStates.wrap(x);
+  return repaired;
+}
+
 // The size-only steps above are compiled once in the library for the state sizes N = 1..8
 // and measurement sizes M = 1..6 that configurations use most (kalman_steps_*.cpp): a
 // node's translation unit then does not instantiate them again, which halves a Kalman-type
@@ -183,7 +199,8 @@ void projectCovariance(const Matrix<M, N>& H, const Matrix<N, N>& P, Matrix<M, M
       Matrix<N, M>&, Matrix<M, M>&, Vector<N>&, Matrix<N, N>&);
 #define SF_ESTIMATION_COVARIANCE_PROPAGATION(N)                                  \
   template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&, \
-                                       const Matrix<N, N>&, Matrix<N, N>&);
+                                       const Matrix<N, N>&, Matrix<N, N>&);      \
+  template bool settleBelief<N>(Vector<N>&, Matrix<N, N>&, const AngleMask<N>&, const std::string&);
 /// The steps of a state size of the Kalman and the sigma-point grid.
 #define SF_ESTIMATION_KALMAN_STEPS(N)                                     \
   SF_ESTIMATION_COVARIANCE_PROPAGATION(N)                                 \
@@ -207,6 +224,8 @@ void projectCovariance(const Matrix<M, N>& H, const Matrix<N, N>& P, Matrix<M, M
 #define SF_ESTIMATION_EXTERN_LINEAR_STEPS(N)                                            \
   extern template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&, \
                                               const Matrix<N, N>&, Matrix<N, N>&);      \
+  extern template bool settleBelief<N>(Vector<N>&, Matrix<N, N>&, const AngleMask<N>&,  \
+                                       const std::string&);                             \
   SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_EXTERN_LINEAR_CORRECTION, N)
 #define SF_ESTIMATION_EXTERN_STEPS(N)  \
   SF_ESTIMATION_EXTERN_LINEAR_STEPS(N) \

@@ -13,6 +13,14 @@
 
 namespace estimation {
 
+namespace detail {
+// The refusals of validate() and validateControl(), compiled once in the library
+// (src/measurement_checks.cpp): the checks stay inline in each size's step, their texts not.
+[[noreturn]] void refuseInputSize(const char* what, Index size, Index expected);
+[[noreturn]] void refuseNonFiniteInput(const char* what, Index i, double value);
+[[noreturn]] void refuseMeasurementVariance(Index i, double variance);
+}  // namespace detail
+
 template <int M>
 struct Measurement {
   Vector<M> value;
@@ -61,18 +69,13 @@ struct Measurement {
         varianceGiven.size() != expectedSize || variance.size() != expectedSize ||
         covarianceGiven.rows() != expectedSize || covarianceGiven.cols() != expectedSize ||
         covariance.rows() != expectedSize || covariance.cols() != expectedSize) {
-      throw InvalidInputError("measurement vector has " + std::to_string(value.size()) +
-                              " entries, the filter expects " + std::to_string(expectedSize));
+      detail::refuseInputSize("measurement", value.size(), expectedSize);
     }
     for (Index i = 0; i < expectedSize; ++i) {
       if (!available(i)) continue;
-      if (!std::isfinite(value(i))) {
-        throw InvalidInputError("measurement " + std::to_string(i) + " is not finite (" +
-                                std::to_string(value(i)) + ")");
-      }
+      if (!std::isfinite(value(i))) detail::refuseNonFiniteInput("measurement", i, value(i));
       if (varianceGiven(i) && !(std::isfinite(variance(i)) && variance(i) > 0.0)) {
-        throw InvalidInputError("variance of measurement " + std::to_string(i) +
-                                " must be finite and positive, got " + std::to_string(variance(i)));
+        detail::refuseMeasurementVariance(i, variance(i));
       }
     }
     if (covarianceGiven.any()) validateCovariances();
@@ -136,15 +139,9 @@ SF_ESTIMATION_FOR_CHECKED_MEASUREMENT_SIZES(SF_ESTIMATION_EXTERN_MEASUREMENT_CHE
 /// Throws InvalidInputError unless the control vector has the right size and is finite.
 template <class Derived>
 void validateControl(const Eigen::MatrixBase<Derived>& u, Index expectedSize) {
-  if (u.size() != expectedSize) {
-    throw InvalidInputError("control vector has " + std::to_string(u.size()) +
-                            " entries, the filter expects " + std::to_string(expectedSize));
-  }
+  if (u.size() != expectedSize) detail::refuseInputSize("control", u.size(), expectedSize);
   for (Index i = 0; i < u.size(); ++i) {
-    if (!std::isfinite(u(i))) {
-      throw InvalidInputError("control " + std::to_string(i) + " is not finite (" +
-                              std::to_string(u(i)) + ")");
-    }
+    if (!std::isfinite(u(i))) detail::refuseNonFiniteInput("control", i, u(i));
   }
 }
 

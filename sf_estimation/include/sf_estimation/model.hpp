@@ -24,19 +24,15 @@
 
 namespace estimation {
 
+/// Throws ParameterError naming `method` unless the model's sizes are those of Q and R
+/// (compiled once in the library, src/parameter_checks.cpp).
+void checkModelSizes(const std::string& method, Index modelStateSize, Index modelMeasurementSize,
+                     Index stateSize, Index measurementSize);
+
 template <class Model>
 void checkModelSizes(const std::string& method, const Model& model, Index stateSize,
                      Index measurementSize) {
-  if (model.stateSize() != stateSize) {
-    throw ParameterError(method + ": the model has state size " +
-                         std::to_string(model.stateSize()) + " but Q is " +
-                         std::to_string(stateSize) + "x" + std::to_string(stateSize));
-  }
-  if (model.measurementSize() != measurementSize) {
-    throw ParameterError(method + ": the model has " + std::to_string(model.measurementSize()) +
-                         " measurements but R is " + std::to_string(measurementSize) + "x" +
-                         std::to_string(measurementSize));
-  }
+  checkModelSizes(method, model.stateSize(), model.measurementSize(), stateSize, measurementSize);
 }
 
 }  // namespace estimation

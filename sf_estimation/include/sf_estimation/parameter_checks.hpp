@@ -17,21 +17,13 @@ namespace estimation {
 /// 1e100 is far beyond any physical variance and still leaves 1e200 of headroom.
 constexpr double kMaxCovarianceEntry = 1e100;
 
-inline std::string sizeText(Index rows, Index cols) {
-  return std::to_string(rows) + "x" + std::to_string(cols);
-}
+std::string sizeText(Index rows, Index cols);
 
-template <class Derived>
+/// A parameter must have the given shape and finite entries; the refusal names the method and
+/// the parameter. Not a template, like requireCovariance below: the filters of every size call
+/// the one copy in the library (src/parameter_checks.cpp).
 void requireSize(const std::string& method, const std::string& name,
-                 const Eigen::MatrixBase<Derived>& value, Index rows, Index cols) {
-  if (value.rows() != rows || value.cols() != cols) {
-    throw ParameterError(method + ": parameter '" + name + "' must be " + sizeText(rows, cols) +
-                         ", got " + sizeText(value.rows(), value.cols()));
-  }
-  if (!value.allFinite()) {
-    throw ParameterError(method + ": parameter '" + name + "' contains a non-finite value");
-  }
-}
+                 const Eigen::Ref<const Eigen::MatrixXd>& value, Index rows, Index cols);
 
 /// A covariance must be finite with entries of magnitude at most kMaxCovarianceEntry,
 /// symmetric (to a relative tolerance) and positive semi-definite (positive definite when
@@ -40,6 +32,21 @@ void requireSize(const std::string& method, const std::string& name,
 /// compiled once in the library, whatever the filters' sizes (src/parameter_checks.cpp).
 void requireCovariance(const std::string& method, const std::string& name,
                        const Eigen::Ref<const Eigen::MatrixXd>& value, Index size, bool strict);
+
+/// The model filters' (Kalman family, particle filter) common refusals: an empty state, and
+/// Q, R (positive definite), x0 and P0 of the wrong shape or not covariances.
+void requireFilterParameters(const std::string& method, const Eigen::Ref<const Eigen::MatrixXd>& Q,
+                             const Eigen::Ref<const Eigen::MatrixXd>& R,
+                             const Eigen::Ref<const Eigen::MatrixXd>& x0,
+                             const Eigen::Ref<const Eigen::MatrixXd>& P0);
+
+/// A control size must be non-negative, and `fixedControlSize` unless that is Dynamic.
+void requireControlSize(const std::string& method, Index controlSize, Index fixedControlSize);
+
+/// "method(n=.., m=.., l=..)", with ", <extraName>=<extraValue>" before the ")" when
+/// extraName is given: what the filters' description() return.
+std::string filterDescription(const std::string& method, Index n, Index m, Index l,
+                              const char* extraName = nullptr, Index extraValue = 0);
 
 /// P <- (P + P^T) / 2, in place (a loop: the expression form cost a temporary and its own
 /// instantiations per size).

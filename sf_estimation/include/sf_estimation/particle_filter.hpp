@@ -60,15 +60,8 @@ class ParticleFilterSIR {
                     const AngularComponents& angles = {})
       : model_(std::move(model)), Q_(Q), R_(R), x0_(x0), P0_(P0), params_(params) {
     const std::string method = "ParticleFilterSIR";
+    requireFilterParameters(method, Q, R, x0, P0);
     const Index n = Q.rows();
-    if (n < 1) {
-      throw ParameterError(method + ": the state must have at least one variable (Q is " +
-                           sizeText(Q.rows(), Q.cols()) + ")");
-    }
-    requireCovariance(method, "Q", Q, n, false);
-    requireCovariance(method, "R", R, R.rows(), true);
-    requireSize(method, "x0", x0, n, 1);
-    requireCovariance(method, "P0", P0, n, false);
     checkModelSizes(method, model_, n, R.rows());
     if (params.particles < 1 || params.particles > ParticleFilterParameters::kMaxParticles) {
       throw ParameterError(method + ": parameter 'particles' must be from 1 to " +
@@ -148,9 +141,8 @@ class ParticleFilterSIR {
   }
 
   std::string description() const {
-    return "ParticleFilterSIR(n=" + std::to_string(stateSize()) +
-           ", m=" + std::to_string(measurementSize()) + ", l=" + std::to_string(controlSize()) +
-           ", particles=" + std::to_string(particleCount()) + ")";
+    return filterDescription("ParticleFilterSIR", stateSize(), measurementSize(), controlSize(),
+                             "particles", particleCount());
   }
 
   /// z^ and the covariance of h over the particles the next step will draw (the same random

@@ -116,7 +116,7 @@ class UnscentedKalmanFilter
     P += this->Q_;
     symmetrize(P);
     if (!x.allFinite() || !P.allFinite()) {
-      throw NumericalError(this->method_ + ": the time update became non-finite; step rejected");
+      rejectStep(this->method_, "the time update became non-finite");
     }
   }
 

@@ -8,6 +8,10 @@
 #include <type_traits>
 #include <utility>
 
+#include <sf_estimation/confidence_weighted_averaging.hpp>
+#include <sf_estimation/moving_average.hpp>
+#include <sf_estimation/moving_median.hpp>
+
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
 
@@ -124,5 +128,16 @@ class FusionEngineOf final : public FusionEngine {
 
   Core core_;
 };
+
+// The window filters have no model and no fixed sizes: their cores are the same in every
+// header's node, and compiled once in the core library (src/core/window_filter_engines.cpp).
+#ifndef SF_FILTER_INSTANTIATING_WINDOW_FILTER_ENGINES
+extern template class FusionCore<estimation::MovingAverage>;
+extern template class FusionCore<estimation::MovingMedian>;
+extern template class FusionCore<estimation::ConfidenceWeightedAveraging>;
+extern template class FusionEngineOf<estimation::MovingAverage>;
+extern template class FusionEngineOf<estimation::MovingMedian>;
+extern template class FusionEngineOf<estimation::ConfidenceWeightedAveraging>;
+#endif
 
 }  // namespace sf_filter

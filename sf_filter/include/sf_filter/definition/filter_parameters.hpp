@@ -24,4 +24,9 @@ struct FilterParameters {
   Eigen::VectorXd weighting_coefficients;  ///< empty: equal weights
 };
 
+/// Throws estimation::ParameterError "<name>: expected RxC, found rxc" unless `value` is
+/// rows x cols (sf_filter/src/definition/filter_parameters.cpp).
+void requireParameterShape(const Eigen::MatrixXd& value, Eigen::Index rows, Eigen::Index cols,
+                           const char* name);
+
 }  // namespace sf_filter

@@ -87,4 +87,8 @@ struct TopicReader {
                double now) = nullptr;
 };
 
+/// readers.push_back(reader), compiled once in the core library
+/// (sf_filter/src/definition/node_definition.cpp) instead of in every header's unit.
+void appendTopicReader(std::vector<TopicReader>& readers, TopicReader reader);
+
 }  // namespace sf_filter

@@ -18,10 +18,20 @@
 namespace sf_filter {
 
 struct NodeDefinition {
-  NodeDescription description;     ///< method, inputs, controls, outputs, pose
-  InputCapabilities capabilities;  ///< for checking run-time overrides of the input options
-  double estimationPeriodMs = 100.0;   ///< ESTIMATION_PERIOD
-  double maxMeasurementLagMs = 0.0;    ///< MAX_MEASUREMENT_LAG
+  // Declared here, defined (as the defaults) once in the core library
+  // (sf_filter/src/definition/node_definition.cpp): otherwise every header's translation unit
+  // would compile the destruction of all the members below.
+  NodeDefinition();
+  ~NodeDefinition();
+  NodeDefinition(const NodeDefinition&);
+  NodeDefinition(NodeDefinition&&) noexcept;
+  NodeDefinition& operator=(const NodeDefinition&);
+  NodeDefinition& operator=(NodeDefinition&&) noexcept;
+
+  NodeDescription description;             ///< method, inputs, controls, outputs, pose
+  InputCapabilities capabilities;          ///< for checking run-time overrides of the input options
+  double estimationPeriodMs = 100.0;       ///< ESTIMATION_PERIOD
+  double maxMeasurementLagMs = 0.0;        ///< MAX_MEASUREMENT_LAG
   std::vector<InputOptions> inputOptions;  ///< the header's per-input options
   /// FRAME_ALIGNED_INPUTS: per input the axis name ("x", "y", "z") of the rotated vector it
   /// reads, empty when it reads its field as configured; and BASE_FRAME.

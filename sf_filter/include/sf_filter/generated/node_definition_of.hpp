@@ -314,7 +314,7 @@ inline std::vector<TopicReader> topicReaders() {
         sendBlocks<Owner::index>(msg, blocks, sink, now, std::make_index_sequence<kBlocks>{});
         sendGps(gpsValues, sink, now, stampOf(msg));
       };
-      readers.push_back(std::move(reader));
+      appendTopicReader(readers, std::move(reader));
     }
   });
   sf_config::forEachControl([&](auto owner) {
@@ -330,7 +330,7 @@ inline std::vector<TopicReader> topicReaders() {
             sink.control(In::index, In::value(msg));
         });
       };
-      readers.push_back(std::move(reader));
+      appendTopicReader(readers, std::move(reader));
     }
   });
   return readers;
@@ -354,15 +354,11 @@ inline FilterParameters toRunTime(const sf_config::Parameters& p) {
   return r;
 }
 
-/// `from` into the fixed-size `to`; the sizes were checked when the parameters were read.
+/// `from` into the fixed-size `to`; the sizes were checked when the parameters were read (and
+/// again here, by requireParameterShape, compiled once in the node library).
 template <class Fixed>
 void assignChecked(Fixed& to, const Eigen::MatrixXd& from, const char* name) {
-  if (from.rows() != to.rows() || from.cols() != to.cols()) {
-    throw estimation::ParameterError(std::string(name) + ": expected " + std::to_string(to.rows()) +
-                                     "x" + std::to_string(to.cols()) + ", found " +
-                                     std::to_string(from.rows()) + "x" +
-                                     std::to_string(from.cols()));
-  }
+  requireParameterShape(from, to.rows(), to.cols(), name);
   to = from;
 }
 
