@@ -42,9 +42,14 @@ class NodeletTest(unittest.TestCase):
             rospy.Subscriber("/%s/state" % name, StateEstimateStamped, self.on_state, name)
         self.statuses = {}
         rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics)
-        self.clock = rospy.Publisher("/clock", Clock, queue_size=10)
-        self.odom = rospy.Publisher("/odom", Odometry, queue_size=100)
-        self.imu = rospy.Publisher("/imu/data", Imu, queue_size=100)
+        # Synchronous publishing (queue_size=None; rospy warns about it once): each message is
+        # written to every subscriber's connection before the next clock step goes out. With a
+        # queue, rospy sends from one thread per connection; under load the thread feeding the
+        # node process's /odom fell 25 steps behind its /clock, and the node dropped those
+        # values as later than the lag while the nodelets used them.
+        self.clock = rospy.Publisher("/clock", Clock, queue_size=None)
+        self.odom = rospy.Publisher("/odom", Odometry, queue_size=None)
+        self.imu = rospy.Publisher("/imu/data", Imu, queue_size=None)
 
     def on_state(self, msg, name):
         self.states[name][msg.header.stamp.to_nsec()] = msg
