@@ -83,13 +83,11 @@ void checkModelSizes(const std::string& method, Index modelStateSize, Index mode
                      Index stateSize, Index measurementSize) {
   if (modelStateSize != stateSize) {
     throw ParameterError(method + ": the model has state size " + std::to_string(modelStateSize) +
-                         " but Q is " + std::to_string(stateSize) + "x" +
-                         std::to_string(stateSize));
+                         " but Q is " + sizeText(stateSize, stateSize));
   }
   if (modelMeasurementSize != measurementSize) {
     throw ParameterError(method + ": the model has " + std::to_string(modelMeasurementSize) +
-                         " measurements but R is " + std::to_string(measurementSize) + "x" +
-                         std::to_string(measurementSize));
+                         " measurements but R is " + sizeText(measurementSize, measurementSize));
   }
 }
 

@@ -355,7 +355,7 @@ inline FilterParameters toRunTime(const sf_config::Parameters& p) {
 }
 
 /// `from` into the fixed-size `to`; the sizes were checked when the parameters were read (and
-/// again here, by requireParameterShape, compiled once in the node library).
+/// again here, by requireParameterShape, compiled once in the core library).
 template <class Fixed>
 void assignChecked(Fixed& to, const Eigen::MatrixXd& from, const char* name) {
   requireParameterShape(from, to.rows(), to.cols(), name);
