@@ -8,14 +8,14 @@
 // reduced inverse padded with that identity, and the gain's column for the missing entry is
 // zero: exactly the reduced update, covariance included.
 //
-// Products are written as `out.noalias() = a.lazyProduct(b)`: for the small fixed sizes here
-// that is the coefficient-based product Eigen's `a * b` picks anyway, without the temporary
-// and the product dispatch that a plain `=` instantiates for every expression; those made up
-// most of a grid unit's compile time (doc/build_cost.md, "Lazy products"). Some results can
-// differ from the expression form's in the last bit (Eigen evaluated those expressions in
-// another order; the cause was not traced further). Dynamic sizes take the same coefficient loop,
-// which suits the factory's small filters; Eigen's blocked product would only pay off from a few
-// dozen states.
+// Products are written as `multiply<Store::Add>(a, b, out)` (small_products.hpp): plain
+// loops, vectorised two rows at a time as Eigen's coefficient-based product is, that compile in
+// half the time of Eigen's product expressions, which made up most of a grid unit's compile
+// time (doc/build_cost.md, "Plain-loop products"). Each entry is summed in the order of
+// Eigen's vectorised product; its scalar path summed pairwise, so that results of an odd row
+// can differ from the expression form's in the last bit. Dynamic sizes take the same loops,
+// which suits the factory's small filters; Eigen's blocked product would only pay off from a
+// few dozen states.
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -26,6 +26,7 @@
 #include "sf_estimation/measurement_noise.hpp"
 #include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/parameter_checks.hpp"
+#include "sf_estimation/small_products.hpp"
 
 namespace estimation {
 
@@ -91,22 +92,22 @@ void linearCorrection(Vector<N>& x, Matrix<N, N>& P, const Matrix<M, N>& H, cons
   const Index n = P.rows();
   const Index m = H.rows();
   Matrix<N, M> PHt(n, m);
-  PHt.noalias() = P.lazyProduct(H.transpose());
+  multiply<Store::Assign, true>(P, H, PHt);
   Matrix<M, M> S = R;
-  S.noalias() += H.lazyProduct(PHt);
+  multiply<Store::Add>(H, PHt, S);
   symmetrize(S);
   Matrix<N, M> K(n, m);
   kalmanGain<N, M>(PHt, S, K);
-  x.noalias() += K.lazyProduct(y);
+  multiply<Store::Add>(K, y, x);
   Matrix<N, N> IKH = Matrix<N, N>::Identity(n, n);
-  IKH.noalias() -= K.lazyProduct(H);
+  multiply<Store::Subtract>(K, H, IKH);
   // (I - K H) P = P - K (P H^T)^T as P is symmetric: reuses P H^T, n^2 m instead of n^3.
   Matrix<N, N> IKHP = P;
-  IKHP.noalias() -= K.lazyProduct(PHt.transpose());
+  multiply<Store::Subtract, true>(K, PHt, IKHP);
   Matrix<N, M> KR(n, m);
-  KR.noalias() = K.lazyProduct(R);
-  P.noalias() = IKHP.lazyProduct(IKH.transpose());
-  P.noalias() += KR.lazyProduct(K.transpose());
+  multiply<Store::Assign>(K, R, KR);
+  multiply<Store::Assign, true>(IKHP, IKH, P);
+  multiply<Store::Add, true>(KR, K, P);
 }
 
 /// Correction of (x, P) from the predicted measurement's mean zMean and covariance Pzz (R
@@ -137,10 +138,10 @@ void crossCovarianceCorrection(const Measurement<M>& z, const Vector<M>& zMean,
   symmetrize(S);
   Matrix<N, M> K(x.size(), m);
   kalmanGain<N, M>(Pxz, S, K);
-  x.noalias() += K.lazyProduct(y);
+  multiply<Store::Add>(K, y, x);
   Matrix<N, M> KS(x.size(), m);
-  KS.noalias() = K.lazyProduct(S);
-  P.noalias() -= KS.lazyProduct(K.transpose());
+  multiply<Store::Assign>(K, S, KS);
+  multiply<Store::Subtract, true>(KS, K, P);
 }
 
 /// Covariance time update P_next = A P A^T + Q, shared by KF and EKF.
@@ -148,9 +149,9 @@ template <int N>
 void propagateCovariance(const Matrix<N, N>& A, const Matrix<N, N>& P, const Matrix<N, N>& Q,
                          Matrix<N, N>& next) {
   Matrix<N, N> AP(A.rows(), P.cols());
-  AP.noalias() = A.lazyProduct(P);
+  multiply<Store::Assign>(A, P, AP);
   next = Q;
-  next.noalias() += AP.lazyProduct(A.transpose());
+  multiply<Store::Add, true>(AP, A, next);
 }
 
 /// Covariance of a linear(ised) measurement of the state, H P H^T, shared by KF and EKF
@@ -158,8 +159,9 @@ void propagateCovariance(const Matrix<N, N>& A, const Matrix<N, N>& P, const Mat
 template <int N, int M>
 void projectCovariance(const Matrix<M, N>& H, const Matrix<N, N>& P, Matrix<M, M>& out) {
   Matrix<M, N> HP(H.rows(), P.cols());
-  HP.noalias() = H.lazyProduct(P);
-  out.noalias() = HP.lazyProduct(H.transpose());
+  multiply<Store::Assign>(H, P, HP);
+  out.resize(H.rows(), H.rows());
+  multiply<Store::Assign, true>(HP, H, out);
 }
 
 /// Readies a step's result (x, P) to become the belief: P symmetrised and, if it lost positive

@@ -13,6 +13,7 @@
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/kalman_correction.hpp"  // SF_ESTIMATION_FOR_MEASUREMENT_SIZES
 #include "sf_estimation/probability/gaussian.hpp"
+#include "sf_estimation/small_products.hpp"
 #include "sf_estimation/types.hpp"
 
 namespace estimation {
@@ -146,7 +147,8 @@ void UnscentedTransform<N>::mean(const Points<Rows>& points, Vector<Rows>& resul
   const Vector<Rows> reference = points.col(0);
   Points<Rows> deviations = points.colwise() - reference;
   angles.wrap(deviations);
-  result.noalias() = deviations * meanWeights_;
+  result.resize(points.rows());
+  multiply<Store::Assign>(deviations, meanWeights_, result);
   result += reference;
   angles.wrap(result);
 }
