@@ -17,12 +17,13 @@ namespace estimation {
 enum class Store { Assign, Add, Subtract };
 
 /// out (=, +=, -=) a * b, or a * b^T with `TransposeB`; `out` has the product's size. Each
-/// entry is summed over the inner index in order and then stored, so that `out += a * b` and
-/// `out = c; out += a * b` give the same bits. Two rows at a time share a vector register
-/// (SSE2 on x86-64, NEON on ARM), the way Eigen's coefficient-based product packs them, a last
-/// odd row alone: GCC does not find that vectorisation in the plain loop by itself. (A matrix
-/// of two or more rows is column-major here; Eigen stores only a single row row-major.) The
-/// loops are unrolled for the grid's sizes (up to 8), as Eigen unrolls its fixed-size products.
+/// entry's sum over the inner index is formed in order, from its first product on, and only
+/// then assigned to, added to or subtracted from out's entry. Two rows at a time share a vector
+/// register (GCC's and Clang's vector extension: SSE2 on x86-64, NEON on ARM), the way Eigen's
+/// coefficient-based product packs them, a last odd row alone: GCC does not find that
+/// vectorisation in the plain loop by itself. (A matrix of two or more rows is column-major
+/// here; Eigen stores only a single row row-major.) The inner loop is unrolled for the grid's
+/// sizes (up to 8), as Eigen unrolls its fixed-size products.
 template <Store store, bool TransposeB = false, class A, class B, class Out>
 inline void multiply(const A& a, const B& b, Out& out) {
   static_assert(!A::IsRowMajor || A::RowsAtCompileTime == 1, "a: column-major or a single row");
