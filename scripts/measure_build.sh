@@ -85,17 +85,24 @@ if [[ -n "$baseline" ]]; then
   configure "$work/baseline_src" "$work/baseline"
 fi
 
-# The precompiled prelude (cmake/sf_add_filter.cmake) is built once per package before any
-# unit; a unit's figure is its compile with the prelude in place, as in a build.
-prelude_cost() {  # "cpu_s peak_MB wall_s" of building the prelude target, or nothing
-  local target=sf_pkg_sf_filter_prelude t0=$SECONDS
+# The clean build comes first, as a user's: make builds the precompiled prelude
+# (cmake/sf_add_filter.cmake) beside the library's sources, before the units that need it.
+if ((!units_only)); then
+  wall=$(clean_build "$work/current")
+  ((baseline_clean)) && [[ -n "$baseline" ]] && baseline_wall=$(clean_build "$work/baseline")
+fi
+
+# The prelude, rebuilt alone for its figures; a unit's figure is then its compile with the
+# prelude in place, as in a build.
+prelude_cost() {  # "cpu_s peak_MB" of building the prelude target, or nothing
+  local target=sf_pkg_sf_filter_prelude
   # (no "make help | grep -q": with pipefail, grep's early exit fails the pipeline)
   [[ "$(make -C "$1/build" help 2>/dev/null)" == *"... $target"* ]] || return 0
+  find "$1/build" -path "*/$target.dir/*.gch" -delete
   /usr/bin/time -f "%U %S %M" -o "$work/prelude.txt" make -C "$1/build" "$target" >/dev/null 2>&1
-  awk -v wall=$((SECONDS - t0)) '{printf "%.1f %.0f %d\n", $1 + $2, $3 / 1024, wall}' \
-    "$work/prelude.txt"
+  awk '{printf "%.1f %.0f\n", $1 + $2, $3 / 1024}' "$work/prelude.txt"
 }
-read -r pcpu pmem prelude_wall < <(prelude_cost "$work/current") || true
+read -r pcpu pmem < <(prelude_cost "$work/current") || true
 if [[ -n "${pcpu:-}" ]]; then
   printf '%-28s %14s %14s\n' "precompiled prelude (once)" "$pcpu" "$pmem"
 fi
@@ -116,15 +123,8 @@ done
 echo
 ((units_only)) && exit 0
 
-wall=$(clean_build "$work/current")
-if [[ -n "${prelude_wall:-}" ]]; then
-  echo "clean build, every node, no tests (-j$jobs): $((wall + prelude_wall)) s wall" \
-    "($prelude_wall s of it the prelude, built before the units were measured)"
-else
-  echo "clean build, every node, no tests (-j$jobs): $wall s wall"
-fi
-[[ -n "$baseline" && "$baseline_clean" == 1 ]] &&
-  echo "clean build at $baseline (-j$jobs): $(clean_build "$work/baseline") s wall"
+echo "clean build, every node, no tests (-j$jobs): $wall s wall"
+[[ -n "${baseline_wall:-}" ]] && echo "clean build at $baseline (-j$jobs): $baseline_wall s wall"
 
 node="sf_$(basename "${headers[0]}" .h)"
 touch "$repo/${headers[0]}"
