@@ -104,9 +104,9 @@ TEST(UnscentedTransform, CrossCovarianceIsTheSumOverPoints) {
     for (Index j = 0; j < 2; ++j) EXPECT_NEAR(cross(i, j), expected(i, j), 1e-13 * scale);
 }
 
-// The weighted product alone would round (Wc_k a_ik) a_jk and (Wc_k a_jk) a_ik differently: 54
-// of the 180 off-diagonal entries of these 20 sets differ in the last bits without the copy of
-// the lower triangle.
+// Each entry summed on its own would round the products of Wc_k and the deviations a_ik, a_jk
+// differently for (i, j) and (j, i): in 54 of the 180 off-diagonal entries of these 20 sets, for
+// a plain product of the weighted deviations (measured). The transform forms one triangle.
 TEST(UnscentedTransform, CovarianceIsSymmetricToTheBit) {
   UnscentedParameters p;
   p.alpha = 0.5;

@@ -164,15 +164,30 @@ void UnscentedTransform<N>::crossCovariance(const Points<RowsA>& a, const Vector
   aAngles.wrap(deviationsA);
   Points<RowsB> deviationsB = b.colwise() - bMean;
   bAngles.wrap(deviationsB);
-  // Each point's deviation weighted in place, then one product over the points: a plain loop
-  // (small_products.hpp), where Eigen's product would pick its blocked kernel from 2n+1 >= 8
-  // points on. With the same points on both sides the result is a covariance; its upper
-  // triangle is copied from the lower one, so that it is symmetric to the bit.
-  deviationsA = deviationsA * covarianceWeights_.asDiagonal();
-  result.resize(a.rows(), b.rows());
-  multiply<Store::Assign, true>(deviationsA, deviationsB, result);
-  if constexpr (RowsA == RowsB) {
-    if (&a == &b && &aMean == &bMean) {
+  bool symmetric = false;
+  if constexpr (RowsA == RowsB) symmetric = &a == &b && &aMean == &bMean;
+  if constexpr (N != Dynamic && RowsA != Dynamic && RowsB != Dynamic) {
+    // At fixed sizes each entry is one dot product over the points, of deviations stored
+    // transposed so that the dot runs over contiguous memory. As one matrix product Eigen
+    // would pick its blocked GEMM from 2n+1 >= 8 points on, whose packing costs more than
+    // the arithmetic. With the same points on both sides the result is a covariance:
+    // symmetric, so only its lower triangle is computed.
+    using Deviations = Eigen::Matrix<double, PointCount, RowsA>;
+    const Deviations da = deviationsA.transpose();
+    const Eigen::Matrix<double, PointCount, RowsB> weightedDb =
+        covarianceWeights_.asDiagonal() * deviationsB.transpose();
+    for (Index j = 0; j < result.cols(); ++j) {
+      for (Index i = symmetric ? j : 0; i < result.rows(); ++i) {
+        result(i, j) = da.col(i).dot(weightedDb.col(j));
+        if (symmetric) result(j, i) = result(i, j);
+      }
+    }
+  } else {
+    const Points<RowsA> weighted = deviationsA * covarianceWeights_.asDiagonal();
+    result.noalias() = weighted * deviationsB.transpose();
+    // The product rounds (Wc_k a_ik) a_jk and (Wc_k a_jk) a_ik apart: a covariance takes its
+    // lower triangle, as at fixed sizes, so that it is symmetric to the bit.
+    if (symmetric) {
       for (Index j = 1; j < result.cols(); ++j)
         for (Index i = 0; i < j; ++i) result(i, j) = result(j, i);
     }
