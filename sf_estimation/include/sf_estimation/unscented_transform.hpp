@@ -164,8 +164,6 @@ void UnscentedTransform<N>::crossCovariance(const Points<RowsA>& a, const Vector
   aAngles.wrap(deviationsA);
   Points<RowsB> deviationsB = b.colwise() - bMean;
   bAngles.wrap(deviationsB);
-  bool symmetric = false;
-  if constexpr (RowsA == RowsB) symmetric = &a == &b && &aMean == &bMean;
   if constexpr (N != Dynamic && RowsA != Dynamic && RowsB != Dynamic) {
     // At fixed sizes each entry is one dot product over the points, of deviations stored
     // transposed so that the dot runs over contiguous memory. As one matrix product Eigen
@@ -176,6 +174,8 @@ void UnscentedTransform<N>::crossCovariance(const Points<RowsA>& a, const Vector
     const Deviations da = deviationsA.transpose();
     const Eigen::Matrix<double, PointCount, RowsB> weightedDb =
         covarianceWeights_.asDiagonal() * deviationsB.transpose();
+    bool symmetric = false;
+    if constexpr (RowsA == RowsB) symmetric = &a == &b && &aMean == &bMean;
     for (Index j = 0; j < result.cols(); ++j) {
       for (Index i = symmetric ? j : 0; i < result.rows(); ++i) {
         result(i, j) = da.col(i).dot(weightedDb.col(j));
@@ -187,9 +187,11 @@ void UnscentedTransform<N>::crossCovariance(const Points<RowsA>& a, const Vector
     result.noalias() = weighted * deviationsB.transpose();
     // The product rounds (Wc_k a_ik) a_jk and (Wc_k a_jk) a_ik apart: a covariance takes its
     // lower triangle, as at fixed sizes, so that it is symmetric to the bit.
-    if (symmetric) {
-      for (Index j = 1; j < result.cols(); ++j)
-        for (Index i = 0; i < j; ++i) result(i, j) = result(j, i);
+    if constexpr (RowsA == RowsB) {
+      if (&a == &b && &aMean == &bMean) {
+        for (Index j = 1; j < result.cols(); ++j)
+          for (Index i = 0; i < j; ++i) result(i, j) = result(j, i);
+      }
     }
   }
 }
