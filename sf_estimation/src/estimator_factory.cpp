@@ -92,6 +92,22 @@ class ParameterReader {
     throw wrongType(name, "integer", p);
   }
 
+  /// One of `choices` (a string parameter); `fallback` when the parameter is not given.
+  std::string choice(const std::string& name, const std::vector<std::string>& choices,
+                     const std::string& fallback) const {
+    if (!has(name)) return fallback;
+    const Parameter& p = map_.at(name);
+    const auto* text = std::get_if<std::string>(&p);
+    std::string list;
+    for (const auto& c : choices) list += (list.empty() ? "'" : ", '") + c + "'";
+    if (!text) throw wrongType(name, "string (" + list + ")", p);
+    if (std::find(choices.begin(), choices.end(), *text) == choices.end()) {
+      throw ParameterError(method_ + ": parameter '" + name + "' is '" + *text + "', expected " +
+                           list);
+    }
+    return *text;
+  }
+
   /// A vector of indices, each an integer-valued finite number (the range is checked by the
   /// filter); empty when the parameter is not given.
   std::vector<Index> indices(const std::string& name) const {
@@ -197,7 +213,7 @@ std::unique_ptr<IEstimator> createExtendedKalman(const ParameterMap& map) {
 std::unique_ptr<IEstimator> createUnscentedKalman(const ParameterMap& map) {
   const ParameterReader in("UnscentedKalmanFilter", map,
                            {"model", "Q", "R", "x0", "P0", "alpha", "beta", "kappa", "angle-states",
-                            "angle-measurements"});
+                            "angle-measurements", "predicted-mean"});
   FunctionModel model = in.model();
   const GaussianParameters g("UnscentedKalmanFilter", in, model.stateSize(),
                              model.measurementSize());
@@ -205,6 +221,10 @@ std::unique_ptr<IEstimator> createUnscentedKalman(const ParameterMap& map) {
   ut.alpha = in.number("alpha", ut.alpha);
   ut.beta = in.number("beta", ut.beta);
   ut.kappa = in.number("kappa", ut.kappa);
+  if (in.choice("predicted-mean", {"sigma-point-average", "propagated"}, "sigma-point-average") ==
+      "propagated") {
+    ut.predictedMean = PredictedMean::Propagated;
+  }
   return wrap(UnscentedKalmanFilter<FunctionModel>(model, g.Q, g.R, g.x0, g.P0, ut, in.angles()));
 }
 

@@ -219,6 +219,44 @@ TEST(EstimatorFactory, UnscentedKalmanFilterEqualsFixedSizeFilter) {
   EXPECT_LE(diff.second, 1e-12);
 }
 
+TEST(EstimatorFactory, UnscentedKalmanFilterPropagatedMeanEqualsFixedSizeFilter) {
+  ParameterMap p = nav3Parameters();
+  p["predicted-mean"] = std::string("propagated");
+  p["alpha"] = 0.5;  // alpha 1e-3 rounds run-time and fixed sizes apart by ~1e-9 (weights ~1e6)
+  estimation::UnscentedParameters ut;
+  ut.alpha = 0.5;
+  ut.predictedMean = estimation::PredictedMean::Propagated;
+  const auto estimator = EstimatorFactory::create("UnscentedKalmanFilter", p);
+  estimation::UnscentedKalmanFilter<Nav3Ctrl> fixed(
+      Nav3Ctrl{}, estimation::models::nav3ProcessNoise(),
+      estimation::models::nav3MeasurementNoise(), nav3x0(), Matrix<7, 7>::Identity() * 0.1, ut);
+  estimation::UnscentedKalmanFilter<Nav3Ctrl> average(
+      Nav3Ctrl{}, estimation::models::nav3ProcessNoise(),
+      estimation::models::nav3MeasurementNoise(), nav3x0(), Matrix<7, 7>::Identity() * 0.1,
+      estimation::UnscentedParameters{0.5});
+  const auto run = sftest::simulateNav3Drive(200, 63, 0.3, 7);
+  const auto diff = compare(*estimator, fixed, run);
+  EXPECT_LE(diff.first, 1e-12);
+  EXPECT_LE(diff.second, 1e-12);
+  // ... and it is not the sigma-point average (nav3ctrl's position step is nonlinear in theta).
+  const auto again = EstimatorFactory::create("UnscentedKalmanFilter", p);
+  EXPECT_GT(compare(*again, average, run).first, 1e-9);
+  p["predicted-mean"] = std::string("weighted");
+  EXPECT_THROW(
+      {
+        try {
+          EstimatorFactory::create("UnscentedKalmanFilter", p);
+        } catch (const estimation::ParameterError& e) {
+          EXPECT_NE(std::string(e.what()).find("'predicted-mean' is 'weighted', expected "
+                                               "'sigma-point-average', 'propagated'"),
+                    std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      estimation::ParameterError);
+}
+
 TEST(EstimatorFactory, UnscentedKalmanFilterDefaultsAreTheDocumentedOnes) {
   // Without alpha/beta/kappa the factory must use alpha = 1e-3, beta = 2, kappa = 0: the
   // same computation (same run-time sizes) as with them given, so bit-identical.

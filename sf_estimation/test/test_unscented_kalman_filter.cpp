@@ -289,4 +289,73 @@ TEST(UnscentedKalmanFilterNav3Ctrl, ConstructorRefusesInvalidScaling) {
                estimation::ParameterError);
 }
 
+// ---------------------------------------------------------------------------------------------
+// The predicted mean (PredictedMean): the sigma points' weighted mean or f of the mean itself.
+// ---------------------------------------------------------------------------------------------
+//
+// A unicycle x = (px, py, theta, v) stepping T = 1 s: px' = px + v cos(theta), py' = py +
+// v sin(theta), theta' = theta, v' = v; z = v. From theta = 0 with variance 1 rad^2 and the
+// other variances 1e-6, alpha = 1, kappa = 0 (n = 4, lambda = 0): eight sigma points of
+// weight 1/8 and a central one of weight 0. Six of them have theta = 0 and step px by their
+// own v, which averages to 1; two have theta = +-sqrt(4 * 1) = +-2 and step px by cos(2). So
+//   sigma-point average: px' = (6 + 2 cos 2) / 8 = 0.75 + 0.25 cos 2 = 0.6460 (shrunk),
+//   propagated mean:     px' = 0 + 1 * cos 0 = 1 (the step's length kept).
+// The covariance is the same computation in both (around the points' mean).
+struct Unicycle {
+  static constexpr int StateSize = 4, MeasurementSize = 1, ControlSize = 0;
+  estimation::Index stateSize() const { return 4; }
+  estimation::Index measurementSize() const { return 1; }
+  estimation::Index controlSize() const { return 0; }
+  template <class S>
+  void transition(const Eigen::Matrix<S, 4, 1>& x, const Vector<0>&,
+                  Eigen::Matrix<S, 4, 1>& next) const {
+    using std::cos;
+    using std::sin;
+    next << x(0) + x(3) * cos(x(2)), x(1) + x(3) * sin(x(2)), x(2), x(3);
+  }
+  template <class S>
+  void observation(const Eigen::Matrix<S, 4, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
+    z << x(3);
+  }
+};
+
+UnscentedKalmanFilter<Unicycle> unicycleFilter(estimation::PredictedMean mean) {
+  UnscentedParameters p = alphaOne();
+  p.predictedMean = mean;
+  const Matrix<4, 4> P0 = Vector<4>(1e-6, 1e-6, 1.0, 1e-6).asDiagonal();
+  return UnscentedKalmanFilter<Unicycle>(Unicycle{}, Matrix<4, 4>::Zero(),
+                                         Matrix<1, 1>::Constant(0.01), Vector<4>(0, 0, 0, 1),
+                                         P0, p, estimation::AngularComponents{{2}, {}});
+}
+
+TEST(UnscentedKalmanFilterPredictedMean, PropagatedMeanKeepsTheStepOfAnUncertainHeading) {
+  auto average = unicycleFilter(estimation::PredictedMean::SigmaPointAverage);
+  auto propagated = unicycleFilter(estimation::PredictedMean::Propagated);
+  Measurement<1> none(1);
+  none.available << false;
+  average.estimate(none);
+  propagated.estimate(none);
+  EXPECT_NEAR(average.state()(0), 0.75 + 0.25 * std::cos(2.0), 1e-12);
+  EXPECT_NEAR(propagated.state()(0), 1.0, 1e-15);
+  EXPECT_NEAR(propagated.state()(1), 0.0, 1e-15);
+  EXPECT_NEAR(propagated.state()(3), 1.0, 1e-15);
+  EXPECT_TRUE(average.covariance() == propagated.covariance());
+}
+
+TEST(UnscentedKalmanFilterPredictedMean, PropagatedMeanEqualsKalmanFilterOnLinearModels) {
+  const Nav3Reduced model;
+  const Matrix<3, 3> Q = estimation::models::nav3ReducedProcessNoise();
+  const Matrix<4, 4> R = estimation::models::nav3MeasurementNoise();
+  const Vector<3> x0(0.1, 0.2, 0.0);
+  const Matrix<3, 3> P0 = Vector<3>(0.3, 0.2, 0.1).asDiagonal();
+  const auto run = sftest::simulateNav3Drive(1000, 5, 0.3, 7);
+  UnscentedParameters p = alphaOne();
+  p.predictedMean = estimation::PredictedMean::Propagated;
+  const auto d = compareWithKalman(model, model.transitionMatrix(), model.controlMatrix(),
+                                   model.observationMatrix(), Q, R, x0, P0, p, run);
+  std::cout << "[ measured ] UKF (propagated mean) vs KF, nav3red, 1000 steps: " << d << "\n";
+  EXPECT_LE(d.stateStep, 1e-9);
+  EXPECT_LE(d.covarianceStep, 1e-9);
+}
+
 }  // namespace

@@ -91,7 +91,8 @@ class UnscentedKalmanFilter
   const UnscentedParameters& parameters() const { return params_; }
 
  private:
-  /// Time update: sigma points of the current belief propagated through f; P includes Q.
+  /// Time update: sigma points of the current belief propagated through f; P includes Q; the
+  /// mean as params_.predictedMean says.
   /// P may have lost positive semi-definiteness (a negative central covariance weight, beta
   /// < 0 or a small alpha with a strongly nonlinear f, can make the unscented covariance
   /// indefinite): the correction (predictMeasurementPoints) or commit() repairs it.
@@ -110,9 +111,15 @@ class UnscentedKalmanFilter
       model_.transition(in, this->u_, out);
       propagated.col(i) = out;
     }
+    // The covariance is always the one around the points' weighted mean: with the propagated
+    // mean it is UKF-M's covariance of the deviations from f(x) about their own mean.
     transform.mean(propagated, x, this->angleStates_);
     transform.crossCovariance(propagated, x, propagated, x, P, this->angleStates_,
                               this->angleStates_);
+    if (params_.predictedMean == PredictedMean::Propagated) {
+      x = propagated.col(0);  // the central sigma point is the mean itself
+      this->angleStates_.wrap(x);
+    }
     P += this->Q_;
     symmetrize(P);
     if (!x.allFinite() || !P.allFinite()) {

@@ -18,10 +18,24 @@
 
 namespace estimation {
 
+/// Which point the UKF's time update takes as the predicted mean.
+enum class PredictedMean {
+  /// The weighted mean of the propagated sigma points (thesis Algorithm 3.3, Julier and
+  /// Uhlmann): the mean is corrected to second order for the curvature of f.
+  SigmaPointAverage,
+  /// f of the mean itself, the sigma points giving only the covariance (UKF-M, Brossard,
+  /// Barrau and Bonnabel 2020). Where f rotates a velocity by an uncertain heading, the
+  /// second-order correction is the mean of cos(theta) over the heading's spread, which
+  /// shrinks each step by 1 - sigma^2 / 2 and points backwards past 2 rad^2: a dead-reckoned
+  /// track contracts. The propagated mean keeps the step's length, as the EKF does.
+  Propagated,
+};
+
 struct UnscentedParameters {
   double alpha = 1e-3;  ///< spread of the sigma points around the mean
   double beta = 2.0;    ///< prior knowledge of the distribution (2 is optimal for Gaussians)
   double kappa = 0.0;   ///< secondary scaling
+  PredictedMean predictedMean = PredictedMean::SigmaPointAverage;
 };
 
 template <int N>

@@ -48,6 +48,7 @@
 //   INITIAL_ERROR_COVARIANCE                 o    o    o    o    -    -    -
 //   TOPICS_IN_CTRL                           o    o    o    o    x    x    x
 //   UKF_ALPHA, UKF_BETA, UKF_KAPPA           -    -    o    -    -    -    -
+//   UKF_PROPAGATED_MEAN                      -    -    o    -    -    -    -
 //   NUMBER_OF_PARTICLES                      -    -    -    o    -    -    -
 //   RANDOM_SEED, RESAMPLING_THRESHOLD        -    -    -    o    -    -    -
 //   WINDOW_SIZE                              -    -    -    -    R    R    o
@@ -94,6 +95,8 @@
 //   UKF_ALPHA                   in (0, 1].                                 Default 1e-3.
 //   UKF_BETA                    >= 0.                                      Default 2.
 //   UKF_KAPPA                   n + kappa > 0.                             Default 0.
+//   UKF_PROPAGATED_MEAN         1: predicted mean f(mean) (UKF-M); 0: the sigma points'
+//                               weighted mean.            Default 1 with ANGLE_STATES, else 0.
 //   NUMBER_OF_PARTICLES         integer >= 1.                              Default 1000.
 //   RANDOM_SEED                 integer >= 0.                              Default 42.
 //   RESAMPLING_THRESHOLD        fraction of NUMBER_OF_PARTICLES in [0, 1]; resample when the

@@ -53,6 +53,8 @@ inline Filter makeFilter(const sf_config::Parameters& p) {
   ut.alpha = p.ukf_alpha;
   ut.beta = p.ukf_beta;
   ut.kappa = p.ukf_kappa;
+  ut.predictedMean = p.ukf_propagated_mean ? estimation::PredictedMean::Propagated
+                                           : estimation::PredictedMean::SigmaPointAverage;
   return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
                 p.initial_error_covariance, ut, angularComponents());
 }

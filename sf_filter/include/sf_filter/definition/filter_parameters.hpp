@@ -20,6 +20,7 @@ struct FilterParameters {
   double ukf_alpha = 1e-3;
   double ukf_beta = 2.0;
   double ukf_kappa = 0.0;
+  bool ukf_propagated_mean = false;
   int window_size = 1;
   Eigen::VectorXd weighting_coefficients;  ///< empty: equal weights
 };

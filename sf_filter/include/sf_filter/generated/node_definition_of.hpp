@@ -349,6 +349,7 @@ inline FilterParameters toRunTime(const sf_config::Parameters& p) {
   r.ukf_alpha = p.ukf_alpha;
   r.ukf_beta = p.ukf_beta;
   r.ukf_kappa = p.ukf_kappa;
+  r.ukf_propagated_mean = p.ukf_propagated_mean;
   r.window_size = p.window_size;
   r.weighting_coefficients = p.weighting_coefficients;
   return r;
@@ -374,6 +375,7 @@ inline sf_config::Parameters toFixedSize(const FilterParameters& r) {
   p.ukf_alpha = r.ukf_alpha;
   p.ukf_beta = r.ukf_beta;
   p.ukf_kappa = r.ukf_kappa;
+  p.ukf_propagated_mean = r.ukf_propagated_mean;
   p.window_size = r.window_size;
   p.weighting_coefficients = r.weighting_coefficients;
   return p;

@@ -178,6 +178,12 @@ bool readScalarParameter(const ParameterSource& pnh, const std::string& name, T&
   if (!pnh.get(name, value)) return false;
   if constexpr (std::is_floating_point_v<T>) {
     out = static_cast<T>(detail::toDouble(value, "parameter ~" + name));
+  } else if constexpr (std::is_same_v<T, bool>) {
+    if (value.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
+      throw ParameterOverrideError("parameter ~" + name + ": expected true or false, found " +
+                                   detail::describe(value));
+    }
+    out = static_cast<bool>(value);
   } else {
     if (value.getType() != XmlRpc::XmlRpcValue::TypeInt) {
       throw ParameterOverrideError("parameter ~" + name + ": expected an integer, found " +
@@ -522,6 +528,7 @@ inline const std::vector<std::string>& knownParameters() {
                                                  "ukf_alpha",
                                                  "ukf_beta",
                                                  "ukf_kappa",
+                                                 "ukf_propagated_mean",
                                                  "window_size",
                                                  "weighting_coefficients",
                                                  "input_alignment",
@@ -617,6 +624,7 @@ Parameters loadParameters(const ParameterSource& pnh, MakeDefaults makeDefaults,
   readScalarParameter(pnh, "ukf_alpha", p.ukf_alpha);
   readScalarParameter(pnh, "ukf_beta", p.ukf_beta);
   readScalarParameter(pnh, "ukf_kappa", p.ukf_kappa);
+  readScalarParameter(pnh, "ukf_propagated_mean", p.ukf_propagated_mean);
   readScalarParameter(pnh, "window_size", p.window_size);
   XmlRpc::XmlRpcValue value;
   if (pnh.get("weighting_coefficients", value)) {

@@ -122,6 +122,11 @@ static_assert(SF_CFG_N + (UKF_KAPPA) > 0,
               "UKF_KAPPA: n + kappa must be positive (" SF_CFG_N_WHY "), found kappa = '"
               SF_PP_STR(UKF_KAPPA) "'");
 #endif
+#if defined(UKF_PROPAGATED_MEAN)
+static_assert((UKF_PROPAGATED_MEAN) == 0 || (UKF_PROPAGATED_MEAN) == 1,
+              "UKF_PROPAGATED_MEAN: expected 1 (f of the mean, UKF-M) or 0 (the sigma points' "
+              "weighted mean), found '" SF_PP_STR(UKF_PROPAGATED_MEAN) "'");
+#endif
 #endif
 
 }  // namespace checks

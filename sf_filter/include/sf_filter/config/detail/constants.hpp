@@ -39,6 +39,16 @@
 #else
 #define SF_CFG_UKF_KAPPA 0.0
 #endif
+// The UKF's predicted mean (estimation::PredictedMean): f of the mean (UKF-M) for a state with
+// angles, whose sigma-point average shortens every dead-reckoned step by the heading's spread
+// (doc/manifolds.md); the sigma points' weighted mean (thesis Algorithm 3.3) otherwise.
+#if defined(UKF_PROPAGATED_MEAN)
+#define SF_CFG_UKF_PROPAGATED_MEAN (UKF_PROPAGATED_MEAN)
+#elif defined(ANGLE_STATES)
+#define SF_CFG_UKF_PROPAGATED_MEAN 1
+#else
+#define SF_CFG_UKF_PROPAGATED_MEAN 0
+#endif
 #if defined(WINDOW_SIZE)
 #define SF_CFG_WINDOW_SIZE (WINDOW_SIZE)
 #else
@@ -75,6 +85,7 @@ constexpr double kResamplingThreshold = static_cast<double>(SF_CFG_RESAMPLING_TH
 constexpr double kUkfAlpha = static_cast<double>(SF_CFG_UKF_ALPHA);
 constexpr double kUkfBeta = static_cast<double>(SF_CFG_UKF_BETA);
 constexpr double kUkfKappa = static_cast<double>(SF_CFG_UKF_KAPPA);
+constexpr bool kUkfPropagatedMean = (SF_CFG_UKF_PROPAGATED_MEAN) != 0;
 constexpr int kWindowSize = static_cast<int>(SF_CFG_WINDOW_SIZE);
 
 }  // namespace sf_config

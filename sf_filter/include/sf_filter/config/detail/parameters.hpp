@@ -29,6 +29,7 @@ struct Parameters {
   double ukf_alpha = kUkfAlpha;                        ///< UKF_ALPHA (default 1e-3)
   double ukf_beta = kUkfBeta;                          ///< UKF_BETA (default 2)
   double ukf_kappa = kUkfKappa;                        ///< UKF_KAPPA (default 0)
+  bool ukf_propagated_mean = kUkfPropagatedMean;  ///< UKF_PROPAGATED_MEAN (default: ANGLE_STATES)
   int window_size = kWindowSize;                       ///< WINDOW_SIZE (default 1, CWA only)
   Eigen::VectorXd weighting_coefficients;              ///< WEIGHTING_COEFFICIENTS (default empty)
 };

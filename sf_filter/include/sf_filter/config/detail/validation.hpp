@@ -370,6 +370,9 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 #if defined(UKF_KAPPA)
 #pragma GCC warning "UKF_KAPPA is not used by the chosen METHOD and is ignored"
 #endif
+#if defined(UKF_PROPAGATED_MEAN)
+#pragma GCC warning "UKF_PROPAGATED_MEAN is not used by the chosen METHOD and is ignored"
+#endif
 #endif
 #if !SF_CFG_IS_AVERAGING && defined(WINDOW_SIZE)
 #pragma GCC warning "WINDOW_SIZE is not used by the chosen METHOD and is ignored"
