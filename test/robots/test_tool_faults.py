@@ -36,7 +36,7 @@ from test_replay_faults import write_small_bag  # noqa: E402
 NODE = "sf_diff_drive_odom_imu"
 TUNE_NODE = "sf_tune_cart_kf"
 SHIPPED = os.path.join(REPO, "bags", "diff_drive_seed1.bag")
-KIB = 1024
+LIMIT = 256 * 1024  # bytes of a --params file at most (yaml_parameters.hpp)
 
 
 def write_nan_bag(path, count=100):
@@ -253,16 +253,16 @@ class ToolFaultTest(unittest.TestCase):
         return path
 
     def test_params_larger_than_the_limit_is_refused(self):
-        # D9: a 100 MB YAML took 105 s and 12 GB and was accepted; the limit is 1 MiB
+        # D9: a 100 MB YAML took 105 s and 12 GB and was accepted; the limit is 256 KiB
         csv = self.path("out.csv")
-        at_limit = self.params_of_size(1024 * KIB)
+        at_limit = self.params_of_size(LIMIT)
         proc = self.run_node("--replay", self.bag, "--params", at_limit, "--csv", csv)
         self.assertEqual(proc.returncode, 0, proc.stderr)
-        over = self.params_of_size(1024 * KIB + 1)
+        over = self.params_of_size(LIMIT + 1)
         for mode in ("--replay", "--tune"):
             with self.subTest(mode=mode):
                 proc = self.run_node(mode, self.bag, "--params", over)
-                self.assertRefused(proc, "parameter file " + over + " is larger than 1024 KiB, "
+                self.assertRefused(proc, "parameter file " + over + " is larger than 256 KiB, "
                                    "the limit for a node's private parameters", status=2)
 
     def test_params_directory_is_named(self):

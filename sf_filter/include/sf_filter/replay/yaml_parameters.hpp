@@ -63,9 +63,10 @@ inline XmlRpc::XmlRpcValue toXmlRpc(const YAML::Node& node, const std::string& w
 }  // namespace yaml_detail
 
 /// The largest --params file read: a node's private parameters are a few kB (the shipped
-/// tuned files about 1 kB; three full 30x30 matrices about 60 kB). yaml-cpp needs about 130
-/// bytes of memory per byte of such a file (doc/tuning.md): 100 MB took 105 s and 12 GB.
-constexpr std::size_t kMaxParameterFileBytes = 1024 * 1024;
+/// tuned files about 1 kB; three full 30x30 matrices about 60 kB). Parsed, a file costs up
+/// to about 260 bytes of memory per byte (a long list of numbers; doc/evaluation.md): 100 MB
+/// took 105 s and 12 GB, 256 KiB takes 0.8 s and 80 MB.
+constexpr std::size_t kMaxParameterFileBytes = 256 * 1024;
 
 /// The YAML document of parameter file `path`, read up to kMaxParameterFileBytes (so that
 /// /dev/zero or a FIFO ends too); refuses a directory, a larger file and bad YAML, naming
