@@ -249,9 +249,9 @@ TuningResult tuneNoise(const EventLog& events, const EngineMaker& makeEngine,
 
 std::string identificationRefusal(const TuningResult& r) {
   if (r.innovationPeriods == 0) {
-    return "the recording identifies nothing: no period has a finite innovation (no two "
-           "values of an input in successive periods, or every value dropped; the replay's "
-           "summary counts them)";
+    return "the recording identifies nothing: no period has a finite innovation (no "
+           "estimated period had a measured value: every value dropped, or none in a period "
+           "that ended within the recording; the replay's summary above counts them)";
   }
   if (r.startCost >= kFailedRunCost && r.cost >= kFailedRunCost) {
     return "the recording identifies nothing: every replay failed (a failed step, or an "

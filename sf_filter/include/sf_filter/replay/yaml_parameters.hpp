@@ -68,9 +68,9 @@ inline XmlRpc::XmlRpcValue toXmlRpc(const YAML::Node& node, const std::string& w
 /// took 105 s and 12 GB, 256 KiB takes 0.8 s and 80 MB.
 constexpr std::size_t kMaxParameterFileBytes = 256 * 1024;
 
-/// The YAML document of parameter file `path`, read up to kMaxParameterFileBytes (so that
-/// /dev/zero or a FIFO ends too); refuses a directory, a larger file and bad YAML, naming
-/// the file.
+/// The YAML document of parameter file `path`, read up to kMaxParameterFileBytes and no
+/// further (a device or a FIFO as well); refuses a directory, a larger file and bad YAML,
+/// naming the file.
 inline YAML::Node loadParameterFile(const std::string& path) {
   const std::string name = "parameter file " + path;
   struct stat st {};
