@@ -142,12 +142,13 @@ void printNis(const std::string& name, const sf_filter::FusionEngine& core,
 }
 
 /// --tune after the first replay of the bag (recorded in `events`): the prediction-error
-/// identification of the free entries, its report, the tuned replay's NIS and the YAML file.
+/// identification of the free entries, its report, the tuned replay's NIS and the YAML file
+/// `out` (if enabled). Throws ReplayError, writing nothing, when the bag identifies nothing.
 int tuneFromEvents(const std::string& name, const NodeDefinition& def,
                    const sf_filter::EventLog& events, const sf_filter::EngineMaker& makeEngine,
                    const sf_filter::FilterParameters& start,
                    const std::vector<sf_filter::FreeEntry>& free,
-                   const sf_filter::TuningOptions& tuning, const std::string& out,
+                   const sf_filter::TuningOptions& tuning, sf_filter::AtomicOutput& out,
                    const std::string& baseParams, double periodMs, int argc, char** argv) {
   const auto begin = std::chrono::steady_clock::now();
   const sf_filter::TuningResult r = sf_filter::tuneNoise(events, makeEngine, start, free, tuning);
@@ -172,23 +173,26 @@ int tuneFromEvents(const std::string& name, const NodeDefinition& def,
                 r.factors[k],
                 r.atBound[k] ? "  at the bound of --tune-range: not identified by this bag" : "");
   }
+  const std::string refusal = sf_filter::identificationRefusal(r);
+  if (!refusal.empty()) {
+    throw sf_filter::ReplayError("--tune: " + refusal + (out.enabled() ? "; nothing written" : ""));
+  }
   std::unique_ptr<sf_filter::FusionEngine> tuned = makeEngine(r.tuned);
   auto ignore = [](const sf_filter::EstimateRef&) {};
   events.replay(*tuned, ignore);
   printNis(name + " (tuned)", *tuned, def.description.inputs);
-  if (!out.empty()) {
+  if (out.enabled()) {
     std::string command;
     for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
     char costs[160];
     std::snprintf(costs, sizeof costs,
                   "sum(log det S + NIS): start %.10g, tuned %.10g (%d replays)", r.startCost,
                   r.cost, r.evaluations);
-    sf_filter::writeTunedParameters(
-        out,
+    out.write(sf_filter::tunedParametersYaml(
         {"Noise identified by the prediction-error method (doc/tuning.md):", command, costs,
          "Load it into the node (rosparam load, filter.launch params:=) or the replay (--params)."},
-        r.tuned, free, periodMs / 1000.0, baseParams);
-    std::printf("%s: --tune: wrote %s\n", name.c_str(), out.c_str());
+        r.tuned, free, periodMs / 1000.0, baseParams));
+    std::printf("%s: --tune: wrote %s\n", name.c_str(), out.path().c_str());
   }
   return EXIT_SUCCESS;
 }
@@ -278,8 +282,9 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
     for (int i = 1; i + 1 < argc; ++i) {
       if (std::string(argv[i]) != "--params") continue;
       if (params) throw std::invalid_argument("--params given twice");
-      params.emplace(argv[i + 1]);
       paramsPath = argv[i + 1];
+      options.parametersFile = paramsPath;
+      params.emplace(paramsPath);
       for (const std::string& line : sf_filter::unknownParameterWarnings(*params)) {
         std::cerr << program << ": warning: --params " << argv[i + 1] << ": " << line << std::endl;
       }
@@ -485,6 +490,8 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       engineOptions.nisWindow = sf_filter::nisWindowPeriods(nis, periodMs);
       engineOptions.nisTolerance = nis.nisTolerance;
       sf_filter::EventLog events;
+      // --tune's --out, checked like --csv and --bag before anything is read
+      sf_filter::AtomicOutput tunedFile("--out", tunedPath, sf_filter::inputFiles(options));
       if (tune) {
         // The cost sums over the values that reach the filter: a gate would let the optimiser
         // lower it by gating values away, so the identification runs without gates; the NIS
@@ -552,13 +559,19 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                   << aligner->rejectedTransforms() << " refused by tf2), "
                   << aligner->droppedTotal() << " values dropped: not rotatable into '"
                   << aligner->baseFrame() << "'" << std::endl;
+        if (aligner->repeatedTransforms() > 0) {  // one line, not tf2's one per transform
+          std::cerr << program << ": tf2: TF_REPEATED_DATA: " << aligner->repeatedTransforms()
+                    << " transforms ignored, each with the stamp of one its frame already had "
+                       "(overlapping bags, or a transform recorded twice); the first is kept"
+                    << std::endl;
+        }
       }
       if (tune) {
         const auto maker = [&](const sf_filter::FilterParameters& p) {
           return def.makeEngine(p, engineOptions);
         };
         return tuneFromEvents(options.nodeName, def, events, maker, parameters, freeEntries, tuning,
-                              tunedPath, paramsPath, periodMs, argc, argv);
+                              tunedFile, paramsPath, periodMs, argc, argv);
       }
       if (strict && (failures > 0 || resets > 0 || s.dropped > 0 || unrotated > 0)) {
         std::cerr << program << ": --strict: " << failures << " failed steps, " << resets
@@ -572,7 +585,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
     return EXIT_SUCCESS;
   };
   return sf_filter::runContained(replayBag, [&](int signal) {
-    for (const std::string& path : {options.csvPath, options.outputBag}) {
+    for (const std::string& path : {options.csvPath, options.outputBag, tunedPath}) {
       if (!path.empty()) std::remove(sf_filter::partialPath(path).c_str());
     }
     if (signal == SIGINT || signal == SIGTERM || signal == SIGHUP) {

@@ -1,6 +1,8 @@
 #include "sf_filter/tuning/noise_tuning.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -104,21 +106,110 @@ FilterParameters scaledParameters(const FilterParameters& start, const std::vect
   return p;
 }
 
-double predictionErrorCost(const EventLog& events, const EngineMaker& makeEngine,
-                           const FilterParameters& parameters) {
+namespace {
+
+/// The cost of one replay and the periods with an innovation it summed over.
+struct ReplayCost {
+  double cost = kFailedRunCost;
+  std::uint64_t periods = 0;
+};
+
+ReplayCost replayCost(const EventLog& events, const EngineMaker& makeEngine,
+                      const FilterParameters& parameters) {
   std::unique_ptr<FusionEngine> engine;
   try {
     engine = makeEngine(parameters);
   } catch (const std::exception&) {
-    return kFailedRunCost;  // the filter refused the matrices (should not happen: covariances)
+    return {};  // the filter refused the matrices (should not happen: covariances)
   }
   auto ignore = [](const EstimateRef&) {};
   events.replay(*engine, ignore);
   const double cost = engine->innovations().predictionErrorCost();
   if (engine->estimationFailures() > 0 || engine->nisFailures() > 0 || !std::isfinite(cost)) {
-    return kFailedRunCost;
+    return {};
   }
-  return cost;
+  return {cost, engine->innovations().overall().periods()};
+}
+
+/// A change of the cost by 1e-4 is far below what the data can tell apart (a likelihood-ratio
+/// test needs a change of about 4 for one parameter): the optimiser's tolerance, and the
+/// spread below which the cost is flat.
+constexpr double kCostTolerance = 1e-4;
+
+/// The optimiser's objective: the cost at the factors exp(theta), and the lowest and highest
+/// cost at a trial point other than the start (theta = 0).
+struct Objective {
+  const EventLog& events;
+  const EngineMaker& makeEngine;
+  const FilterParameters& start;
+  const std::vector<FreeEntry>& free;
+  int evaluations = 0;
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -std::numeric_limits<double>::infinity();
+
+  static double evaluate(const std::vector<double>& theta, std::vector<double>&, void* data) {
+    auto& o = *static_cast<Objective*>(data);
+    ++o.evaluations;
+    std::vector<double> factors(theta.size());
+    bool moved = false;
+    for (std::size_t k = 0; k < theta.size(); ++k) {
+      factors[k] = std::exp(theta[k]);
+      moved = moved || theta[k] != 0.0;
+    }
+    const double cost =
+        replayCost(o.events, o.makeEngine, scaledParameters(o.start, o.free, factors)).cost;
+    if (moved) {
+      o.lowest = std::min(o.lowest, cost);
+      o.highest = std::max(o.highest, cost);
+    }
+    return cost;
+  }
+};
+
+/// The optimiser's reason to stop, in words.
+std::string stopReason(nlopt::result r) {
+  switch (r) {
+    case nlopt::FTOL_REACHED:
+      return "the cost changed by less than 1e-4";
+    case nlopt::XTOL_REACHED:
+      return "the factors changed by less than 0.01 %";
+    case nlopt::MAXEVAL_REACHED:
+      return "the maximum number of replays was reached";
+    default:
+      return "NLopt result " + std::to_string(static_cast<int>(r));
+  }
+}
+
+/// Minimises the objective from theta = 0 within +-log(range); the optimiser's reason to stop.
+std::string minimise(Objective& objective, const TuningOptions& options, std::vector<double>& theta,
+                     double& best) {
+  const auto n = static_cast<unsigned>(theta.size());
+  // BOBYQA models the cost by a quadratic through 2n + 1 points and needs n >= 2; one free
+  // entry is a line search, which Nelder-Mead does without a model.
+  nlopt::opt opt(n >= 2 ? nlopt::LN_BOBYQA : nlopt::LN_NELDERMEAD, n);
+  const double bound = std::log(options.range);
+  opt.set_lower_bounds(std::vector<double>(n, -bound));
+  opt.set_upper_bounds(std::vector<double>(n, bound));
+  opt.set_min_objective(&Objective::evaluate, &objective);
+  // 1e-4 in log is a factor of 1.0001.
+  opt.set_ftol_abs(kCostTolerance);
+  opt.set_xtol_abs(1e-4);
+  opt.set_maxeval(options.maxEvaluations);
+  opt.set_initial_step(std::vector<double>(n, std::min(1.0, bound / 2.0)));
+  try {
+    return stopReason(opt.optimize(theta, best));
+  } catch (const nlopt::roundoff_limited&) {
+    return "rounding errors limited the progress (the result is the best point found)";
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("the optimiser failed: ") + e.what());
+  }
+}
+
+}  // namespace
+
+double predictionErrorCost(const EventLog& events, const EngineMaker& makeEngine,
+                           const FilterParameters& parameters) {
+  return replayCost(events, makeEngine, parameters).cost;
 }
 
 TuningResult tuneNoise(const EventLog& events, const EngineMaker& makeEngine,
@@ -126,60 +217,25 @@ TuningResult tuneNoise(const EventLog& events, const EngineMaker& makeEngine,
                        const TuningOptions& options) {
   if (!(options.range > 1.0)) throw std::invalid_argument("--tune-range must be above 1");
   if (options.maxEvaluations < 1) throw std::invalid_argument("--max-evaluations must be >= 1");
-  const unsigned n = static_cast<unsigned>(free.size());
-  struct Objective {
-    const EventLog& events;
-    const EngineMaker& makeEngine;
-    const FilterParameters& start;
-    const std::vector<FreeEntry>& free;
-    int evaluations = 0;
-  } objective{events, makeEngine, start, free};
-  auto f = [](const std::vector<double>& theta, std::vector<double>&, void* data) -> double {
-    auto& o = *static_cast<Objective*>(data);
-    ++o.evaluations;
-    std::vector<double> factors(theta.size());
-    for (std::size_t k = 0; k < theta.size(); ++k) factors[k] = std::exp(theta[k]);
-    return predictionErrorCost(o.events, o.makeEngine, scaledParameters(o.start, o.free, factors));
-  };
-  // BOBYQA models the cost by a quadratic through 2n + 1 points and needs n >= 2; one free
-  // entry is a line search, which Nelder-Mead does without a model.
-  nlopt::opt opt(n >= 2 ? nlopt::LN_BOBYQA : nlopt::LN_NELDERMEAD, n);
-  const double bound = std::log(options.range);
-  opt.set_lower_bounds(std::vector<double>(n, -bound));
-  opt.set_upper_bounds(std::vector<double>(n, bound));
-  opt.set_min_objective(f, &objective);
-  // A change of the cost by 1e-4 is far below what the data can tell apart (a likelihood-ratio
-  // test needs a change of about 4 for one parameter); 1e-4 in log is a factor of 1.0001.
-  opt.set_ftol_abs(1e-4);
-  opt.set_xtol_abs(1e-4);
-  opt.set_maxeval(options.maxEvaluations);
-  opt.set_initial_step(std::vector<double>(n, std::min(1.0, bound / 2.0)));
-  std::vector<double> theta(n, 0.0);
+  const auto n = static_cast<unsigned>(free.size());
   TuningResult result;
-  result.startCost = predictionErrorCost(events, makeEngine, start);
-  double best = result.startCost;
-  try {
-    const nlopt::result r = opt.optimize(theta, best);
-    switch (r) {
-      case nlopt::FTOL_REACHED:
-        result.stop = "the cost changed by less than 1e-4";
-        break;
-      case nlopt::XTOL_REACHED:
-        result.stop = "the factors changed by less than 0.01 %";
-        break;
-      case nlopt::MAXEVAL_REACHED:
-        result.stop = "the maximum number of replays was reached";
-        break;
-      default:
-        result.stop = "NLopt result " + std::to_string(static_cast<int>(r));
-        break;
-    }
-  } catch (const nlopt::roundoff_limited&) {
-    result.stop = "rounding errors limited the progress (the result is the best point found)";
-  } catch (const std::runtime_error& e) {
-    throw std::runtime_error(std::string("the optimiser failed: ") + e.what());
+  const ReplayCost atStart = replayCost(events, makeEngine, start);
+  result.startCost = atStart.cost;
+  result.innovationPeriods = atStart.periods;
+  std::vector<double> theta(n, 0.0);
+  Objective objective{events, makeEngine, start, free};
+  if (atStart.periods == 0) {
+    result.stop = "no period with an innovation: nothing to minimise";
+  } else {
+    double best = result.startCost;
+    result.stop = minimise(objective, options, theta, best);
   }
   result.evaluations = objective.evaluations;
+  if (objective.highest >= objective.lowest) {
+    result.costSpread = std::max(objective.highest, result.startCost) -
+                        std::min(objective.lowest, result.startCost);
+  }
+  const double bound = std::log(options.range);
   result.factors.resize(n);
   result.atBound.resize(n);
   for (unsigned k = 0; k < n; ++k) {
@@ -189,6 +245,28 @@ TuningResult tuneNoise(const EventLog& events, const EngineMaker& makeEngine,
   result.tuned = scaledParameters(start, free, result.factors);
   result.cost = predictionErrorCost(events, makeEngine, result.tuned);
   return result;
+}
+
+std::string identificationRefusal(const TuningResult& r) {
+  if (r.innovationPeriods == 0) {
+    return "the recording identifies nothing: no period has a finite innovation (no "
+           "estimated period had a measured value: every value dropped, or none in a period "
+           "that ended within the recording; the replay's summary above counts them)";
+  }
+  if (r.startCost >= kFailedRunCost && r.cost >= kFailedRunCost) {
+    return "the recording identifies nothing: every replay failed (a failed step, or an "
+           "innovation covariance that was not positive definite)";
+  }
+  if (r.costSpread >= 0.0 && r.costSpread < kCostTolerance) {
+    char spread[64];
+    std::snprintf(spread, sizeof spread, "%.3g", r.costSpread);
+    return std::string(
+               "the recording does not identify the free entries: the cost stayed "
+               "within ") +
+           spread + " (below 1e-4) over " + std::to_string(r.evaluations) +
+           " replays with other values of them (the cost is flat in them)";
+  }
+  return "";
 }
 
 }  // namespace sf_filter

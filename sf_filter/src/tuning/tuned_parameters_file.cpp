@@ -1,13 +1,11 @@
 #include "sf_filter/tuning/tuned_parameters_file.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 #include <set>
-#include <stdexcept>
 
 #include <yaml-cpp/yaml.h>
+
+#include "sf_filter/replay/yaml_parameters.hpp"
 
 namespace sf_filter {
 
@@ -34,9 +32,9 @@ std::string matrixYaml(const Eigen::MatrixXd& m) {
 
 }  // namespace
 
-void writeTunedParameters(const std::string& path, const std::vector<std::string>& comment,
-                          const FilterParameters& tuned, const std::vector<FreeEntry>& free,
-                          double estimationPeriodSeconds, const std::string& baseParams) {
+std::string tunedParametersYaml(const std::vector<std::string>& comment,
+                                const FilterParameters& tuned, const std::vector<FreeEntry>& free,
+                                double estimationPeriodSeconds, const std::string& baseParams) {
   std::set<std::string> written{"estimation_period", "frequency"};
   std::string text;
   for (const std::string& line : comment) text += "# " + line + "\n";
@@ -58,12 +56,7 @@ void writeTunedParameters(const std::string& path, const std::vector<std::string
     written.insert(m.parameter);
   }
   if (!baseParams.empty()) {
-    YAML::Node base;
-    try {
-      base = YAML::LoadFile(baseParams);
-    } catch (const YAML::Exception& e) {
-      throw std::runtime_error("cannot read parameter file " + baseParams + ": " + e.what());
-    }
+    const YAML::Node base = loadParameterFile(baseParams);
     if (base.IsMap()) {
       for (const auto& kv : base) {
         const std::string key = kv.first.as<std::string>();
@@ -75,22 +68,7 @@ void writeTunedParameters(const std::string& path, const std::vector<std::string
       }
     }
   }
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream file(temporary);
-    file << text;
-    file.close();
-    if (!file) {
-      const std::string why = std::strerror(errno);
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write " + path + ": " + why);
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + why);
-  }
+  return text;
 }
 
 }  // namespace sf_filter

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <ros/node_handle.h>
+#include <ros/param.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 #include <Eigen/Core>
 

@@ -1,6 +1,8 @@
-// An output file of the offline replay, written under a temporary name beside its target and
-// renamed into place only when the whole replay succeeded, so that a failed run never leaves
-// a partial result behind (and never replaces an older complete one).
+// An output file of the offline tools (--csv, --bag, --tune's --out), written under a
+// temporary name beside its target and renamed into place only when the whole run succeeded,
+// so that a failed run never leaves a partial result behind (and never replaces an older
+// complete one); refused up front when it would replace an input or something that is not a
+// regular file.
 #pragma once
 
 #include <sys/stat.h>
@@ -8,6 +10,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -71,24 +74,35 @@ inline bool sameFile(const std::string& a, const std::string& b) {
          sa.st_ino == sb.st_ino;
 }
 
-/// Refuses outputs that would destroy an input or each other, before anything is read: an
-/// output (or its temporary name) that is an input bag, the same file for two outputs, an
-/// existing target or temporary name that is not a regular file.
-inline void checkOutputs(const std::vector<std::string>& inputs,
-                         const std::vector<std::pair<std::string, std::string>>& outputs) {
+/// Files by what they are: (option or kind, path), e.g. ("--csv", "out.csv"), ("bag", "in.bag").
+using NamedFiles = std::vector<std::pair<std::string, std::string>>;
+
+/// The checks of one output, given by `option` (--csv, --bag, --out): neither `path` nor its
+/// temporary name is one of the files the run reads (`inputs`: the bags, the --params file;
+/// by device and inode, so another spelling or a hard link is found), and what exists there
+/// is a regular file (lstat: a symbolic link, a directory, a device or a FIFO is refused,
+/// the rename would replace it). Every output of every tool is checked by this function alone.
+inline void checkOutput(const std::string& option, const std::string& path,
+                        const NamedFiles& inputs) {
+  for (const std::string& p : {path, partialPath(path)}) {
+    for (const auto& [what, input] : inputs) {
+      if (sameFile(p, input)) {
+        throw ReplayError(option + " " + path + " is the input " + what + " " + input +
+                          ": refusing to overwrite the input");
+      }
+    }
+  }
+  atomic_output_detail::requireRegularOrNew(path, option);
+  atomic_output_detail::requireRegularOrNew(partialPath(path), option);
+}
+
+/// Refuses outputs that would destroy an input or each other, before anything is read:
+/// checkOutput() for each, and no file named by two outputs.
+inline void checkOutputs(const NamedFiles& inputs, const NamedFiles& outputs) {
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     const auto& [option, path] = outputs[k];
     if (path.empty()) continue;
-    for (const std::string& p : {path, partialPath(path)}) {
-      for (const std::string& input : inputs) {
-        if (sameFile(p, input)) {
-          throw ReplayError(option + " " + path + " is the input bag " + input +
-                            ": refusing to overwrite the input");
-        }
-      }
-    }
-    atomic_output_detail::requireRegularOrNew(path, option);
-    atomic_output_detail::requireRegularOrNew(partialPath(path), option);
+    checkOutput(option, path, inputs);
     for (std::size_t j = 0; j < k; ++j) {
       if (!outputs[j].second.empty() && sameFile(outputs[j].second, path)) {
         throw ReplayError(outputs[j].first + " and " + option + " name the same file " + path);
@@ -97,17 +111,19 @@ inline void checkOutputs(const std::vector<std::string>& inputs,
   }
 }
 
+/// The one writer of the tools' output files: checkOutput() when it is made and again just
+/// before the rename, the content written under the temporary name.
 class AtomicOutput {
  public:
-  /// `path` empty: no output. Refuses a target that is not a regular file up front (a
-  /// directory, a device, a FIFO): the rename at the end would replace it, or fail after all
-  /// the work with the other output already in place.
-  explicit AtomicOutput(std::string path)
-      : path_(std::move(path)), temporary_(path_.empty() ? "" : partialPath(path_)) {
-    if (enabled()) {
-      atomic_output_detail::requireRegularOrNew(path_, "output");
-      atomic_output_detail::requireRegularOrNew(temporary_, "output");
-    }
+  /// `path` empty: no output. Refuses a target that checkOutput() refuses up front: the
+  /// rename at the end would replace it, or fail after all the work with the other output
+  /// already in place.
+  AtomicOutput(std::string option, std::string path, NamedFiles inputs)
+      : option_(std::move(option)),
+        path_(std::move(path)),
+        temporary_(path_.empty() ? "" : partialPath(path_)),
+        inputs_(std::move(inputs)) {
+    if (enabled()) checkOutput(option_, path_, inputs_);
   }
   AtomicOutput(const AtomicOutput&) = delete;
   AtomicOutput& operator=(const AtomicOutput&) = delete;
@@ -117,19 +133,31 @@ class AtomicOutput {
   bool enabled() const { return !path_.empty(); }
   const std::string& path() const { return path_; }
   const std::string& temporary() const { return temporary_; }
-  /// Renames the temporary file onto the target, which must still be a regular file or
-  /// absent.
+  /// Renames the temporary file onto the target, checked again (checkOutput()).
   void commit() {
     if (!enabled()) return;
-    atomic_output_detail::requireRegularOrNew(path_, "output");
+    checkOutput(option_, path_, inputs_);
     if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
       throw ReplayError("cannot move " + temporary_ + " to " + path_ + ": " + std::strerror(errno));
     }
     committed_ = true;
   }
+  /// The whole file at once: `text` written under the temporary name, then commit().
+  void write(const std::string& text) {
+    if (!enabled()) return;
+    std::ofstream file(temporary_);
+    file << text;
+    file.close();
+    if (!file) {
+      throw ReplayError("cannot write " + path_ + " (as " + temporary_ +
+                        "): " + std::strerror(errno));
+    }
+    commit();
+  }
 
  private:
-  std::string path_, temporary_;
+  std::string option_, path_, temporary_;
+  NamedFiles inputs_;
   bool committed_ = false;
 };
 

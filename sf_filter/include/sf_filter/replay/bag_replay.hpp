@@ -55,7 +55,17 @@ struct ReplayOptions {
   /// A configured topic missing from the bag: an error (false), or a warning, the input then
   /// missing in every period (true; at least one configured topic must be there).
   bool allowMissingTopics = false;
+  /// The --params file the caller read ("" for none): no output may replace it either.
+  std::string parametersFile;
 };
+
+/// The files a replay reads, which none of its outputs may be (atomic_output.hpp).
+inline NamedFiles inputFiles(const ReplayOptions& options) {
+  NamedFiles files;
+  for (const std::string& bag : options.inputBags) files.emplace_back("bag", bag);
+  if (!options.parametersFile.empty()) files.emplace_back("--params file", options.parametersFile);
+  return files;
+}
 
 /// "a, b, c": the bags or topics of a message.
 inline std::string commaSeparated(const std::vector<std::string>& items) {
@@ -143,7 +153,8 @@ class BagReplay final : public MessageSink {
   /// Replays the whole recording. Throws ReplayError with a one-line reason on failure; outputs
   /// are then not created. The bags' topics and types are checked before any output is opened.
   ReplaySummary run() {
-    checkOutputs(options_.inputBags, {{"--csv", options_.csvPath}, {"--bag", options_.outputBag}});
+    checkOutputs(inputFiles(options_),
+                 {{"--csv", options_.csvPath}, {"--bag", options_.outputBag}});
     const std::vector<std::unique_ptr<rosbag::Bag>> inputs = openInputs();
     const std::map<std::string, Recorded> recorded = readInput([&] { return connections(inputs); });
     checkTypes(recorded);
@@ -158,7 +169,8 @@ class BagReplay final : public MessageSink {
       }
     }
 
-    AtomicOutput csvFile(options_.csvPath), bagFile(options_.outputBag);
+    AtomicOutput csvFile("--csv", options_.csvPath, inputFiles(options_));
+    AtomicOutput bagFile("--bag", options_.outputBag, inputFiles(options_));
     std::ofstream csv;
     if (csvFile.enabled()) {
       csv.open(csvFile.temporary());

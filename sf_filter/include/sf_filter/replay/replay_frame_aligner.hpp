@@ -6,6 +6,8 @@
 // rotateVector() as online; a value that cannot be rotated is dropped and counted.
 #pragma once
 
+#include <console_bridge/console.h>
+
 #include <array>
 #include <cstdint>
 #include <iostream>
@@ -22,6 +24,38 @@
 
 namespace sf_filter {
 
+namespace replay_detail {
+
+/// While it lives, tf2's TF_REPEATED_DATA warnings (a dynamic transform with the stamp of one
+/// its frame already has: overlapping bags, or a transform recorded twice) are counted in
+/// `count` instead of printed, one line each (1000-3000 lines for two overlapping bags); tf2's
+/// other messages go to the handler that was in place.
+class RepeatedDataCounter final : public console_bridge::OutputHandler {
+ public:
+  explicit RepeatedDataCounter(std::uint64_t& count)
+      : count_(count), previous_(console_bridge::getOutputHandler()) {
+    console_bridge::useOutputHandler(this);
+  }
+  RepeatedDataCounter(const RepeatedDataCounter&) = delete;
+  RepeatedDataCounter& operator=(const RepeatedDataCounter&) = delete;
+  ~RepeatedDataCounter() override { console_bridge::useOutputHandler(previous_); }
+
+  void log(const std::string& text, console_bridge::LogLevel level, const char* filename,
+           int line) override {
+    if (text.rfind("TF_REPEATED_DATA", 0) == 0) {
+      ++count_;
+    } else if (previous_ != nullptr) {
+      previous_->log(text, level, filename, line);
+    }
+  }
+
+ private:
+  std::uint64_t& count_;
+  console_bridge::OutputHandler* previous_;
+};
+
+}  // namespace replay_detail
+
 class ReplayFrameAligner {
  public:
   /// Authority recorded with the bag's transforms (tf2 keeps one per transform).
@@ -35,8 +69,10 @@ class ReplayFrameAligner {
   ReplayFrameAligner& operator=(const ReplayFrameAligner&) = delete;
 
   /// The transforms of one /tf (isStatic false) or /tf_static message. A transform tf2
-  /// refuses (empty or equal frames, NaN) is counted and otherwise ignored, as a listener does.
+  /// refuses (empty or equal frames, NaN, a stamp its frame has already) is counted and
+  /// otherwise ignored, as a listener does; repeated stamps are counted apart, not logged.
   void addTransforms(const tf2_msgs::TFMessage& msg, bool isStatic) {
+    const replay_detail::RepeatedDataCounter counter(repeatedTransforms_);
     for (const auto& t : msg.transforms) {
       try {
         if (buffer_.setTransform(t, kAuthority, isStatic)) {
@@ -82,6 +118,8 @@ class ReplayFrameAligner {
   /// Transforms taken from the bag, and those tf2 refused.
   std::uint64_t transforms() const { return transforms_; }
   std::uint64_t rejectedTransforms() const { return rejectedTransforms_; }
+  /// Of those, the ones tf2 ignored for a stamp their frame had already (TF_REPEATED_DATA).
+  std::uint64_t repeatedTransforms() const { return repeatedTransforms_; }
   const std::string& baseFrame() const { return baseFrame_; }
   const tf2::BufferCore& buffer() const { return buffer_; }
 
@@ -92,6 +130,7 @@ class ReplayFrameAligner {
   std::vector<std::uint64_t> dropped_;
   std::uint64_t transforms_ = 0;
   std::uint64_t rejectedTransforms_ = 0;
+  std::uint64_t repeatedTransforms_ = 0;
 };
 
 }  // namespace sf_filter

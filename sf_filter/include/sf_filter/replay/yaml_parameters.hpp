@@ -4,6 +4,12 @@
 // it with the same code as the node's parameter server values.
 #pragma once
 
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstddef>
+#include <cstring>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -56,17 +62,46 @@ inline XmlRpc::XmlRpcValue toXmlRpc(const YAML::Node& node, const std::string& w
 
 }  // namespace yaml_detail
 
+/// The largest --params file read: a node's private parameters are a few kB (the shipped
+/// tuned files about 1 kB; three full 30x30 matrices about 60 kB). Parsed, a file costs up
+/// to about 260 bytes of memory per byte (a long list of numbers; doc/evaluation.md): 100 MB
+/// took 105 s and 12 GB, 256 KiB takes 0.8 s and 80 MB.
+constexpr std::size_t kMaxParameterFileBytes = 256 * 1024;
+
+/// The YAML document of parameter file `path`, read up to kMaxParameterFileBytes and no
+/// further (a device or a FIFO as well); refuses a directory, a larger file and bad YAML,
+/// naming the file.
+inline YAML::Node loadParameterFile(const std::string& path) {
+  const std::string name = "parameter file " + path;
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+    throw ParameterOverrideError(name + " is a directory, not a YAML file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string text(kMaxParameterFileBytes + 1, '\0');
+  if (in) in.read(&text[0], static_cast<std::streamsize>(text.size()));
+  if (!in && !in.eof()) {
+    throw ParameterOverrideError("cannot read " + name + ": " + std::strerror(errno));
+  }
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxParameterFileBytes) {
+    throw ParameterOverrideError(name + " is larger than " +
+                                 std::to_string(kMaxParameterFileBytes / 1024) +
+                                 " KiB, the limit for a node's private parameters (a few kB)");
+  }
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ParameterOverrideError("cannot read " + name + ": " + e.what());
+  }
+}
+
 /// The private parameters of a YAML file: a dictionary of parameter names and values, as
 /// `rosparam load FILE /node_name` takes it.
 class YamlParameterSource final : public ParameterSource {
  public:
   explicit YamlParameterSource(const std::string& path) {
-    YAML::Node root;
-    try {
-      root = YAML::LoadFile(path);
-    } catch (const YAML::Exception& e) {
-      throw ParameterOverrideError("cannot read parameter file " + path + ": " + e.what());
-    }
+    const YAML::Node root = loadParameterFile(path);
     if (root.IsNull()) return;  // an empty file: no parameters
     if (!root.IsMap()) {
       throw ParameterOverrideError("parameter file " + path +

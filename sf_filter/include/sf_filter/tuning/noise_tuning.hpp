@@ -57,6 +57,11 @@ struct TuningResult {
   double startCost = 0.0, cost = 0.0;
   int evaluations = 0;
   std::string stop;  ///< NLopt's reason to stop
+  /// Periods with an innovation in the replay from the start: 0, and the cost is an empty sum.
+  std::uint64_t innovationPeriods = 0;
+  /// The highest minus the lowest cost over the start and the replays at other values of
+  /// the free entries (-1: there was none).
+  double costSpread = -1.0;
 };
 
 /// The engine of the header's filter for one set of parameters.
@@ -71,6 +76,11 @@ double predictionErrorCost(const EventLog& events, const EngineMaker& makeEngine
 TuningResult tuneNoise(const EventLog& events, const EngineMaker& makeEngine,
                        const FilterParameters& start, const std::vector<FreeEntry>& free,
                        const TuningOptions& options);
+
+/// Why the result identifies nothing and must not be written ("" when it does): no period
+/// with a finite innovation, every replay failed, or a cost that did not change by the
+/// optimiser's tolerance (1e-4) whatever the free entries (flat: they do not enter it).
+std::string identificationRefusal(const TuningResult& result);
 
 /// `start` with the free entries' variances multiplied by `factors` (correlations kept).
 FilterParameters scaledParameters(const FilterParameters& start, const std::vector<FreeEntry>& free,

@@ -17,11 +17,12 @@ namespace sf_filter {
 /// exponent ("1.0e-05", not "1e-05", which PyYAML reads as a string).
 std::string yamlFloat(double value);
 
-/// Writes `path` (atomically: a temporary file renamed when complete). `comment` lines go at
+/// The file's text (written by the tools' one writer, AtomicOutput). `comment` lines go at
 /// the top; `baseParams` is the --params file the run started from ("" for none): its entries
-/// other than those written here are copied. Throws std::runtime_error naming the file.
-void writeTunedParameters(const std::string& path, const std::vector<std::string>& comment,
-                          const FilterParameters& tuned, const std::vector<FreeEntry>& free,
-                          double estimationPeriodSeconds, const std::string& baseParams);
+/// other than those written here are copied. Throws ParameterOverrideError naming that file
+/// if it can no longer be read.
+std::string tunedParametersYaml(const std::vector<std::string>& comment,
+                                const FilterParameters& tuned, const std::vector<FreeEntry>& free,
+                                double estimationPeriodSeconds, const std::string& baseParams);
 
 }  // namespace sf_filter
