@@ -202,8 +202,11 @@ void printGpsCounters(const std::string& name, const sf_filter::MessageSink& sin
     const auto input = static_cast<sf_filter::Index>(i);
     std::cout << name << ": input " << i << " (GPS): " << sink.gps().noFix(i)
               << " fixes dropped without a fix (status < STATUS_FIX), "
-              << sink.covarianceFallbacks(input) << " with an unknown covariance (header R used)"
-              << std::endl;
+              << sink.gps().implausibleFixes(i) << " dropped as not on the Earth"
+              << (sink.gps().implausibleFixes(i) ? " (newest: " + sink.gps().implausibleReason(i) + ")"
+                                                 : std::string())
+              << ", " << sink.covarianceFallbacks(input)
+              << " with an unknown covariance (header R used)" << std::endl;
   }
 }
 
