@@ -1,7 +1,7 @@
 """Faulty GPS fixes on the real Husky recording through config/husky_skid_steer_gps.h (issue 38
 D2, D3): a copy of bags/husky_gps.bag whose first fix has latitude 91, whose 20th has
-longitude 500, whose 40th has altitude 1e30 and whose 60th jumps 1000 km north (latitude + 9
-degrees). The three positions not on the Earth are dropped before the filter (counted with
+longitude 500, whose 40th has altitude 1e30 and whose 60th jumps 1000 km north-east (latitude and
+longitude + 9 degrees: both its east and north innovations far beyond the gate). The three positions not on the Earth are dropped before the filter (counted with
 their reason), the next fix after the first becomes the datum, and the jump fails the
 header's gate (counted as gated). Reference: the same recording with those four fixes
 removed, which must give the same estimates (a dropped or gated fix is a missing one). Before
@@ -23,7 +23,7 @@ from replay_helpers import HUSKY_BAG, built_lib_dir, read_rows  # noqa: E402
 
 NODE = "sf_husky_skid_steer_gps"
 FAULTS = {0: ("latitude", 91.0), 19: ("longitude", 500.0), 39: ("altitude", 1e30),
-          59: ("latitude", None)}  # None: 9 degrees (about 1000 km) north
+          59: (("latitude", "longitude"), None)}  # None: 9 degrees more (about 1000 km)
 
 
 def write_bags(faulty_path, removed_path):
@@ -38,7 +38,11 @@ def write_bags(faulty_path, removed_path):
                 fix += 1
                 if fix in FAULTS:
                     field, value = FAULTS[fix]
-                    setattr(msg, field, msg.latitude + 9.0 if value is None else value)
+                    if value is None:
+                        msg.latitude += 9.0
+                        msg.longitude += 9.0
+                    else:
+                        setattr(msg, field, value)
                     faulty.write(topic, msg, t)
                     continue
             faulty.write(topic, msg, t)
@@ -73,7 +77,7 @@ class GpsFaultsOnHusky(unittest.TestCase):
             self.assertIn("input %d (GPS): 0 fixes dropped without a fix (status < STATUS_FIX), "
                           "3 dropped as not on the Earth (newest: altitude 1e+30 outside "
                           "[-1e4, 1e5] m)" % i, proc.stdout)
-            self.assertIn("input %d: 92 received, 91 used, dropped: none, 1 gated" % i,
+            self.assertIn("input %d: 92 received, 91 used, dropped: none, 1 gated," % i,
                           proc.stdout)
 
     def test_estimates_as_without_the_faulty_fixes(self):
@@ -82,8 +86,8 @@ class GpsFaultsOnHusky(unittest.TestCase):
         self.assertEqual(ref_proc.returncode, 0, ref_proc.stderr)
         self.assertEqual(len(faulty), len(removed))
         for a, b in zip(faulty, removed):
-            for key in ("x0", "x1", "var0", "var1"):
-                self.assertAlmostEqual(a[key], b[key], places=9, msg=(key, a["t"]))
+            for key in ("time", "x0", "x1", "x2", "var0", "var1"):
+                self.assertAlmostEqual(a[key], b[key], places=9, msg=(key, a["time"]))
 
 
 if __name__ == "__main__":
