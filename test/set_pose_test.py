@@ -6,7 +6,9 @@ Estimate), and through the ~set_pose service. Each time the published nav_msgs/O
 hold the sent pose (v = 0, so the prediction keeps it) and, in its x, y, yaw slots, the sent
 covariance block plus at most the growth of the periods since (bound below). A pose the
 service refuses (a negative variance) is answered with the reason and leaves the pose as it
-was; the estimation diagnostics count both.
+was; the estimation diagnostics count both. A pose in another frame (map) is turned into the
+odom frame through tf, or refused without a transform; x beyond 1e100 is refused as
+~initial_state is; the log lines of set and refused poses are throttled (issue 38 D6, D7).
 """
 
 import math
@@ -17,7 +19,8 @@ import unittest
 import rosservice
 import rospy
 import rostest
-from geometry_msgs.msg import PoseWithCovarianceStamped
+import tf2_ros
+from geometry_msgs.msg import PoseWithCovarianceStamped, TransformStamped
 from roslib.message import get_service_class
 from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Log
@@ -186,6 +189,51 @@ class SetPoseTest(unittest.TestCase):
         # 1e100 itself is within the bound.
         self.assertTrue(self.call(pose_message(1e100, 0.0, 0.0, {(0, 0): 0.1, (1, 1): 0.1,
                                                                   (5, 5): 0.1})).success)
+
+    def test_pose_in_another_frame_is_turned_through_tf(self):
+        # rviz publishes initialpose in its fixed frame, often map; it was taken as odom. With
+        # map -> odom a static transform (odom's origin at map (10, -4), turned by +90 deg), a
+        # pose at map (10, -1), yaw pi/2, is odom (3, 0), yaw 0: p_odom = R(-90) (p_map - t);
+        # its x, y variances (0.3, 0.1) swap, the yaw variance stays.
+        broadcaster = tf2_ros.StaticTransformBroadcaster()
+        t = TransformStamped()
+        t.header.stamp = rospy.Time.now()
+        t.header.frame_id = "map"
+        t.child_frame_id = "odom"
+        t.transform.translation.x = 10.0
+        t.transform.translation.y = -4.0
+        t.transform.rotation.z = math.sin(math.pi / 4)
+        t.transform.rotation.w = math.cos(math.pi / 4)
+        broadcaster.sendTransform(t)
+        message = pose_message(10.0, -1.0, math.pi / 2, {(0, 0): 0.3, (1, 1): 0.1, (5, 5): 0.05})
+        message.header.frame_id = "map"
+        sent = rospy.Time.now()
+        response = self.call(message)
+        self.assertTrue(response.success, response.message)
+        # The first such pose waits for tf's first transform, and the node then estimates the
+        # periods of the wait (with the pose before): the estimates after the answer hold it.
+        answered = rospy.Time.now()
+
+        def arrived():
+            return [m for m in self.odometry if m.header.stamp > answered + rospy.Duration(0.15)]
+        self.assertTrue(wait_for(lambda: len(arrived()) >= 1, 5.0), "no odometry")
+        odom = arrived()[0]
+        self.assertAlmostEqual(odom.pose.pose.position.x, 3.0, places=6)
+        self.assertAlmostEqual(odom.pose.pose.position.y, 0.0, places=6)
+        self.assertAlmostEqual(yaw_of(odom.pose.pose.orientation), 0.0, places=6)
+        # The variances grow from the set values by the periods since (bound as in check()).
+        k = math.ceil((odom.header.stamp - sent).to_sec() / 0.1) + 1
+        growth = k * 1e-4 + k * k * 0.01 * max(odom.twist.covariance[0], odom.twist.covariance[35])
+        c = odom.pose.covariance
+        for slot, variance in ((0, 0.1), (7, 0.3), (35, 0.05)):
+            self.assertGreaterEqual(c[slot], variance - 1e-12, slot)
+            self.assertLessEqual(c[slot], variance + growth, slot)
+        # A frame tf does not know: refused naming both frames, the pose unchanged.
+        message.header.frame_id = "nowhere"
+        response = self.call(message)
+        self.assertFalse(response.success)
+        self.assertIn("no transform from the pose's frame 'nowhere' into the odom frame 'odom'",
+                      response.message)
 
     def test_set_pose_then_initialpose_then_service(self):
         # The counts of the poses the other tests sent, from a report after they were.

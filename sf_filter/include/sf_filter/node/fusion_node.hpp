@@ -563,7 +563,7 @@ class FusionNode final : public MessageSink {
   static constexpr double kPoseLogPeriod = 1.0;
   /// [s] a pose in another frame waits for tf's first transform (the listener starts with
   /// the first such pose, so /tf_static's latched transforms arrive within this).
-  static constexpr double kPoseTfWait = 0.5;
+  static constexpr double kPoseTfWait = 2.0;
 
   ros::NodeHandle nh_, pnh_;
   NodeDescription description_;
