@@ -203,8 +203,9 @@ void printGpsCounters(const std::string& name, const sf_filter::MessageSink& sin
     std::cout << name << ": input " << i << " (GPS): " << sink.gps().noFix(i)
               << " fixes dropped without a fix (status < STATUS_FIX), "
               << sink.gps().implausibleFixes(i) << " dropped as not on the Earth"
-              << (sink.gps().implausibleFixes(i) ? " (newest: " + sink.gps().implausibleReason(i) + ")"
-                                                 : std::string())
+              << (sink.gps().implausibleFixes(i)
+                      ? " (newest: " + sink.gps().implausibleReason(i) + ")"
+                      : std::string())
               << ", " << sink.covarianceFallbacks(input)
               << " with an unknown covariance (header R used)" << std::endl;
   }

@@ -138,8 +138,7 @@ TEST(FusionCoreCovariance, ABlockThatIsNoCovarianceDropsTheMessage) {
   EXPECT_EQ(core.addMeasurementBlock(kPose, a, bad, 2, 0.02), Rejection::IndefiniteCovariance);
   EXPECT_EQ(core.addMeasurementBlock(kPose, a, asymmetric, 2, 0.03),
             Rejection::AsymmetricCovariance);
-  EXPECT_EQ(core.addMeasurementBlock(kPose, a, notFinite, 2, 0.04),
-            Rejection::NonFiniteCovariance);
+  EXPECT_EQ(core.addMeasurementBlock(kPose, a, notFinite, 2, 0.04), Rejection::NonFiniteCovariance);
   core.advanceTo(0.1, out);
   Position reference = makePosition();
   reference.estimate(Measurement<2>::missing());

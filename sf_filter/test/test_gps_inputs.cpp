@@ -193,8 +193,8 @@ TEST(GpsInputs, AFirstFixNotOnTheEarthIsDroppedAndTheNextIsTheDatum) {
     EXPECT_FALSE(gps.datum());
     EXPECT_EQ(gps.implausibleFixes(3), 1u);
     EXPECT_EQ(gps.implausibleFixes(4), 1u);
-    EXPECT_EQ(gps.implausibleReason(4), sf_filter::gps::implausible(bad.latitude, bad.longitude,
-                                                                    bad.altitude));
+    EXPECT_EQ(gps.implausibleReason(4),
+              sf_filter::gps::implausible(bad.latitude, bad.longitude, bad.altitude));
     EXPECT_EQ(gps.noFix(3), 0u);
     // The next plausible fix is the datum: 0 there, 100 m north of it 100 m.
     EXPECT_NEAR(gps.sample(4, kNorth, fix(kLat, kLon, kAlt))->value, 0.0, 1e-9);

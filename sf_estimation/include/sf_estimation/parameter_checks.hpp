@@ -38,8 +38,8 @@ constexpr double kSymmetryTolerance = 1e-9;
 bool nearlySymmetric(const Eigen::Ref<const Eigen::MatrixXd>& P);
 
 /// A covariance must be finite with entries of magnitude at most kMaxCovarianceEntry,
-/// symmetric (to kSymmetryTolerance, nearlySymmetric) and positive semi-definite (positive definite when
-/// `strict`, e.g. the measurement noise R, whose inverse the Kalman-type filters use). Each
+/// symmetric (to kSymmetryTolerance, nearlySymmetric) and positive semi-definite (positive definite
+/// when `strict`, e.g. the measurement noise R, whose inverse the Kalman-type filters use). Each
 /// refusal names the method and the matrix. Not a template:
 /// compiled once in the library, whatever the filters' sizes (src/parameter_checks.cpp).
 void requireCovariance(const std::string& method, const std::string& name,

@@ -33,8 +33,7 @@ std::array<double, 9> LocalFrame::odomCovariance(const std::array<double, 9>& co
   const double rot[3][3] = {{c, s, 0.0}, {-s, c, 0.0}, {0.0, 0.0, 1.0}};
   // Rounding is made exact (S = (C + C^T) / 2); a fault is kept for the fusion core to refuse
   // (estimation::kSymmetryTolerance, the one rule of every covariance the node reads).
-  const bool symmetric =
-      estimation::nearlySymmetric(Eigen::Map<const Eigen::Matrix3d>(cov.data()));
+  const bool symmetric = estimation::nearlySymmetric(Eigen::Map<const Eigen::Matrix3d>(cov.data()));
   std::array<double, 9> out{};
   for (std::size_t a = 0; a < 3; ++a) {
     for (std::size_t b = symmetric ? a : 0; b < 3; ++b) {

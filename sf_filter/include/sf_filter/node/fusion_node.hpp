@@ -377,8 +377,8 @@ class FusionNode final : public MessageSink {
   /// every pose is counted in the diagnostics and the service answers each.
   std::string setPose(const char* topic, const geometry_msgs::PoseWithCovarianceStamped& given) {
     geometry_msgs::PoseWithCovarianceStamped m;
-    std::string refused = scheduled_ ? inOdomFrame(given, m)
-                                     : "the clock does not run yet (use_sim_time, no /clock)";
+    std::string refused =
+        scheduled_ ? inOdomFrame(given, m) : "the clock does not run yet (use_sim_time, no /clock)";
     if (refused.empty()) {
       advance(arrival(ros::Time()));  // the clock now, never before the core's reading
       refused = replacePose(m);
@@ -433,16 +433,15 @@ class FusionNode final : public MessageSink {
           poseTf_->lookupTransform(frameId_, frame, ros::Time(0));
       tf2::doTransform(given, out, t);
     } catch (const tf2::TransformException& e) {
-      return "no transform from the pose's frame '" + frame + "' into the odom frame '" +
-             frameId_ + "' (tf: " + e.what() + ")";
+      return "no transform from the pose's frame '" + frame + "' into the odom frame '" + frameId_ +
+             "' (tf: " + e.what() + ")";
     }
     return {};
   }
 
   /// The pose of `m` (in the odom frame) made the belief's; why not, empty if it was.
   std::string replacePose(const geometry_msgs::PoseWithCovarianceStamped& m) {
-    const std::array<double, 3> pose = {m.pose.pose.position.x, m.pose.pose.position.y,
-                                        yawOf(m)};
+    const std::array<double, 3> pose = {m.pose.pose.position.x, m.pose.pose.position.y, yawOf(m)};
     const std::array<int, 3> slot = {0, 1, 5};
     Eigen::Matrix3d covariance;
     for (int r = 0; r < 3; ++r) {

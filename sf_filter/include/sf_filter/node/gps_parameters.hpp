@@ -2,8 +2,9 @@
 // ParameterSource like the node's other parameters (ros_parameters.hpp):
 //   ~datum           [latitude deg, longitude deg, altitude m]: the origin of the local frame;
 //                    not set: the first valid fix. Checked like every fix
-//                    (gps::implausible: latitude, longitude and altitude band). (robot_localization's navsat_transform
-//                    takes [latitude, longitude, heading] under the same name.)
+//                    (gps::implausible: latitude, longitude and altitude band).
+//                    (robot_localization's navsat_transform takes [latitude, longitude, heading]
+//                    under the same name.)
 //   ~gps_yaw_offset  rad, the heading of the odom frame's x axis in ENU, counter-clockwise
 //                    from east (0: x points east); in (-2 pi, 2 pi).
 #pragma once
@@ -29,8 +30,8 @@ inline gps::GpsOptions loadGpsParameters(const ParameterSource& pnh) {
     const double lat = detail::toDouble(value[0], "parameter ~datum latitude");
     const double lon = detail::toDouble(value[1], "parameter ~datum longitude");
     const double alt = detail::toDouble(value[2], "parameter ~datum altitude");
-    const std::string reason =
-        std::isnan(alt) ? std::string("altitude nan is not finite") : gps::implausible(lat, lon, alt);
+    const std::string reason = std::isnan(alt) ? std::string("altitude nan is not finite")
+                                               : gps::implausible(lat, lon, alt);
     if (!reason.empty()) {
       throw ParameterOverrideError(
           "parameter ~datum: " + reason +
