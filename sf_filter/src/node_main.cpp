@@ -540,7 +540,11 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       }
       const std::uint64_t failures = replay.core().estimationFailures();
       const std::uint64_t resets = replay.core().filterResets();
-      const std::uint64_t unrotated = aligner ? aligner->droppedTotal() : 0;
+      // Values dropped before the core: not rotatable, GPS fixes not on the Earth.
+      std::uint64_t beforeCore = aligner ? aligner->droppedTotal() : 0;
+      for (std::size_t i = 0; i < def.description.inputs.size(); ++i) {
+        beforeCore += replay.gps().implausibleFixes(i);
+      }
       std::cout << options.nodeName << ": " << s.messages << " messages, " << s.estimates
                 << " estimates, " << failures << " failed steps, " << resets << " filter resets, "
                 << s.skippedGaps << " gaps skipped, " << s.dropped << " dropped values (" << late
@@ -564,9 +568,9 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
         return tuneFromEvents(options.nodeName, def, events, maker, parameters, freeEntries, tuning,
                               tunedPath, paramsPath, periodMs, argc, argv);
       }
-      if (strict && (failures > 0 || resets > 0 || s.dropped > 0 || unrotated > 0)) {
+      if (strict && (failures > 0 || resets > 0 || s.dropped > 0 || beforeCore > 0)) {
         std::cerr << program << ": --strict: " << failures << " failed steps, " << resets
-                  << " filter resets, " << s.dropped + unrotated << " dropped values" << std::endl;
+                  << " filter resets, " << s.dropped + beforeCore << " dropped values" << std::endl;
         return EXIT_FAILURE;
       }
     } catch (const std::exception& e) {

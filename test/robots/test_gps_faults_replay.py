@@ -57,9 +57,10 @@ class GpsFaultsOnHusky(unittest.TestCase):
         faulty, removed = (os.path.join(cls.tmp.name, n + ".bag") for n in ("faulty", "removed"))
         write_bags(faulty, removed)
         cls.runs = {}
-        for name, bag in (("faulty", faulty), ("removed", removed)):
+        for name, bag, extra in (("faulty", faulty, []), ("removed", removed, []),
+                                 ("strict", faulty, ["--strict"])):
             csv_path = os.path.join(cls.tmp.name, name + ".csv")
-            proc = subprocess.run([exe, "--replay", bag, "--csv", csv_path],
+            proc = subprocess.run([exe, "--replay", bag, "--csv", csv_path] + extra,
                                   stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                   universal_newlines=True, timeout=120)
             rows = read_rows(csv_path) if proc.returncode == 0 else None
@@ -79,6 +80,12 @@ class GpsFaultsOnHusky(unittest.TestCase):
                           "[-1e4, 1e5] m)" % i, proc.stdout)
             self.assertIn("input %d: 92 received, 91 used, dropped: none, 1 gated," % i,
                           proc.stdout)
+
+    def test_strict_counts_the_fixes_dropped_before_the_filter(self):
+        # Issue 38 D3: "0 dropped values", exit 0. The 3 fixes of 2 inputs each are 6 values.
+        proc, _ = self.runs["strict"]
+        self.assertEqual(proc.returncode, 1, proc.stdout + proc.stderr)
+        self.assertIn("--strict: 0 failed steps, 0 filter resets, 6 dropped values", proc.stderr)
 
     def test_estimates_as_without_the_faulty_fixes(self):
         (proc, faulty), (ref_proc, removed) = self.runs["faulty"], self.runs["removed"]
