@@ -14,9 +14,7 @@ NodeDefinition& NodeDefinition::operator=(NodeDefinition&&) noexcept = default;
 std::string topicTypeClash(const std::string& resolved, const std::string& earlier,
                            const std::string& later) {
   if (earlier == later) return {};
-  return "topic " + resolved +
-         ": two configured topics resolve onto it (a remap?), one read "
-         "as " +
+  return "topic " + resolved + ": two configured topics resolve onto it (a remap?), one read as " +
          earlier + ", the other as " + later + "; a topic holds one message type";
 }
 
