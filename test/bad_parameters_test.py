@@ -3,7 +3,8 @@
 (config/train_kf.h: n = 2 states, m = 2 inputs, KF) is started once per case with one bad
 parameter under its own name; each must be refused at start with exit status 1 and a fatal
 message naming the parameter and what was expected (size or type), and no crash. A control
-case with valid overrides of the same parameters must start and keep running.
+case with valid overrides of the same parameters must start and keep running. A remap of one
+configured topic onto another of another type is refused the same way.
 """
 
 import os
@@ -108,11 +109,28 @@ class BadParametersTest(unittest.TestCase):
     def setUpClass(cls):
         cls.exe = find_executable(EXE_NAME)
 
-    def start(self, name, params):
+    def start(self, name, params, *remaps):
         for key, value in params.items():
             rospy.set_param("/%s/%s" % (name, key), value)
-        return subprocess.Popen([self.exe, "__name:=" + name], stdout=subprocess.PIPE,
-                                stderr=subprocess.PIPE, universal_newlines=True)
+        return subprocess.Popen([self.exe, "__name:=" + name] + list(remaps),
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                universal_newlines=True)
+
+    def test_remap_onto_another_configured_topic_of_another_type_is_refused(self):
+        # Issue 38 D5: checked after resolution, as in the replay: train/velocity (Float64)
+        # remapped onto train/acceleration (Vector3Stamped) would leave one of them nothing.
+        proc = self.start("remapped", {}, "train/velocity:=train/acceleration")
+        try:
+            out, err = proc.communicate(timeout=20)
+        except subprocess.TimeoutExpired:
+            proc.send_signal(signal.SIGINT)
+            proc.communicate(timeout=10)
+            self.fail("the node started with train/velocity remapped onto train/acceleration")
+        self.assertEqual(proc.returncode, 1, out + err)
+        self.assertIn("/remapped: refusing to start: topic /train/acceleration: two configured "
+                      "topics resolve onto it (a remap?), one read as std_msgs/Float64, the "
+                      "other as geometry_msgs/Vector3Stamped; a topic holds one message type",
+                      err)
 
     def test_each_bad_parameter_is_refused_at_start(self):
         for k, (param, value, words) in enumerate(CASES):

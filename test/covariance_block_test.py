@@ -4,9 +4,11 @@ position held still (x0 = 0, P0 = I, Q = 0, header R = 4 I) reads x and y of
 geometry_msgs/PoseWithCovarianceStamped with rows 0 and 1 of pose.covariance. A pose (1, 2)
 with the block [[1, .5], [.5, 1]] must give the update computed by hand (test/kalman_2d.py; the
 correlation moves y to 3.5 / 3.75 = 0.933; without it y would be 1); a second pose whose
-covariance is all zero (ROS's "unknown") must be fused with the header's R = 4 I.
+covariance is all zero (ROS's "unknown") must be fused with the header's R = 4 I; a third whose
+block is asymmetric in the last bit is rounding, fused with the pair's mean.
 """
 
+import math
 import sys
 import unittest
 
@@ -64,6 +66,16 @@ class CovarianceBlockTest(unittest.TestCase):
                         "no second measured period")
         x, P = update(x, P, [2.0, -1.0], [[4.0, 0.0], [0.0, 4.0]])
         self.check(self.measured_after(1)[1], x, P)
+        # Asymmetric in the last bit (0.5 against nextafter(0.5), issue 38 D4: every such
+        # message was dropped as "variance is not finite, positive and at most 1e100"): within
+        # the relative tolerance 1e-9, used with the mean of the pair.
+        upper = math.nextafter(0.5, 1.0)
+        publisher.publish(pose(0.5, 1.5, [[1.0, upper], [0.5, 1.0]]))
+        self.assertTrue(wait_for(lambda: self.measured_after(2), 5.0),
+                        "no third measured period: the rounded block was dropped")
+        mean = (0.5 + upper) / 2
+        x, P = update(x, P, [0.5, 1.5], [[1.0, mean], [mean, 1.0]])
+        self.check(self.measured_after(2)[2], x, P)
 
 
 if __name__ == "__main__":

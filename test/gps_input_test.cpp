@@ -135,4 +135,34 @@ TEST(GpsInput, CovarianceOfEastAndNorthReachesTheSinkTurned) {
   EXPECT_EQ(sink.covarianceFallbacks(kEastInput), 0u);
 }
 
+TEST(GpsInput, AFirstFixNotOnTheEarthIsNotTheDatum) {
+  // Issue 38 D2 through the header's reader: latitude 91 first (was the datum, every later
+  // fix then "not finite"); dropped and counted, the next fix is the datum.
+  const auto d = sf_filter::generated::nodeDefinition();
+  const sf_filter::TopicReader& fix = readerOf(d, "/fix");
+  RecordingSink sink;
+  feed(fix, navSatFix(91.0, 1.0), sink, 0.0);
+  EXPECT_TRUE(sink.values.empty());
+  EXPECT_TRUE(sink.blocks.empty());
+  EXPECT_EQ(sink.gps().implausibleFixes(kEastInput), 1u);
+  EXPECT_EQ(sink.gps().implausibleReason(kNorthInput), "latitude 91 outside [-90, 90] degrees");
+  feed(fix, navSatFix(kLat, 2.0), sink, 0.0);
+  ASSERT_TRUE(sink.gps().datum());
+  EXPECT_EQ(sink.gps().datum()->latitude, kLat);
+  sink.values.clear();
+  sink.blocks.clear();
+  feed(fix, navSatFix(hundredMetresNorth(), 3.0), sink, 0.0);
+  ASSERT_EQ(sink.values.size(), 2u);
+  EXPECT_NEAR(sink.values[1].value, 100.0, 1e-3);  // north, no yaw offset
+}
+
+TEST(GpsInput, TheHeaderGatesTheFixesAtTenSigma) {
+  // Issue 38 D3: the shipped GPS header had no gate, and a 1000 km jump was fused. East and
+  // north are gated at a squared Mahalanobis distance of 100 (10 sigma); the other inputs
+  // are not (infinity: no gate).
+  EXPECT_EQ(sf_config::kGateThresholds[kEastInput], 100.0);
+  EXPECT_EQ(sf_config::kGateThresholds[kNorthInput], 100.0);
+  for (long i = 0; i < kEastInput; ++i) EXPECT_TRUE(std::isinf(sf_config::kGateThresholds[i])) << i;
+}
+
 }  // namespace

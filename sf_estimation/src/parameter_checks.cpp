@@ -24,6 +24,14 @@ void requireSize(const std::string& method, const std::string& name,
   }
 }
 
+bool nearlySymmetric(const Eigen::Ref<const Eigen::MatrixXd>& P) {
+  if (P.rows() != P.cols() || !P.allFinite()) return false;
+  if (P.size() == 0) return true;
+  const double scale = std::max(1.0, P.cwiseAbs().maxCoeff());
+  return P.isApprox(P.transpose(), kSymmetryTolerance) ||
+         (P - P.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale;
+}
+
 void requireCovariance(const std::string& method, const std::string& name,
                        const Eigen::Ref<const Eigen::MatrixXd>& value, Index size, bool strict) {
   requireSize(method, name, value, size, size);
@@ -36,8 +44,7 @@ void requireCovariance(const std::string& method, const std::string& name,
                          ", more than the maximum 1e100 (the filter's products would overflow)");
   }
   const double scale = std::max(1.0, largest);
-  if (!value.isApprox(value.transpose(), 1e-9) &&
-      (value - value.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) {
+  if (!nearlySymmetric(value)) {
     throw ParameterError(method + ": parameter '" + name + "' must be symmetric");
   }
   Eigen::LDLT<Eigen::MatrixXd> ldlt(value);

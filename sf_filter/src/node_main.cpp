@@ -206,8 +206,12 @@ void printGpsCounters(const std::string& name, const sf_filter::MessageSink& sin
     const auto input = static_cast<sf_filter::Index>(i);
     std::cout << name << ": input " << i << " (GPS): " << sink.gps().noFix(i)
               << " fixes dropped without a fix (status < STATUS_FIX), "
-              << sink.covarianceFallbacks(input) << " with an unknown covariance (header R used)"
-              << std::endl;
+              << sink.gps().implausibleFixes(i) << " dropped as not on the Earth"
+              << (sink.gps().implausibleFixes(i)
+                      ? " (newest: " + sink.gps().implausibleReason(i) + ")"
+                      : std::string())
+              << ", " << sink.covarianceFallbacks(input)
+              << " with an unknown covariance (header R used)" << std::endl;
   }
 }
 
@@ -543,7 +547,11 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       }
       const std::uint64_t failures = replay.core().estimationFailures();
       const std::uint64_t resets = replay.core().filterResets();
-      const std::uint64_t unrotated = aligner ? aligner->droppedTotal() : 0;
+      // Values dropped before the core: not rotatable, GPS fixes not on the Earth.
+      std::uint64_t beforeCore = aligner ? aligner->droppedTotal() : 0;
+      for (std::size_t i = 0; i < def.description.inputs.size(); ++i) {
+        beforeCore += replay.gps().implausibleFixes(i);
+      }
       std::cout << options.nodeName << ": " << s.messages << " messages, " << s.estimates
                 << " estimates, " << failures << " failed steps, " << resets << " filter resets, "
                 << s.skippedGaps << " gaps skipped, " << s.dropped << " dropped values (" << late
@@ -573,9 +581,9 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
         return tuneFromEvents(options.nodeName, def, events, maker, parameters, freeEntries, tuning,
                               tunedFile, paramsPath, periodMs, argc, argv);
       }
-      if (strict && (failures > 0 || resets > 0 || s.dropped > 0 || unrotated > 0)) {
+      if (strict && (failures > 0 || resets > 0 || s.dropped > 0 || beforeCore > 0)) {
         std::cerr << program << ": --strict: " << failures << " failed steps, " << resets
-                  << " filter resets, " << s.dropped + unrotated << " dropped values" << std::endl;
+                  << " filter resets, " << s.dropped + beforeCore << " dropped values" << std::endl;
         return EXIT_FAILURE;
       }
     } catch (const std::exception& e) {

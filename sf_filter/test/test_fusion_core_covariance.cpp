@@ -127,23 +127,55 @@ TEST(FusionCoreCovariance, AValueDroppedAloneKeepsTheOtherMessagesCovariance) {
 }
 
 TEST(FusionCoreCovariance, ABlockThatIsNoCovarianceDropsTheMessage) {
-  // |c| > sqrt(vx vy): not positive definite. Both values dropped as bad variances; the
-  // period is a time update only, as for no message.
+  // |c| > sqrt(vx vy): not positive definite; 0.5 against 0.4: not symmetric; a NaN entry.
+  // Both values dropped as a bad covariance, each rejection saying what it is; the period is
+  // a time update only, as for no message.
   Core core = makeCore(AlignmentPolicy::last());
   Collector out;
   core.advanceTo(0.0, out);
   const double a[] = {1.0, 2.0}, bad[] = {1.0, 1.5, 1.5, 1.0}, asymmetric[] = {1.0, 0.5, 0.4, 1.0};
-  EXPECT_EQ(core.addMeasurementBlock(kPose, a, bad, 2, 0.02), Rejection::BadVariance);
-  EXPECT_EQ(core.addMeasurementBlock(kPose, a, asymmetric, 2, 0.03), Rejection::BadVariance);
+  const double notFinite[] = {1.0, NAN, NAN, 1.0};
+  EXPECT_EQ(core.addMeasurementBlock(kPose, a, bad, 2, 0.02), Rejection::IndefiniteCovariance);
+  EXPECT_EQ(core.addMeasurementBlock(kPose, a, asymmetric, 2, 0.03),
+            Rejection::AsymmetricCovariance);
+  EXPECT_EQ(core.addMeasurementBlock(kPose, a, notFinite, 2, 0.04), Rejection::NonFiniteCovariance);
   core.advanceTo(0.1, out);
   Position reference = makePosition();
   reference.estimate(Measurement<2>::missing());
   expectSameBelief(out.estimates.at(0), reference);
   EXPECT_EQ(out.estimates[0].presentInputs, 0);
   for (Index i : kPose) {
-    EXPECT_EQ(core.counters(i).badVariance, 2u);
-    EXPECT_EQ(core.counters(i).received, 2u);
+    EXPECT_EQ(core.counters(i).badCovariance, 3u);
+    EXPECT_EQ(core.counters(i).badVariance, 0u);
+    EXPECT_EQ(core.counters(i).dropped(), 3u);
+    EXPECT_EQ(core.counters(i).received, 3u);
+    EXPECT_EQ(sf_filter::dropReasons(core.counters(i)), "3 bad covariance");
   }
+  EXPECT_STREQ(sf_filter::toString(Rejection::AsymmetricCovariance),
+               "covariance block is not symmetric (relative asymmetry above 1e-9)");
+}
+
+TEST(FusionCoreCovariance, ABlockAsymmetricByRoundingIsUsedSymmetrised) {
+  // Issue 38 D4: 0.5 against nextafter(0.5) dropped every message as "variance is not
+  // finite, positive and at most 1e100". A relative asymmetry within
+  // estimation::kSymmetryTolerance is rounding: the block is used with the mean of the pair,
+  // as the filter's own checks accept it. Reference: the symmetric block with that mean.
+  Core core = makeCore(AlignmentPolicy::last());
+  Collector out;
+  core.advanceTo(0.0, out);
+  const double z[] = {1.0, 2.0};
+  const double upper = std::nextafter(0.5, 1.0);
+  const double rounded[] = {1.0, upper, 0.5, 1.0};
+  EXPECT_EQ(core.addMeasurementBlock(kPose, z, rounded, 2, 0.02), Rejection::None);
+  core.advanceTo(0.1, out);
+  Position reference = makePosition();
+  reference.estimate(pose(1.0, 2.0, 1.0, 1.0, 0.5 * (0.5 + upper)));
+  expectSameBelief(out.estimates.at(0), reference);
+  EXPECT_EQ(out.estimates[0].presentInputs, 2);
+  for (Index i : kPose) EXPECT_EQ(core.counters(i).dropped(), 0u);
+  // Just beyond the tolerance (relative 1e-9 of the Frobenius norm sqrt(2.5)): refused.
+  const double beyond[] = {1.0, 0.5 + 3e-9, 0.5, 1.0};
+  EXPECT_EQ(core.addMeasurementBlock(kPose, z, beyond, 2, 0.12), Rejection::AsymmetricCovariance);
 }
 
 TEST(FusionCoreCovariance, SubstitutesCarryNoCovariance) {

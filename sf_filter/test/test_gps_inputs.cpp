@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -166,6 +167,92 @@ TEST(GpsInputs, MissingAltitudeAndPosition) {
   // A position that is not finite gives NaN (the fusion core drops and counts it).
   EXPECT_TRUE(std::isnan(gps.sample(0, kEast, fix(nan, kLon, kAlt))->value));
   EXPECT_TRUE(std::isnan(gps.sample(0, kEast, fix(kLat, INFINITY, kAlt))->value));
+}
+
+TEST(GpsInputs, PositionsNotOnTheEarthAreNamed) {
+  using sf_filter::gps::implausible;
+  // The bounds belong to the ranges; a NaN altitude ("no altitude") is the caller's.
+  EXPECT_EQ(implausible(90.0, -180.0, -1e4), "");
+  EXPECT_EQ(implausible(-90.0, 180.0, 1e5), "");
+  EXPECT_EQ(implausible(kLat, kLon, std::nan("")), "");
+  EXPECT_EQ(implausible(91.0, kLon, kAlt), "latitude 91 outside [-90, 90] degrees");
+  EXPECT_EQ(implausible(-100.0, 500.0, kAlt), "latitude -100 outside [-90, 90] degrees");
+  EXPECT_EQ(implausible(kLat, 500.0, kAlt), "longitude 500 outside [-180, 180] degrees");
+  EXPECT_EQ(implausible(kLat, kLon, 1e30), "altitude 1e+30 outside [-1e4, 1e5] m");
+  EXPECT_EQ(implausible(kLat, kLon, -2e4), "altitude -20000 outside [-1e4, 1e5] m");
+  EXPECT_EQ(implausible(std::nan(""), kLon, kAlt), "latitude nan outside [-90, 90] degrees");
+}
+
+TEST(GpsInputs, AFirstFixNotOnTheEarthIsDroppedAndTheNextIsTheDatum) {
+  // Issue 38 D2: latitude 91 became the datum, and every later fix was then "not finite".
+  for (const Fix& bad : {fix(91.0, kLon, kAlt), fix(-100.0, 500.0, kAlt), fix(kLat, 500.0, kAlt),
+                         fix(kLat, kLon, 1e30)}) {
+    GpsInputs gps;
+    EXPECT_FALSE(gps.sample(3, kEast, bad));
+    EXPECT_FALSE(gps.sample(4, kNorth, bad));
+    EXPECT_FALSE(gps.datum());
+    EXPECT_EQ(gps.implausibleFixes(3), 1u);
+    EXPECT_EQ(gps.implausibleFixes(4), 1u);
+    EXPECT_EQ(gps.implausibleReason(4),
+              sf_filter::gps::implausible(bad.latitude, bad.longitude, bad.altitude));
+    EXPECT_EQ(gps.noFix(3), 0u);
+    // The next plausible fix is the datum: 0 there, 100 m north of it 100 m.
+    EXPECT_NEAR(gps.sample(4, kNorth, fix(kLat, kLon, kAlt))->value, 0.0, 1e-9);
+    ASSERT_TRUE(gps.datum());
+    EXPECT_EQ(gps.datum()->latitude, kLat);
+    EXPECT_EQ(gps.datum()->altitude, kAlt);
+    EXPECT_NEAR(gps.sample(4, kNorth, fix(north(kLat, 100.0, kAlt), kLon, kAlt))->value, 100.0,
+                1e-3);
+  }
+}
+
+TEST(GpsInputs, LaterFixesNotOnTheEarthAreDroppedAndCounted) {
+  // Issue 38 D3: longitude 500 was wrapped to 140 (5.6e6 m away) and used, altitude 1e30
+  // drove the pose to 1e38 m. Each is dropped and counted; a plausible fix still works.
+  GpsInputs gps;
+  gps.sample(0, kEast, fix(kLat, kLon, kAlt));
+  EXPECT_FALSE(gps.sample(0, kEast, fix(kLat, 500.0, kAlt)));
+  EXPECT_FALSE(gps.sample(0, kEast, fix(kLat, kLon, 1e30)));
+  EXPECT_FALSE(gps.sample(0, kEast, fix(kLat, kLon, -1e30)));
+  EXPECT_EQ(gps.implausibleFixes(0), 3u);
+  EXPECT_EQ(gps.implausibleReason(0), "altitude -1e+30 outside [-1e4, 1e5] m");
+  EXPECT_EQ(gps.datum()->longitude, kLon);
+  EXPECT_NEAR(gps.sample(0, kEast, fix(kLat, kLon, kAlt))->value, 0.0, 1e-9);
+}
+
+TEST(GpsInputs, KnownCovarianceAsymmetricByRoundingIsSymmetrisedAFaultIsKept) {
+  // One rule for every covariance the node reads (estimation::kSymmetryTolerance): an
+  // asymmetry in the last bit is rounding, made exact; 0.5 against 0.4 is a fault, kept
+  // (turned alike) so that the fusion core refuses the fix's block as not symmetric.
+  GpsInputs gps;
+  GpsOptions options;
+  options.yawOffset = kPi / 6;
+  gps.setOptions(options);
+  Fix f = fix(kLat, kLon, kAlt, 1, 3);
+  f.covariance = {1.0, 0.5, 0.0, std::nextafter(0.5, 1.0), 2.0, 0.0, 0.0, 0.0, 3.24};
+  std::array<double, 9> odom = *gps.odomCovariance(f);
+  EXPECT_EQ(odom[1], odom[3]);
+  const double c = std::sqrt(3.0) / 2, s = 0.5;
+  EXPECT_NEAR(odom[1], c * s + 0.25, 1e-12);  // as CovarianceBetweenAxesByType
+  f.covariance[3] = 0.4;
+  odom = *gps.odomCovariance(f);
+  // Rot C Rot^T of the asymmetric C: the antisymmetric part (0.05 [[0, 1], [-1, 0]]) is
+  // unchanged by a rotation, so xy - yx = 0.5 - 0.4.
+  EXPECT_NEAR(odom[1] - odom[3], 0.1, 1e-12);
+  EXPECT_NEAR(odom[1] + odom[3], 2 * (c * s + 0.225), 1e-12);
+}
+
+TEST(GpsInputs, AnUndefinedCovarianceTypeGetsItsDiagonal) {
+  // NavSatFix defines types 0 to 3; any other (255, say) is treated as DIAGONAL_KNOWN: the
+  // variances are used, the entries off the diagonal are not (doc/configuration.md, "GPS").
+  GpsInputs gps;
+  Fix f = fix(kLat, kLon, kAlt, 1, 255);
+  f.covariance = {1.0, 0.5, 0.0, 0.5, 2.0, 0.0, 0.0, 0.0, 3.24};
+  const std::array<double, 9> odom = *gps.odomCovariance(f);
+  EXPECT_EQ(odom, (std::array<double, 9>{1.0, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 3.24}));
+  const GpsSample x = *gps.sample(0, kEast, f);
+  EXPECT_EQ(*x.variance, 1.0);
+  EXPECT_FALSE(x.covarianceUnknown);
 }
 
 }  // namespace

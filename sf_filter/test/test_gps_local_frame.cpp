@@ -139,14 +139,24 @@ TEST(LocalFrame, CovarianceTurnsWithTheYawOffset) {
   EXPECT_NEAR(v[4], 1.0, 1e-12);
   EXPECT_NEAR(v[1], 1.5, 1e-12);
   // Up's covariances turn with the horizontal axes: at a quarter turn x = north, y = -east.
-  // An unsymmetric input is taken as its symmetric part (east-north (1 + 2) / 2 = 1.5).
-  const std::array<double, 9> withUp{1, 1, 0.3, 2, 4, 0.6, 0.3, 0.6, 9};
+  // An input asymmetric by rounding (east-north 1.5 against nextafter(1.5)) is taken as its
+  // symmetric part, exactly symmetric.
+  const double rounded = std::nextafter(1.5, 2.0);
+  const std::array<double, 9> withUp{1, 1.5, 0.3, rounded, 4, 0.6, 0.3, 0.6, 9};
   v = LocalFrame(Datum{}, kPi / 2).odomCovariance(withUp);
   EXPECT_NEAR(v[2], 0.6, 1e-12);   // x z = north up
   EXPECT_NEAR(v[5], -0.3, 1e-12);  // y z = -east up
   EXPECT_NEAR(v[1], -1.5, 1e-12);  // x y = -north east
+  EXPECT_EQ(v[1], v[3]);
   EXPECT_EQ(v[2], v[6]);
   EXPECT_EQ(v[5], v[7]);
+  // Beyond the one relative tolerance (estimation::kSymmetryTolerance) an asymmetric input is
+  // a fault, not rounding: turned as it is (east-north 1, north-east 2), so that the fusion
+  // core refuses it as not symmetric (issue 38: it was symmetrised silently).
+  const std::array<double, 9> asymmetric{1, 1, 0.3, 2, 4, 0.6, 0.3, 0.6, 9};
+  v = LocalFrame(Datum{}, kPi / 2).odomCovariance(asymmetric);
+  EXPECT_NEAR(v[1], -2.0, 1e-12);  // x y = cov(north, -east)
+  EXPECT_NEAR(v[3], -1.0, 1e-12);  // y x = cov(-east, north)
 }
 
 }  // namespace

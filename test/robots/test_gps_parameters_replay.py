@@ -6,7 +6,8 @@ config/husky_skid_steer_gps.h:
     every GPS value by 100 m and the estimates' y towards it;
   - ~gps_yaw_offset turns the fixes: the GPS values of a quarter turn are the default's
     turned (x = north, y = -east), visible in the final estimate;
-  - a malformed or implausible value is refused with one line naming the parameter.
+  - a malformed or implausible value is refused with one line naming the parameter and the
+    coordinate (the same check as every fix's, gps::implausible: issue 38 D2).
 The executable comes from $SF_LIB_DIR or the sourced devel space (skipped when not built).
 """
 
@@ -44,13 +45,13 @@ class GpsParametersReplay(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
-    def replay(self, yaml_text, name):
+    def replay(self, yaml_text, name, *extra):
         params = os.path.join(self.tmp.name, name + ".yaml")
         with open(params, "w") as f:
             f.write(yaml_text)
         csv_path = os.path.join(self.tmp.name, name + ".csv")
         proc = subprocess.run([self.exe, "--replay", HUSKY_BAG, "--csv", csv_path, "--params",
-                               params], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               params] + list(extra), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                               universal_newlines=True, timeout=120)
         rows = read_rows(csv_path) if proc.returncode == 0 else None
         return proc, rows
@@ -64,12 +65,17 @@ class GpsParametersReplay(unittest.TestCase):
         for a, b in zip(same, default):
             self.assertAlmostEqual(a["x0"], b["x0"], places=6)  # the datum written to 1e-12 deg
             self.assertAlmostEqual(a["x1"], b["x1"], places=6)  # the datum written to 1e-12 deg
-        _, shifted = self.replay("datum: [%.12f, %.12f, %.6f]\n" % (south(lat, 100.0, alt), lon,
-                                                                   alt), "south")
+        south_datum = "datum: [%.12f, %.12f, %.6f]\n" % (south(lat, 100.0, alt), lon, alt)
+        proc, shifted = self.replay(south_datum, "south", "--gate", "3=0", "--gate", "4=0")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
         # Every fix is now 100 m further north: the estimate's y is pulled north by the first
-        # fused fix already, and ends far north of the default's.
+        # fused fix already, and ends far north of the default's. (Without the header's gate:
+        # the start is still at the odom origin with P0 = 0 on x and y, so to the filter a fix
+        # 100 m away is a jump no motion allows, and the gate refuses every one; below.)
         self.assertGreater(shifted[-1]["x1"] - default[-1]["x1"], 50.0)
         self.assertLess(abs(shifted[-1]["x0"] - default[-1]["x0"]), 50.0)
+        proc, gated = self.replay(south_datum, "south_gated")
+        self.assertIn("input 4: 95 received, 0 used, dropped: none, 95 gated", proc.stdout)
 
     def test_yaw_offset_turns_the_fixes(self):
         _, default = self.replay("{}\n", "default")
@@ -81,7 +87,14 @@ class GpsParametersReplay(unittest.TestCase):
 
     def test_bad_values_are_refused_naming_the_parameter(self):
         for text, expected in (
-                ("datum: [91.0, 7.0, 0.0]\n", "parameter ~datum: latitude must be in [-90, 90]"),
+                ("datum: [91.0, 7.0, 0.0]\n",
+                 "parameter ~datum: latitude 91 outside [-90, 90] degrees"),
+                # Issue 38 D2: an altitude of 1e30 was accepted (the estimate went to 7e13 m).
+                ("datum: [43.0, -79.0, 1.0e30]\n",
+                 "parameter ~datum: altitude 1e+30 outside [-1e4, 1e5] m"),
+                ("datum: [43.0, 500.0, 0.0]\n",
+                 "parameter ~datum: longitude 500 outside [-180, 180] degrees"),
+                ("datum: [43.0, 7.0, .nan]\n", "parameter ~datum: altitude nan is not finite"),
                 ("datum: [43.0, 7.0]\n", "parameter ~datum: expected [latitude, longitude, altitude]"),
                 ("datum: [43.0, 'east', 0.0]\n", "parameter ~datum longitude: expected a number"),
                 ("gps_yaw_offset: 7.0\n", "parameter ~gps_yaw_offset: expected radians in (-2 pi, 2 pi)")):

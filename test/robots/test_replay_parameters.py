@@ -129,6 +129,22 @@ class ReplayParametersTest(unittest.TestCase):
         self.assertEqual(wrong.returncode, 2, wrong.stderr)
         self.assertIn("no configured topic no_such_topic", wrong.stderr.splitlines()[0])
 
+    def test_remap_onto_another_configured_topic_of_another_type(self):
+        # odom (nav_msgs/Odometry) remapped onto imu/data, which the configuration reads as
+        # sensor_msgs/Imu: refused with the type message (the replay read imu/data as Imu
+        # only, the odometry "0 received", exit 0 even with --strict: issue 38 D5).
+        for remap in ("odom:=imu/data", "odom:=/imu/data"):
+            proc, csv = self.replay(self.bag, remap, "--strict")
+            self.assertEqual(proc.returncode, 1, proc.stdout + proc.stderr)
+            self.assertIn("topic /imu/data: two configured topics resolve onto it (a remap?), one "
+                          "read as nav_msgs/Odometry, the other as sensor_msgs/Imu", proc.stderr)
+            self.assertIsNone(csv)
+        # Swapped, each is read from a topic of the other type: the bag's types are refused.
+        swapped, _ = self.replay(self.bag, "odom:=imu/data", "imu/data:=odom")
+        self.assertEqual(swapped.returncode, 1, swapped.stderr)
+        self.assertIn("holds sensor_msgs/Imu, the configuration reads nav_msgs/Odometry",
+                      swapped.stderr)
+
     def test_static_transform_for_a_bag_without_one(self):
         plain, expected = self.replay(self.bag)
         self.assertEqual(plain.returncode, 0, plain.stderr)

@@ -47,13 +47,14 @@ class AbstractKalmanFilter {
   }
 
   /// Replaces the current belief (e.g. after an external re-initialisation); angle states
-  /// are wrapped.
+  /// are wrapped, P (a covariance, requireCovariance) symmetrised.
   void setBelief(const Vector<N>& x, const Matrix<N, N>& P) {
     requireSize(method_, "x", x, stateSize(), 1);
     requireCovariance(method_, "P", P, stateSize(), false);
     x_ = x;
     angleStates_.wrap(x_);
     P_ = P;
+    symmetrize(P_);  // asymmetric by at most kSymmetryTolerance: rounding, made exact
   }
 
   std::string description() const {

@@ -25,9 +25,21 @@ std::string sizeText(Index rows, Index cols);
 void requireSize(const std::string& method, const std::string& name,
                  const Eigen::Ref<const Eigen::MatrixXd>& value, Index rows, Index cols);
 
+/// The relative asymmetry a covariance may have: ||P - P^T|| <= 1e-9 ||P|| (Frobenius norms),
+/// or at most 1e-12 max(1, largest |entry|) in every entry (the rounding of a matrix near 0).
+/// A covariance computed in floating point (a localiser's, a rotated one) is rarely symmetric
+/// to the bit; an asymmetry above this is a fault, not rounding. The one rule of the filters'
+/// parameters and beliefs, and of the fusion node's covariance blocks, GPS fixes and set_pose:
+/// a matrix that passes is used symmetrised (symmetrize below), one that fails is refused.
+constexpr double kSymmetryTolerance = 1e-9;
+
+/// Whether the finite square matrix P is symmetric to kSymmetryTolerance (false for a
+/// non-finite P). Compiled once in the library (src/parameter_checks.cpp).
+bool nearlySymmetric(const Eigen::Ref<const Eigen::MatrixXd>& P);
+
 /// A covariance must be finite with entries of magnitude at most kMaxCovarianceEntry,
-/// symmetric (to a relative tolerance) and positive semi-definite (positive definite when
-/// `strict`, e.g. the measurement noise R, whose inverse the Kalman-type filters use). Each
+/// symmetric (to kSymmetryTolerance, nearlySymmetric) and positive semi-definite (positive definite
+/// when `strict`, e.g. the measurement noise R, whose inverse the Kalman-type filters use). Each
 /// refusal names the method and the matrix. Not a template:
 /// compiled once in the library, whatever the filters' sizes (src/parameter_checks.cpp).
 void requireCovariance(const std::string& method, const std::string& name,

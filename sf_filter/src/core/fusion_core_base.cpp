@@ -8,6 +8,7 @@
 #include <Eigen/Cholesky>
 
 #include <sf_estimation/errors.hpp>
+#include <sf_estimation/parameter_checks.hpp>
 
 #include "sf_filter/core/alignment/input_aligner.hpp"
 #include "sf_filter/core/alignment/input_period.hpp"
@@ -139,6 +140,18 @@ Rejection FusionCoreBase::addMeasurement(Index input, double now, double value,
   return place(input, now, value, variance, stamp, period);
 }
 
+Rejection FusionCoreBase::checkBlock(BlockMatrix& block) {
+  if (!block.allFinite()) return Rejection::NonFiniteCovariance;
+  // Asymmetric by rounding (a localiser's covariance computed in floating point): made exact,
+  // as the library accepts it (estimation::kSymmetryTolerance); beyond that a fault.
+  if (!estimation::nearlySymmetric(block)) return Rejection::AsymmetricCovariance;
+  estimation::symmetrize(block);
+  if (Eigen::LLT<BlockMatrix>(block).info() != Eigen::Success) {
+    return Rejection::IndefiniteCovariance;
+  }
+  return Rejection::None;
+}
+
 Rejection FusionCoreBase::addMeasurementBlock(const Index* inputs, const double* values,
                                               const double* covariance, int count, double now,
                                               double stamp) {
@@ -149,25 +162,19 @@ Rejection FusionCoreBase::addMeasurementBlock(const Index* inputs, const double*
   for (int r = 0; r < count; ++r) {
     if (inputs[r] < 0 || inputs[r] >= inputCount()) return Rejection::UnknownInput;
   }
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxBlockSize, kMaxBlockSize> block(
-      count, count);
-  bool covariant = true;
+  BlockMatrix block(count, count);
   for (int r = 0; r < count; ++r) {
-    for (int c = 0; c < count; ++c) {
-      block(r, c) = covariance[r * count + c];
-      covariant =
-          covariant && std::isfinite(block(r, c)) && block(r, c) == covariance[c * count + r];
-    }
+    for (int c = 0; c < count; ++c) block(r, c) = covariance[r * count + c];
   }
-  covariant = covariant && Eigen::LLT<decltype(block)>(block).info() == Eigen::Success;
-  if (!covariant) {
+  const Rejection why = checkBlock(block);
+  if (why != Rejection::None) {
     for (int r = 0; r < count; ++r) {
       InputCounters& c = counters_[static_cast<std::size_t>(inputs[r])];
       ++c.received;
       c.lastArrival = now;
-      ++c.badVariance;
+      ++c.badCovariance;
     }
-    return Rejection::BadVariance;
+    return why;
   }
   Rejection first = Rejection::None;
   std::array<std::uint64_t, kMaxBlockSize> period{};

@@ -2,15 +2,37 @@
 #include "sf_filter/gps/gps_inputs.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace sf_filter {
 namespace gps {
 
+namespace {
+
+std::string outside(const char* what, double value, const char* band) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%s %g outside %s", what, value, band);
+  return text;
+}
+
+}  // namespace
+
+std::string implausible(double latitude, double longitude, double altitude) {
+  if (!(std::abs(latitude) <= 90.0)) return outside("latitude", latitude, "[-90, 90] degrees");
+  if (!(std::abs(longitude) <= 180.0)) {
+    return outside("longitude", longitude, "[-180, 180] degrees");
+  }
+  if (std::isnan(altitude) || (altitude >= kMinAltitude && altitude <= kMaxAltitude)) return {};
+  return outside("altitude", altitude, "[-1e4, 1e5] m");
+}
+
 std::optional<GpsSample> GpsInputs::sample(std::size_t input, int axis, const Fix& fix) {
   if (noFix_.size() <= input) {
     noFix_.resize(input + 1, 0);
     received_.resize(input + 1, false);
+    implausible_.resize(input + 1, 0);
+    implausibleReason_.resize(input + 1);
   }
   received_[input] = true;
   if (fix.status < kStatusFix) {
@@ -20,6 +42,12 @@ std::optional<GpsSample> GpsInputs::sample(std::size_t input, int axis, const Fi
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   if (!std::isfinite(fix.latitude) || !std::isfinite(fix.longitude)) {
     return GpsSample{kNaN, std::nullopt, false};  // dropped by the core as not finite
+  }
+  std::string reason = implausible(fix.latitude, fix.longitude, fix.altitude);
+  if (!reason.empty()) {
+    ++implausible_[input];
+    implausibleReason_[input] = std::move(reason);
+    return std::nullopt;  // nor the datum: the next plausible fix is
   }
   if (!frame_) {
     Datum datum;

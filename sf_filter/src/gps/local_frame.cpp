@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstddef>
 
+#include <Eigen/Core>
 #include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/LocalCartesian.hpp>
+#include <sf_estimation/parameter_checks.hpp>
 
 namespace sf_filter {
 namespace gps {
@@ -29,16 +31,21 @@ std::array<double, 3> LocalFrame::toOdom(const std::array<double, 3>& enu) const
 std::array<double, 9> LocalFrame::odomCovariance(const std::array<double, 9>& cov) const {
   const double c = std::cos(yawOffset_), s = std::sin(yawOffset_);
   const double rot[3][3] = {{c, s, 0.0}, {-s, c, 0.0}, {0.0, 0.0, 1.0}};
+  // Rounding is made exact (S = (C + C^T) / 2); a fault is kept for the fusion core to refuse
+  // (estimation::kSymmetryTolerance, the one rule of every covariance the node reads).
+  const bool symmetric = estimation::nearlySymmetric(Eigen::Map<const Eigen::Matrix3d>(cov.data()));
   std::array<double, 9> out{};
   for (std::size_t a = 0; a < 3; ++a) {
-    for (std::size_t b = a; b < 3; ++b) {
+    for (std::size_t b = symmetric ? a : 0; b < 3; ++b) {
       double sum = 0.0;
       for (std::size_t k = 0; k < 3; ++k) {
         for (std::size_t l = 0; l < 3; ++l) {
-          sum += rot[a][k] * 0.5 * (cov[k * 3 + l] + cov[l * 3 + k]) * rot[b][l];
+          const double entry = symmetric ? 0.5 * (cov[k * 3 + l] + cov[l * 3 + k]) : cov[k * 3 + l];
+          sum += rot[a][k] * entry * rot[b][l];
         }
       }
-      out[a * 3 + b] = out[b * 3 + a] = sum;  // one value for both: the core wants symmetry
+      out[a * 3 + b] = sum;
+      if (symmetric) out[b * 3 + a] = sum;  // one value for both: the core wants symmetry
     }
   }
   return out;

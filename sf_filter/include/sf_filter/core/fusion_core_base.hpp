@@ -46,8 +46,10 @@ class FusionCoreBase {
   static constexpr int kMaxBlockSize = 6;
   /// `count` values of inputs `inputs` read from one message, with the message's covariance
   /// block of them (`covariance`: row-major count x count, the variances on its diagonal).
-  /// A block that is not a covariance (not finite, not symmetric, not positive definite)
-  /// drops every value, counted as a bad variance of each input. Otherwise each value is
+  /// A block that is not a covariance drops every value, counted as a bad covariance of each
+  /// input and returned as what it is: not finite, not symmetric (a relative asymmetry above
+  /// estimation::kSymmetryTolerance; a smaller one is rounding, symmetrised), not positive
+  /// definite. Otherwise each value is
   /// checked and placed as by addMeasurement (one may be dropped alone), and the covariances
   /// between the values placed in one period go with them to the filter, carried through
   /// the period's alignment (AVERAGE: the mean's weights; newest-value policies: only when
@@ -219,6 +221,12 @@ class FusionCoreBase {
     std::unique_ptr<Ring> ring_;
   };
 
+  using BlockMatrix =
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxBlockSize, kMaxBlockSize>;
+  /// Why a message's covariance block is no covariance (None: it is, and is now symmetric to
+  /// the bit): not finite, asymmetric beyond estimation::kSymmetryTolerance, not positive
+  /// definite.
+  static Rejection checkBlock(BlockMatrix& block);
   /// addMeasurement, telling the period the value was placed in.
   Rejection place(Index input, double now, double value, std::optional<double> variance,
                   double stamp, std::uint64_t& period);

@@ -115,6 +115,7 @@ inline HealthStatus inputHealth(const InputOptions& o, const InputInterval& in) 
   s.add("dropped: duplicate stamp", c.duplicate);
   s.add("dropped: future stamp", c.future);
   s.add("dropped: late", c.late);
+  s.add("dropped: bad covariance", c.badCovariance);
   s.add("gated", c.gated);
   s.add("superseded", c.superseded);
   s.add("substituted", c.substituted);

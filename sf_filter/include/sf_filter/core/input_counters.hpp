@@ -23,7 +23,10 @@ enum class Rejection {
   DuplicateStamp,
   FutureStamp,
   TooLate,
-  UnknownInput
+  UnknownInput,
+  NonFiniteCovariance,   ///< a covariance block (addMeasurementBlock) with a non-finite entry
+  AsymmetricCovariance,  ///< ... asymmetric beyond estimation::kSymmetryTolerance
+  IndefiniteCovariance   ///< ... not positive definite
 };
 
 inline const char* toString(Rejection r) {
@@ -46,6 +49,12 @@ inline const char* toString(Rejection r) {
       return "stamped in a period already estimated (later than the maximum measurement lag)";
     case Rejection::UnknownInput:
       return "unknown input index";
+    case Rejection::NonFiniteCovariance:
+      return "covariance block has a non-finite entry";
+    case Rejection::AsymmetricCovariance:
+      return "covariance block is not symmetric (relative asymmetry above 1e-9)";
+    case Rejection::IndefiniteCovariance:
+      return "covariance block is not positive definite";
   }
   return "?";
 }
@@ -60,6 +69,9 @@ struct InputCounters {
   std::uint64_t duplicate = 0;    ///< dropped: stamp equal to the previous one of this input
   std::uint64_t future = 0;       ///< dropped: stamp ahead of the clock by more than allowed
   std::uint64_t late = 0;         ///< dropped: stamp in a period already estimated
+  /// dropped: the message's covariance block is no covariance (not finite, asymmetric beyond
+  /// estimation::kSymmetryTolerance, not positive definite); every value of the message
+  std::uint64_t badCovariance = 0;
   std::uint64_t gated = 0;        ///< values of periods whose value failed the gate
   std::uint64_t superseded = 0;   ///< LAST, SAMPLED: values replaced by a newer one in a period
   std::uint64_t substituted = 0;  ///< periods given a HOLD or FILL substitute (not values)
@@ -75,7 +87,8 @@ struct InputCounters {
   /// Values refused on arrival. received = used + superseded + gated + dropped() + the
   /// values waiting in periods not yet estimated.
   std::uint64_t dropped() const {
-    return nonFinite + badVariance + outOfRange + outOfOrder + duplicate + future + late;
+    return nonFinite + badVariance + outOfRange + outOfOrder + duplicate + future + late +
+           badCovariance;
   }
 };
 
@@ -87,7 +100,8 @@ inline std::string dropReasons(const InputCounters& c) {
                                                            {"out of order", c.outOfOrder},
                                                            {"duplicate stamp", c.duplicate},
                                                            {"future stamp", c.future},
-                                                           {"late", c.late}};
+                                                           {"late", c.late},
+                                                           {"bad covariance", c.badCovariance}};
   std::string text;
   for (const auto& r : reasons) {
     if (r.second == 0) continue;

@@ -87,6 +87,15 @@ struct TopicReader {
                double now) = nullptr;
 };
 
+/// Why two configured topics cannot both resolve (remaps applied) onto topic `resolved`, read
+/// as message types `earlier` and `later`: the type message, empty when the types are the
+/// same (then both read every message). Without the check a remap of odom onto imu/data made
+/// the replay read imu/data as Imu only and the odometry receive nothing. Compiled once in
+/// the core library (sf_filter/src/definition/node_definition.cpp), for the node and the
+/// replay alike.
+std::string topicTypeClash(const std::string& resolved, const std::string& earlier,
+                           const std::string& later);
+
 /// readers.push_back(reader), compiled once in the core library
 /// (sf_filter/src/definition/node_definition.cpp) instead of in every header's unit.
 void appendTopicReader(std::vector<TopicReader>& readers, TopicReader reader);

@@ -35,7 +35,10 @@ class LocalFrame {
 
   /// The covariance in the odom frame (x, y, z; row-major 3x3) of an ENU covariance C (the
   /// order of sensor_msgs/NavSatFix's position_covariance): Rot S Rot^T with S = (C + C^T) / 2
-  /// and Rot the rotation of toOdom. The result is exactly symmetric. Unequal east and north
+  /// and Rot the rotation of toOdom. The result is exactly symmetric. A C asymmetric beyond
+  /// estimation::kSymmetryTolerance is a fault, not rounding: Rot C Rot^T, asymmetric alike
+  /// (the rotation keeps the relative asymmetry), which the fusion core refuses as not
+  /// symmetric like any other covariance block. Unequal east and north
   /// variances get a covariance of x and y from any offset that is not a multiple of pi / 2.
   std::array<double, 9> odomCovariance(const std::array<double, 9>& enuCovariance) const;
 

@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,7 +28,10 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+#include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
 #include <topic_tools/shape_shifter.h>
 
 #include <sf_msgs/SetPose.h>
@@ -106,6 +110,13 @@ class FusionNode final : public MessageSink {
     noFix.count = [this](std::size_t i) { return gps().noFix(i); };
     noFix.reason = [](std::size_t) { return std::string("GPS fix status below STATUS_FIX"); };
     diagnostics_.addLossSource(noFix);
+    // A GPS input's fixes whose position is not on the Earth (gps::implausible).
+    InputLossSource implausibleFix;
+    implausibleFix.count = [this](std::size_t i) { return gps().implausibleFixes(i); };
+    implausibleFix.reason = [this](std::size_t i) {
+      return "GPS fix not on the Earth: " + gps().implausibleReason(i);
+    };
+    diagnostics_.addLossSource(implausibleFix);
     // INPUT_COVARIANCE: messages whose covariance was unknown (all zero, -1 first) used R.
     diagnostics_.addInputValue("covariance unknown, header R used", [this](std::size_t i) {
       const std::uint64_t n = covarianceFallbacks(static_cast<Index>(i));
@@ -123,7 +134,16 @@ class FusionNode final : public MessageSink {
   /// Subscribes the reader's topic as serialized messages; each message of the expected type
   /// is handed to the reader, which gives every used field to measurement() or control().
   /// Messages received before the clock is valid wait for it (the newest ~queue_size of them).
+  /// Throws std::invalid_argument when another reader's topic resolves (remaps applied) onto
+  /// the same topic with another message type (topicTypeClash).
   void subscribe(const TopicReader& reader) {
+    const std::string resolved = nh_.resolveName(reader.topic);
+    const auto known = resolvedTypes_.find(resolved);
+    if (known != resolvedTypes_.end()) {
+      const std::string clash = topicTypeClash(resolved, known->second, reader.datatype);
+      if (!clash.empty()) throw std::invalid_argument(clash);
+    }
+    resolvedTypes_[resolved] = reader.datatype;
     using Event = ros::MessageEvent<topic_tools::ShapeShifter const>;
     const boost::function<void(const Event&)> callback = [this, reader](const Event& event) {
       if (!scheduled_) {
@@ -351,47 +371,98 @@ class FusionNode final : public MessageSink {
 
   /// set_pose, initialpose and ~set_pose: the pose part of the belief (POSE_OUT's x, y,
   /// heading) and its covariance block (x, y, yaw slots of the message's 6 x 6 covariance) are
-  /// replaced. Returns why the pose was refused (the belief then is as it was), empty if set.
-  std::string setPose(const char* topic, const geometry_msgs::PoseWithCovarianceStamped& m) {
-    if (!scheduled_) {
-      ++refusedPoses_;
-      ROS_ERROR("%s: pose refused: the clock does not run yet (use_sim_time, no /clock)", topic);
-      return "the clock does not run yet (use_sim_time, no /clock)";
+  /// replaced, the pose first turned into the odom frame (inOdomFrame). Returns why the pose
+  /// was refused (the belief then is as it was), empty if set. Logged at most once per
+  /// kPoseLogPeriod each, set and refused (a 1 kHz publisher wrote 10 000 lines in 10 s);
+  /// every pose is counted in the diagnostics and the service answers each.
+  std::string setPose(const char* topic, const geometry_msgs::PoseWithCovarianceStamped& given) {
+    geometry_msgs::PoseWithCovarianceStamped m;
+    std::string refused =
+        scheduled_ ? inOdomFrame(given, m) : "the clock does not run yet (use_sim_time, no /clock)";
+    if (refused.empty()) {
+      advance(arrival(ros::Time()));  // the clock now, never before the core's reading
+      refused = replacePose(m);
     }
-    advance(arrival(ros::Time()));  // the clock now, never before the core's reading
+    if (!refused.empty()) {
+      ++refusedPoses_;
+      ROS_ERROR_THROTTLE(kPoseLogPeriod, "%s: pose refused: %s; %llu refused so far", topic,
+                         refused.c_str(), static_cast<unsigned long long>(refusedPoses_));
+      return refused;
+    }
+    ++setPoses_;
+    measured_ = true;  // a pose given by the user is a real pose: odometry and tf follow
+    const auto& p = m.pose.pose.position;
+    const auto& c = m.pose.covariance;
+    ROS_INFO_THROTTLE(kPoseLogPeriod,
+                      "%s: pose set to x %.3f, y %.3f, yaw %.3f in %s (variances %.3g, %.3g, "
+                      "%.3g); %llu so far",
+                      topic, p.x, p.y, yawOf(m), frameId_.c_str(), c[0], c[7], c[35],
+                      static_cast<unsigned long long>(setPoses_));
+    return {};
+  }
+
+  static double yawOf(const geometry_msgs::PoseWithCovarianceStamped& m) {
     const auto& q = m.pose.pose.orientation;
-    const double yaw = sf_config::extractors::eulerAngles({q.x, q.y, q.z, q.w}).yaw;
-    const std::array<double, 3> pose = {m.pose.pose.position.x, m.pose.pose.position.y, yaw};
+    return sf_config::extractors::eulerAngles({q.x, q.y, q.z, q.w}).yaw;
+  }
+
+  /// `given` in the odom frame (~frame_id) into `out`: as it is when its header.frame_id is
+  /// that frame or empty; else turned through tf (rviz publishes initialpose in its fixed
+  /// frame, often map), covariance included (tf2's doTransform). Returns why not, naming
+  /// both frames, when tf has no transform between them; empty on success.
+  std::string inOdomFrame(const geometry_msgs::PoseWithCovarianceStamped& given,
+                          geometry_msgs::PoseWithCovarianceStamped& out) {
+    std::string frame = given.header.frame_id;
+    if (!frame.empty() && frame.front() == '/') frame.erase(0, 1);  // tf1's spelling
+    out = given;
+    if (frame.empty() || frame == frameId_) return {};
+    if (!poseTf_) {
+      poseTf_ = std::make_unique<tf2_ros::Buffer>();
+      poseTfListener_ = std::make_unique<tf2_ros::TransformListener>(*poseTf_, nh_);
+      // Its own thread fills the buffer; wall time, as simulated time may stand still.
+      const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(kPoseTfWait);
+      while (!poseTf_->canTransform(frameId_, frame, ros::Time(0)) &&
+             ros::WallTime::now() < until) {
+        ros::WallDuration(0.01).sleep();
+      }
+    }
+    try {
+      // The newest transform: a pose is given for now, and a map -> odom transform (a
+      // localiser's) is published at a few Hz, rarely at the pose's stamp yet.
+      const geometry_msgs::TransformStamped t =
+          poseTf_->lookupTransform(frameId_, frame, ros::Time(0));
+      tf2::doTransform(given, out, t);
+    } catch (const tf2::TransformException& e) {
+      return "no transform from the pose's frame '" + frame + "' into the odom frame '" + frameId_ +
+             "' (tf: " + e.what() + ")";
+    }
+    return {};
+  }
+
+  /// The pose of `m` (in the odom frame) made the belief's; why not, empty if it was.
+  std::string replacePose(const geometry_msgs::PoseWithCovarianceStamped& m) {
+    const std::array<double, 3> pose = {m.pose.pose.position.x, m.pose.pose.position.y, yawOf(m)};
     const std::array<int, 3> slot = {0, 1, 5};
     Eigen::Matrix3d covariance;
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) covariance(r, c) = m.pose.covariance[slot[r] * 6 + slot[c]];
     }
-    std::string refused;
     if (!(std::isfinite(pose[0]) && std::isfinite(pose[1]) && std::isfinite(pose[2]))) {
-      refused = "the pose's x, y or orientation is not finite";
-    } else if (!covariance.allFinite()) {
-      refused = "the pose's covariance block (x, y, yaw) is not finite";
-    } else {
-      try {
-        if (!core_.setPose(*description_.pose, pose, covariance)) {
-          refused = "the " + description_.method + " cannot be re-initialised";
-        }
-      } catch (const std::exception& e) {
-        refused =
-            std::string("the pose's covariance block (x, y, yaw) is not a covariance: ") + e.what();
+      return "the pose's x, y or orientation is not finite";
+    }
+    if (!withinParameterMagnitude(pose[0]) || !withinParameterMagnitude(pose[1])) {
+      // As ~initial_state: beyond 1e100 a period's products overflow.
+      return "the pose's x or y is not a finite number of magnitude at most 1e100";
+    }
+    if (!covariance.allFinite()) return "the pose's covariance block (x, y, yaw) is not finite";
+    try {
+      if (!core_.setPose(*description_.pose, pose, covariance)) {
+        return "the " + description_.method + " cannot be re-initialised";
       }
+    } catch (const std::exception& e) {
+      return std::string("the pose's covariance block (x, y, yaw) is not a covariance: ") +
+             e.what();
     }
-    if (!refused.empty()) {
-      ++refusedPoses_;
-      ROS_ERROR("%s: pose refused: %s", topic, refused.c_str());
-      return refused;
-    }
-    ++setPoses_;
-    measured_ = true;  // a pose given by the user is a real pose: odometry and tf follow
-    ROS_INFO("%s: pose set to x %.3f, y %.3f, yaw %.3f (variances %.3g, %.3g, %.3g); %llu so far",
-             topic, pose[0], pose[1], pose[2], covariance(0, 0), covariance(1, 1), covariance(2, 2),
-             static_cast<unsigned long long>(setPoses_));
     return {};
   }
 
@@ -487,6 +558,12 @@ class FusionNode final : public MessageSink {
     }
   }
 
+  /// [s] between two log lines of set poses (and of refused ones).
+  static constexpr double kPoseLogPeriod = 1.0;
+  /// [s] a pose in another frame waits for tf's first transform (the listener starts with
+  /// the first such pose, so /tf_static's latched transforms arrive within this).
+  static constexpr double kPoseTfWait = 2.0;
+
   ros::NodeHandle nh_, pnh_;
   NodeDescription description_;
   std::unique_ptr<FusionEngine> engine_;
@@ -511,10 +588,15 @@ class FusionNode final : public MessageSink {
     return it == wrongType_.end() ? none : it->second;
   }
   std::map<std::string, WrongType> wrongType_;  ///< by resolved topic name
+  std::map<std::string, std::string> resolvedTypes_;  ///< subscribed: resolved topic -> type
   std::vector<ros::Subscriber> subscribers_;
   std::vector<ros::Subscriber> setPoseSubscribers_;
   ros::ServiceServer setPoseService_;
   std::uint64_t setPoses_ = 0, refusedPoses_ = 0;
+  /// tf for poses in another frame than the odom frame, started by the first of them (a node
+  /// whose poses come in its own frame does not subscribe /tf).
+  std::unique_ptr<tf2_ros::Buffer> poseTf_;
+  std::unique_ptr<tf2_ros::TransformListener> poseTfListener_;
   std::vector<ros::Publisher> outputs_;
   ros::Publisher state_, odometry_;
   ros::Timer timer_;       ///< the schedule on wall-clock time

@@ -1,8 +1,10 @@
 // The GPS inputs' private parameters (doc/configuration.md, "GPS"), read through a
 // ParameterSource like the node's other parameters (ros_parameters.hpp):
 //   ~datum           [latitude deg, longitude deg, altitude m]: the origin of the local frame;
-//                    not set: the first valid fix. (robot_localization's navsat_transform
-//                    takes [latitude, longitude, heading] under the same name.)
+//                    not set: the first valid fix. Checked like every fix
+//                    (gps::implausible: latitude, longitude and altitude band).
+//                    (robot_localization's navsat_transform takes [latitude, longitude, heading]
+//                    under the same name.)
 //   ~gps_yaw_offset  rad, the heading of the odom frame's x axis in ENU, counter-clockwise
 //                    from east (0: x points east); in (-2 pi, 2 pi).
 #pragma once
@@ -28,11 +30,13 @@ inline gps::GpsOptions loadGpsParameters(const ParameterSource& pnh) {
     const double lat = detail::toDouble(value[0], "parameter ~datum latitude");
     const double lon = detail::toDouble(value[1], "parameter ~datum longitude");
     const double alt = detail::toDouble(value[2], "parameter ~datum altitude");
-    if (!(std::abs(lat) <= 90.0) || !(std::abs(lon) <= 180.0) || !std::isfinite(alt)) {
+    const std::string reason = std::isnan(alt) ? std::string("altitude nan is not finite")
+                                               : gps::implausible(lat, lon, alt);
+    if (!reason.empty()) {
       throw ParameterOverrideError(
-          "parameter ~datum: latitude must be in [-90, 90], longitude in [-180, 180] degrees "
-          "and the altitude finite, found [" +
-          std::to_string(lat) + ", " + std::to_string(lon) + ", " + std::to_string(alt) + "]");
+          "parameter ~datum: " + reason +
+          " (a datum is a place on the Earth: latitude in [-90, 90], longitude in [-180, 180] "
+          "degrees, altitude in [-1e4, 1e5] m)");
     }
     options.datum = gps::Datum{lat, lon, alt};
   }

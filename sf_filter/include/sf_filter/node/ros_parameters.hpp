@@ -114,6 +114,12 @@ inline double numberEntry(const XmlRpc::XmlRpcValue& v, const char* expected) {
 /// products of a period overflow (doc/filter_node.md).
 constexpr double kMaxParameterMagnitude = 1e100;
 
+/// Whether `value` is a finite number of magnitude at most kMaxParameterMagnitude: the bound
+/// of every matrix parameter's entry and of a pose given at run time (set_pose).
+inline bool withinParameterMagnitude(double value) {
+  return std::abs(value) <= kMaxParameterMagnitude;
+}
+
 /// Reads ~name into `out` (rows x cols) when it is set: a flat row-major list of rows*cols
 /// numbers, or a list of rows lists of cols numbers. Returns whether it was set.
 template <class Derived>
@@ -158,7 +164,7 @@ bool readMatrixParameter(const ParameterSource& pnh, const std::string& name,
   }
   for (Eigen::Index r = 0; r < rows; ++r) {
     for (Eigen::Index c = 0; c < cols; ++c) {
-      if (!(std::abs(result(r, c)) <= kMaxParameterMagnitude)) {
+      if (!withinParameterMagnitude(result(r, c))) {
         char text[64];
         std::snprintf(text, sizeof text, "%g", result(r, c));
         throw ParameterOverrideError("parameter ~" + name + " row " + std::to_string(r) +

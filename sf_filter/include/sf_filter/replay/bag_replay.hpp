@@ -108,11 +108,17 @@ class BagReplay final : public MessageSink {
   /// that it can be replayed from memory without the bag.
   void recordEvents(EventLog* events) { events_ = events; }
 
-  /// Registers the reader of one topic, as the online node subscribes it.
+  /// Registers the reader of one topic, as the online node subscribes it. Throws ReplayError
+  /// when another reader's topic is the same (a remap) with another message type.
   void subscribe(const TopicReader& reader) {
     const std::string name = absolute(reader.topic);
+    const auto known = expectedTypes_.find(name);
+    if (known != expectedTypes_.end()) {
+      const std::string clash = topicTypeClash(name, known->second.datatype, reader.datatype);
+      if (!clash.empty()) throw ReplayError(clash);
+    }
     expectedTypes_[name] = {reader.datatype, reader.md5sum};
-    readers_[name] = reader;
+    readers_[name].push_back(reader);
   }
 
   void measurement(Index input, double now, double value, std::optional<double> variance,
@@ -200,7 +206,7 @@ class BagReplay final : public MessageSink {
         const double now = m.getTime().toSec();
         if (events_) events_->clock(now);
         clock_.advance(core_, now, write);
-        read(readers_.at(absolute(m.getTopic())), m, now);
+        for (const TopicReader& reader : readers_.at(absolute(m.getTopic()))) read(reader, m, now);
         ++summary_.messages;
       }
     });
@@ -472,7 +478,8 @@ class BagReplay final : public MessageSink {
   FusionEngine& core_;
   NodeDescription description_;
   ReplayOptions options_;
-  std::map<std::string, TopicReader> readers_;  ///< by absolute topic name
+  /// By absolute topic name: one per configured topic that resolves onto it (remaps).
+  std::map<std::string, std::vector<TopicReader>> readers_;
   ReplayRotation* rotation_ = nullptr;
   std::vector<std::uint8_t> buffer_;  ///< the message being read, serialized
   std::map<std::string, ExpectedType> expectedTypes_;
