@@ -324,8 +324,8 @@ UnscentedKalmanFilter<Unicycle> unicycleFilter(estimation::PredictedMean mean) {
   p.predictedMean = mean;
   const Matrix<4, 4> P0 = Vector<4>(1e-6, 1e-6, 1.0, 1e-6).asDiagonal();
   return UnscentedKalmanFilter<Unicycle>(Unicycle{}, Matrix<4, 4>::Zero(),
-                                         Matrix<1, 1>::Constant(0.01), Vector<4>(0, 0, 0, 1),
-                                         P0, p, estimation::AngularComponents{{2}, {}});
+                                         Matrix<1, 1>::Constant(0.01), Vector<4>(0, 0, 0, 1), P0, p,
+                                         estimation::AngularComponents{{2}, {}});
 }
 
 TEST(UnscentedKalmanFilterPredictedMean, PropagatedMeanKeepsTheStepOfAnUncertainHeading) {

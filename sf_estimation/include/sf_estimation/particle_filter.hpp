@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <utility>
@@ -25,6 +26,7 @@
 #include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/parameter_checks.hpp"
 #include "sf_estimation/particle_filter_steps.hpp"
+#include "sf_estimation/planar_pose_mean.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
 
 namespace estimation {
@@ -38,6 +40,9 @@ struct ParticleFilterParameters {
   /// Resample when N_eff <= threshold * particles, inclusive (0 = never, as N_eff >= 1;
   /// 1 = every step, as N_eff <= particles).
   double resamplingThreshold = 0.5;
+  /// A planar pose in the state (its heading an angle state) whose reported mean is the
+  /// particles' mean on SE(2) (planar_pose_mean.hpp) rather than entry by entry.
+  std::optional<PlanarPoseIndices> planarPose;
 };
 
 template <class Model>
@@ -73,6 +78,11 @@ class ParticleFilterSIR {
     }
     angleStates_ = AngleMask<N>(angles.states, n, method, "state");
     angleMeasurements_ = AngleMask<M>(angles.measurements, R.rows(), method, "measurement");
+    if (params.planarPose) {
+      const PlanarPoseIndices& pose = *params.planarPose;
+      requirePlanarPose(method, pose, n,
+                        pose.heading >= 0 && pose.heading < n && angleStates_(pose.heading));
+    }
     noiseRoot_ = probability::covarianceSquareRoot(Q);
     findNoiseSources();
     const Index m = R.rows(), p = params.particles;
@@ -332,7 +342,8 @@ class ParticleFilterSIR {
   /// strided dot products, and the covariance as one n x p x n product would need the
   /// deviations scaled and stored first, both slower at these sizes.
   /// Angle states: the circular mean atan2(sum w sin, sum w cos) of the particles, and
-  /// deviations from it wrapped to (-pi, pi].
+  /// deviations from it wrapped to (-pi, pi]. A planar pose: the SE(2) mean, from that
+  /// start; the covariance is then the mean square deviation from it.
   void updateMoments() {
     state_.setZero();
     forEachDistinctParticle([&](Index i, double w) { state_ += w * particles_.col(i); });
@@ -346,6 +357,14 @@ class ParticleFilterSIR {
         });
         state_(r) = std::atan2(s, c);
       }
+    }
+    if (params_.planarPose) {
+      planarPoseMean(
+          *params_.planarPose,
+          [&](auto&& f) {
+            forEachDistinctParticle([&](Index i, double w) { f(particles_.col(i), w); });
+          },
+          state_);
     }
     Vector<N> deviation(stateSize()), weighted(stateSize());
     covariance_.setZero();

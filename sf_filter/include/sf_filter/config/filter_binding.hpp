@@ -67,6 +67,15 @@ inline Filter makeFilter(const sf_config::Parameters& p) {
   pf.particles = p.number_of_particles;
   pf.seed = p.random_seed;
   pf.resamplingThreshold = p.resampling_threshold;
+#if defined(POSE_OUT)
+  // A published pose whose heading is an angle: its mean over the particles is taken on SE(2),
+  // where poses spread along an arc average to a point of the arc (planar_pose_mean.hpp).
+  if (sf_config::kAngleStates[BOOST_PP_SEQ_ELEM(2, POSE_OUT)]) {
+    pf.planarPose = estimation::PlanarPoseIndices{BOOST_PP_SEQ_ELEM(0, POSE_OUT),
+                                                  BOOST_PP_SEQ_ELEM(1, POSE_OUT),
+                                                  BOOST_PP_SEQ_ELEM(2, POSE_OUT)};
+  }
+#endif
   return Filter(model, p.process_noise_covariance, p.measurement_noise_covariance, p.initial_state,
                 p.initial_error_covariance, pf, angularComponents());
 }
