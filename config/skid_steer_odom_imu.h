@@ -40,9 +40,11 @@
 //   never taken for bias. It starts at P0 = (0.005 rad/s)^2: the header assumes a gyro
 //   whose turn-on bias was removed by its driver or by a few seconds at rest, because a
 //   bias that is uncertain and cannot be observed (a robot that never stops) makes the
-//   heading's variance grow with t^2, and the UKF's and PF's averages over a wide heading
-//   distribution shorten every step of the track (issue 13: the UKF contracted a real
-//   track to half). Raise it for a cold gyro that stands still at start.
+//   heading's variance grow with t^2. The UKF takes its predicted mean as f of the mean
+//   (UKF_PROPAGATED_MEAN, on with ANGLE_STATES; doc/manifolds.md), so a wide heading no
+//   longer shortens its steps as the sigma points' average did (issue 13: that UKF
+//   contracted a real track to half); the particle filter's pose mean is taken on SE(2).
+//   Raise it for a cold gyro that stands still at start.
 // - Position does not jump. Nothing measures x, y or theta; they are integrated from the
 //   velocities of the previous period's estimate (the state transition below uses x[3],
 //   x[4] of the last a posteriori estimate). A Kalman update moves a state only through its
