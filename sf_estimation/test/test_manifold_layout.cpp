@@ -1,15 +1,18 @@
 // State layouts (manifold/state_layout.hpp) and means on them (manifold/mean.hpp): the flat
 // layout against plain arithmetic, round trips of a mixed layout block by block, AutoDiff
 // through [+] and [-] against finite differences, the eigenvector quaternion average against
-// Markley's closed form for two quaternions, and the tangent mean against hand values.
+// Markley's closed form for two quaternions, the tangent mean against hand values, and SE(2)
+// against the matrix exponential of its Lie algebra.
 #include <cmath>
 
 #include <gtest/gtest.h>
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
+#include <unsupported/Eigen/MatrixFunctions>
 
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/manifold/mean.hpp"
+#include "sf_estimation/manifold/se2.hpp"
 #include "sf_estimation/manifold/state_layout.hpp"
 
 namespace {
@@ -175,6 +178,66 @@ TEST(TangentMean, AnglesAcrossPiAndSignedWeights) {
   const double w[] = {1.5, -0.25, -0.25};
   for (int i = 0; i < 3; ++i) residual += w[i] * Attitude::minus<double>(qs.col(i), q);
   EXPECT_LE(residual.norm(), 1e-14);
+}
+
+// The homogeneous 3x3 matrix of a stored pose (theta, x, y).
+Eigen::Matrix3d poseMatrix(const Eigen::Vector3d& x) {
+  Eigen::Matrix3d T = Eigen::Matrix3d::Identity();
+  T.topLeftCorner<2, 2>() = Eigen::Rotation2Dd(x(0)).toRotationMatrix();
+  T.topRightCorner<2, 1>() = x.tail<2>();
+  return T;
+}
+
+// exp of the se(2) element xi = (theta, rho) by Eigen's matrix exponential.
+Eigen::Matrix3d algebraExp(const Eigen::Vector3d& xi) {
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  A(0, 1) = -xi(0);
+  A(1, 0) = xi(0);
+  A.topRightCorner<2, 1>() = xi.tail<2>();
+  return A.exp();
+}
+
+using Pose = StateLayout<mf::Se2Block>;
+
+TEST(Se2Block, BoxPlusIsTheBodyExponential) {
+  const Eigen::Vector3d x(2.5, 1.0, -2.0);
+  for (const Eigen::Vector3d& xi :
+       {Eigen::Vector3d(0.0, 0.3, -0.2), Eigen::Vector3d(1e-9, 1.0, 2.0),
+        Eigen::Vector3d(0.99e-4, -1.0, 0.5), Eigen::Vector3d(1.01e-4, -1.0, 0.5),
+        Eigen::Vector3d(kPi / 2.0, 1.0, 0.0), Eigen::Vector3d(-3.0, 2.0, 1.0)}) {
+    const Eigen::Vector3d y = Pose::plus<double>(x, xi);
+    const Eigen::Matrix3d expected = poseMatrix(x) * algebraExp(xi);
+    EXPECT_LE((poseMatrix(y) - expected).cwiseAbs().maxCoeff(), 1e-14) << xi.transpose();
+    EXPECT_LE((Pose::minus<double>(y, x) - xi).norm(), 1e-13) << xi.transpose();
+  }
+  // By hand: a quarter turn at heading pi / 2 with rho = (1, 0): V rho = (2 / pi, 2 / pi),
+  // rotated by pi / 2 to (-2 / pi, 2 / pi).
+  const Eigen::Vector3d y = Pose::plus<double>(Eigen::Vector3d(kPi / 2.0, 1.0, 2.0),
+                                               Eigen::Vector3d(kPi / 2.0, 1.0, 0.0));
+  EXPECT_NEAR(y(0), kPi, 1e-15);
+  EXPECT_NEAR(y(1), 1.0 - 2.0 / kPi, 1e-15);
+  EXPECT_NEAR(y(2), 2.0 + 2.0 / kPi, 1e-15);
+}
+
+TEST(Se2Block, AutoDiffJacobianAgainstFiniteDifferences) {
+  using Ad = Eigen::AutoDiffScalar<Eigen::Vector3d>;
+  const Eigen::Vector3d x(3.0, 1.0, -2.0), x0(-2.9, 0.5, 0.3);
+  for (const Eigen::Vector3d& d0 :
+       {Eigen::Vector3d::Zero().eval(), Eigen::Vector3d(0.4, -1.0, 0.7)}) {
+    Pose::Tangent<Ad> d;
+    for (int i = 0; i < 3; ++i) d(i) = Ad(d0(i), 3, i);
+    const Pose::Tangent<Ad> g = Pose::minus<Ad>(Pose::plus<Ad>(x.cast<Ad>(), d), x0.cast<Ad>());
+    Eigen::Matrix3d J, Jfd;
+    for (int i = 0; i < 3; ++i) J.row(i) = g(i).derivatives().transpose();
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Vector3d e = 1e-6 * Eigen::Vector3d::Unit(j);
+      Jfd.col(j) = (Pose::minus<double>(Pose::plus<double>(x, d0 + e), x0) -
+                    Pose::minus<double>(Pose::plus<double>(x, d0 - e), x0)) /
+                   2e-6;
+    }
+    ASSERT_TRUE(J.allFinite());
+    EXPECT_LE((J - Jfd).cwiseAbs().maxCoeff(), 1e-8) << J << "\n\n" << Jfd;
+  }
 }
 
 }  // namespace

@@ -18,7 +18,9 @@
 #include <string>
 #include <vector>
 
+#include "../support/allocation_counter.hpp"
 #include "sf_estimation/extended_kalman_filter.hpp"
+#include "sf_estimation/manifold/se2.hpp"
 #include "sf_estimation/manifold/state_layout.hpp"
 #include "sf_estimation/manifold_extended_kalman_filter.hpp"
 #include "sf_estimation/manifold_unscented_kalman_filter.hpp"
@@ -43,62 +45,6 @@ const Vector<3> kOdometrySigma(0.01, 0.01, 1.0 * kDeg);
 constexpr double kGpsSigma = 1.0;
 constexpr double kHeadingSigma0 = 45.0 * kDeg;
 
-template <class S>
-Eigen::Matrix<S, 2, 1> rotate2(const S& theta, const Eigen::Matrix<S, 2, 1>& v) {
-  using std::cos;
-  using std::sin;
-  return Eigen::Matrix<S, 2, 1>(cos(theta) * v(0) - sin(theta) * v(1),
-                                sin(theta) * v(0) + cos(theta) * v(1));
-}
-
-/// SE(2) with the right (body) perturbation, ukfm's "left SE(2) UKF": stored (theta, x, y),
-/// chi [+] xi = chi exp(xi): theta + xi_theta, p + R(theta) V(xi_theta) rho. Kept in the
-/// benchmark: the library ships SO(2), SO(3) and vector blocks only.
-struct Se2Block {
-  static constexpr int StoredSize = 3, TangentSize = 3;
-  static constexpr bool IsFlat = false;
-  static constexpr const char* Name = "Se2Block";
-  /// V(t) = [s -c; c s], s = sin t / t, c = (1 - cos t) / t (series below 1e-4 rad).
-  template <class S>
-  static void vCoefficients(const S& t, S& s, S& c) {
-    using std::cos;
-    using std::sin;
-    if (std::abs(mf::scalarValue(t)) < 1e-4) {
-      s = S(1.0) - t * t / 6.0;
-      c = t / 2.0 - t * t * t / 24.0;
-    } else {
-      s = sin(t) / t;
-      c = (S(1.0) - cos(t)) / t;
-    }
-  }
-  template <class X, class D, class Out>
-  static void plus(const X& x, const D& d, Out&& out) {
-    using S = typename std::decay_t<Out>::Scalar;
-    S s, c;
-    vCoefficients<S>(d(0), s, c);
-    const Eigen::Matrix<S, 2, 1> vRho(s * d(1) - c * d(2), c * d(1) + s * d(2));
-    out(0) = mf::so2Plus<S>(x(0), d(0));
-    out.template tail<2>() = x.template tail<2>() + rotate2<S>(x(0), vRho);
-  }
-  template <class Y, class X, class Out>
-  static void minus(const Y& y, const X& x, Out&& out) {
-    using S = typename std::decay_t<Out>::Scalar;
-    const S dTheta = mf::so2Minus<S>(y(0), x(0));
-    const Eigen::Matrix<S, 2, 1> dp = y.template tail<2>() - x.template tail<2>();
-    const Eigen::Matrix<S, 2, 1> t = rotate2<S>(S(-x(0)), dp);
-    S s, c;
-    vCoefficients<S>(dTheta, s, c);
-    const S det = s * s + c * c;
-    out(0) = dTheta;
-    out(1) = (s * t(0) + c * t(1)) / det;
-    out(2) = (-c * t(0) + s * t(1)) / det;
-  }
-  template <class X>
-  static void normalise(X&& x) {
-    x(0) = mf::wrap(x(0));
-  }
-};
-
 /// ukfm's LOCALIZATION model: u = (v_x, v_y, gyro) in the body frame, noise w on u.
 template <class Space>
 struct Localization {
@@ -110,7 +56,7 @@ struct Localization {
                   const Eigen::Matrix<S, 3, 1>& w, Eigen::Matrix<S, 3, 1>& next) const {
     const Eigen::Matrix<S, 2, 1> v = u.head<2>().cast<S>() + w.template head<2>();
     next(0) = mf::so2Plus<S>(x(0), (S(u(2)) + w(2)) * kDt2);
-    next.template tail<2>() = x.template tail<2>() + rotate2<S>(x(0), v) * kDt2;
+    next.template tail<2>() = x.template tail<2>() + mf::rotate2<S>(x(0), v) * kDt2;
   }
   template <class S>
   void observation(const Eigen::Matrix<S, 3, 1>& x, Eigen::Matrix<S, 2, 1>& z) const {
@@ -129,7 +75,8 @@ struct FlatLocalization {
   void transition(const Eigen::Matrix<S, 3, 1>& x, const Vector<3>& u,
                   Eigen::Matrix<S, 3, 1>& next) const {
     next(0) = x(0) + S(u(2) * kDt2);
-    next.template tail<2>() = x.template tail<2>() + rotate2<S>(x(0), u.head<2>().cast<S>()) * kDt2;
+    next.template tail<2>() =
+        x.template tail<2>() + mf::rotate2<S>(x(0), u.head<2>().cast<S>()) * kDt2;
   }
   template <class S>
   void observation(const Eigen::Matrix<S, 3, 1>& x, Eigen::Matrix<S, 2, 1>& z) const {
@@ -173,7 +120,8 @@ struct Scores {
   double headingSquares = 0.0, positionSquares = 0.0;
   double headingNees = 0.0, positionNees = 0.0;
   long count = 0, neesCount = 0;
-  int failures = 0;  // runs a filter refused a step of (excluded)
+  int failures = 0;             // runs a filter refused a step of (excluded)
+  std::size_t allocations = 0;  // heap allocations inside the filter steps
 
   void add(int n, const Vector<3>& truth, const Vector<3>& estimate, const Matrix<3, 3>& P,
            double positionRotation) {
@@ -191,9 +139,10 @@ struct Scores {
     ++neesCount;
   }
   void print() const {
-    std::printf("  %-34s %8.2f %8.2f %10.2f %10.2f %5d\n", name.c_str(),
+    std::printf("  %-34s %8.2f %8.2f %10.2f %10.2f %5d %11.3f\n", name.c_str(),
                 std::sqrt(headingSquares / count) / kDeg, std::sqrt(positionSquares / count),
-                headingNees / neesCount, positionNees / neesCount, failures);
+                headingNees / neesCount, positionNees / neesCount, failures,
+                static_cast<double>(allocations) / count);
   }
 };
 
@@ -203,8 +152,10 @@ void runManifold2D(Filter& filter, const Run2D& run, bool se2, Scores& scores) {
   Scores local = scores;
   try {
     for (int n = 0; n < kSteps2; ++n) {
+      const std::size_t before = sf_bench::heapAllocations();
       if (n > 0) filter.predict(run.controls[n - 1]);
       if (n > 0 && n % kGpsEvery == 0) filter.update(run.gps[n / kGpsEvery]);
+      local.allocations += sf_bench::heapAllocations() - before;
       local.add(n, run.truth[n], filter.state(), filter.covariance(),
                 se2 ? filter.state()(0) : 0.0);
     }
@@ -222,10 +173,13 @@ void runFlat2D(Filter& filter, const Run2D& run, Scores& scores) {
   try {
     for (int n = 0; n < kSteps2; ++n) {
       if (n > 0) {
+        const auto z = n % kGpsEvery == 0
+                           ? estimation::Measurement<2>::complete(run.gps[n / kGpsEvery])
+                           : estimation::Measurement<2>::missing();
+        const std::size_t before = sf_bench::heapAllocations();
         filter.setControl(run.controls[n - 1]);
-        filter.estimate(n % kGpsEvery == 0
-                            ? estimation::Measurement<2>::complete(run.gps[n / kGpsEvery])
-                            : estimation::Measurement<2>::missing());
+        filter.estimate(z);
+        local.allocations += sf_bench::heapAllocations() - before;
       }
       local.add(n, run.truth[n], filter.state(), filter.covariance(), 0.0);
     }
@@ -238,7 +192,7 @@ void runFlat2D(Filter& filter, const Run2D& run, Scores& scores) {
 
 void benchmark2D(int runs, unsigned seed) {
   using So2Space = mf::StateLayout<mf::So2Block, mf::VectorBlock<2>>;
-  using Se2Space = mf::StateLayout<Se2Block>;
+  using Se2Space = mf::StateLayout<mf::Se2Block>;
   std::vector<Scores> scores(6);
   const char* names[] = {"flat UKF (UnscentedKalmanFilter)",
                          "flat EKF (ExtendedKalmanFilter)",
@@ -280,8 +234,8 @@ void benchmark2D(int runs, unsigned seed) {
       "2D wheeled-robot localization, %d runs (ukfm: flat-state UKF 0.75 m / NEES 49, "
       "EKF 0.76 m / 275, SE(2) UKF 0.45 m / 1.0)\n",
       runs);
-  std::printf("  %-34s %8s %8s %10s %10s %5s\n", "filter", "head deg", "pos m", "NEES head",
-              "NEES pos", "fail");
+  std::printf("  %-34s %8s %8s %10s %10s %5s %11s\n", "filter", "head deg", "pos m", "NEES head",
+              "NEES pos", "fail", "allocs/step");
   for (const Scores& s : scores) s.print();
 }
 
@@ -349,6 +303,7 @@ struct Scores3D {
   double squares = 0.0, nees = 0.0;
   long count = 0, neesCount = 0;
   int failures = 0;
+  std::size_t allocations = 0;
 };
 
 template <class Filter>
@@ -357,8 +312,10 @@ void run3D(Filter& filter, const Run3D& run, Scores3D& scores) {
   try {
     for (int n = 0; n < kSteps3; ++n) {
       if (n > 0) {
+        const std::size_t before = sf_bench::heapAllocations();
         filter.predict(run.gyro[n - 1]);
         filter.update(run.measurements[n]);
+        local.allocations += sf_bench::heapAllocations() - before;
       }
       // Body-frame error: truth = estimate [+] e.
       const Vector<3> e = Attitude::StateSpace::minus<double>(run.truth[n], filter.state());
@@ -391,10 +348,12 @@ void benchmark3D(int runs, unsigned seed) {
     run3D(e, run, ekf);
   }
   std::printf("\n3D attitude, %d runs (ukfm: RMSE 1.05 deg per axis, NEES about 1)\n", runs);
-  std::printf("  %-34s %12s %8s %5s\n", "filter", "RMSE deg/axis", "NEES", "fail");
+  std::printf("  %-34s %12s %8s %5s %11s\n", "filter", "RMSE deg/axis", "NEES", "fail",
+              "allocs/step");
   for (const Scores3D* s : {&ukf, &ekf}) {
-    std::printf("  %-34s %12.3f %8.2f %5d\n", s->name.c_str(),
-                std::sqrt(s->squares / s->count) / kDeg, s->nees / s->neesCount, s->failures);
+    std::printf("  %-34s %12.3f %8.2f %5d %11.3f\n", s->name.c_str(),
+                std::sqrt(s->squares / s->count) / kDeg, s->nees / s->neesCount, s->failures,
+                static_cast<double>(s->allocations) / s->count);
   }
 }
 

@@ -58,7 +58,6 @@ Quaternion<Scalar> so3Exp(const Vector3<Scalar>& phi) {
 /// normalised self. At exactly pi, phi and -phi are the same rotation; either may be returned.
 template <class Scalar>
 Vector3<Scalar> so3Log(const Quaternion<Scalar>& q) {
-  using std::atan2;
   using std::sqrt;
   Scalar w = q.w();
   Vector3<Scalar> v = q.vec();
@@ -74,7 +73,7 @@ Vector3<Scalar> so3Log(const Quaternion<Scalar>& q) {
     return v * (Scalar(2.0) / w * (Scalar(1.0) - r / 3.0 + r * r / 5.0));
   }
   const Scalar n = sqrt(n2);
-  return v * (Scalar(2.0) * atan2(n, w) / n);
+  return v * (Scalar(2.0) * atan2Scalar(n, w) / n);
 }
 
 /// a b: first b, then a (in the body frame of a).
