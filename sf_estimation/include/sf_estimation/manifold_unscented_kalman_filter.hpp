@@ -162,8 +162,7 @@ class ManifoldUnscentedKalmanFilter : public manifold::ManifoldFilterBase<Model>
  private:
   /// The 2 D tangent sigma points +-spread * S_j, S S^T = P (P may be singular: a state known
   /// exactly). Throws NumericalError for an indefinite P.
-  void sigmaPoints(const Covariance& P, const manifold::SigmaWeights& w,
-                   Matrix<D, 2 * D>& xis) const {
+  void sigmaPoints(const Covariance& P, const manifold::SigmaWeights& w, Matrix<D, 2 * D>& xis) {
     root_.compute(P);
     xis.template leftCols<D>() = w.spread * root_.matrix();
     xis.template rightCols<D>() = -w.spread * root_.matrix();
@@ -171,7 +170,7 @@ class ManifoldUnscentedKalmanFilter : public manifold::ManifoldFilterBase<Model>
 
   manifold::SigmaWeights stateWeights_, noiseWeights_, updateWeights_;
   probability::CovarianceSquareRoot<W> noiseRoot_;
-  mutable probability::CovarianceSquareRoot<D> root_{D};
+  probability::CovarianceSquareRoot<D> root_{D};  // scratch of sigmaPoints()
 };
 
 }  // namespace estimation

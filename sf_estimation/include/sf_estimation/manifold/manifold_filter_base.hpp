@@ -20,6 +20,7 @@
 // and quaternions are compared on their manifold, never by subtraction.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <utility>
 
