@@ -12,7 +12,9 @@
 #include <cmath>
 #include <string>
 
-#include "sf_estimation/angles.hpp"
+#include <Eigen/Core>
+
+#include "sf_estimation/manifold/se2.hpp"
 #include "sf_estimation/types.hpp"
 
 namespace estimation {
@@ -22,50 +24,10 @@ struct PlanarPoseIndices {
   Index x = 0, y = 1, heading = 2;
 };
 
-/// Exponential coordinates (rho_x, rho_y, theta) of SE(2).
-struct PlanarTwist {
-  double rhoX = 0.0, rhoY = 0.0, theta = 0.0;
-};
-
 /// Throws ParameterError naming `method` unless the indices are three different states of
 /// [0, size) and the heading is an angle state (src/planar_pose_mean.cpp).
 void requirePlanarPose(const std::string& method, const PlanarPoseIndices& k, Index size,
                        bool headingIsAngle);
-
-namespace planar_pose_detail {
-
-/// sin(t) / t and (1 - cos(t)) / t = 2 sin^2(t / 2) / t (without the cancellation of
-/// 1 - cos), by their Taylor series near 0 (exact to rounding for |t| < 1e-4: the next terms
-/// are below t^4 / 120).
-inline void leftJacobianTerms(double t, double& a, double& b) {
-  if (std::abs(t) < 1e-4) {
-    a = 1.0 - t * t / 6.0;
-    b = 0.5 * t - t * t * t / 24.0;
-  } else {
-    const double s = std::sin(0.5 * t);
-    a = std::sin(t) / t;
-    b = 2.0 * s * s / t;
-  }
-}
-
-}  // namespace planar_pose_detail
-
-/// log of the motion (dx, dy in the reference pose's frame, dtheta in (-pi, pi]).
-inline PlanarTwist planarLog(double dx, double dy, double dtheta) {
-  double a, b;
-  planar_pose_detail::leftJacobianTerms(dtheta, a, b);
-  const double det = a * a + b * b;  // > 0 for |dtheta| <= pi
-  return {(a * dx + b * dy) / det, (-b * dx + a * dy) / det, dtheta};
-}
-
-/// exp of a twist: the motion (dx, dy, dtheta) in the frame it starts from.
-inline void planarExp(const PlanarTwist& xi, double& dx, double& dy, double& dtheta) {
-  double a, b;
-  planar_pose_detail::leftJacobianTerms(xi.theta, a, b);
-  dx = a * xi.rhoX - b * xi.rhoY;
-  dy = b * xi.rhoX + a * xi.rhoY;
-  dtheta = xi.theta;
-}
 
 /// Moves `mean`'s pose entries to the SE(2) mean of the poses that forEach(f) passes as
 /// f(pose vector, weight) (non-negative weights summing to 1), starting from the entry-wise
@@ -75,29 +37,22 @@ inline void planarExp(const PlanarTwist& xi, double& dx, double& dy, double& dth
 template <class ForEach, class Vec>
 void planarPoseMean(const PlanarPoseIndices& k, ForEach&& forEach, Vec& mean,
                     int maxIterations = 20) {
-  double mx = mean(k.x), my = mean(k.y), mt = mean(k.heading);
+  using Pose = Eigen::Matrix<double, 3, 1>;  // Se2Block's (theta, x, y)
+  Pose mu(mean(k.heading), mean(k.x), mean(k.y)), pose, xi, step;
   for (int iteration = 0; iteration < maxIterations; ++iteration) {
-    const double c = std::cos(mt), s = std::sin(mt);
-    PlanarTwist sum;
-    forEach([&](const auto& pose, double w) {
-      const double ex = pose(k.x) - mx, ey = pose(k.y) - my;
-      const PlanarTwist xi =
-          planarLog(c * ex + s * ey, -s * ex + c * ey, wrapAngle(pose(k.heading) - mt));
-      sum.rhoX += w * xi.rhoX;
-      sum.rhoY += w * xi.rhoY;
-      sum.theta += w * xi.theta;
+    step.setZero();
+    forEach([&](const auto& particle, double w) {
+      pose << particle(k.heading), particle(k.x), particle(k.y);
+      manifold::Se2Block::minus(pose, mu, xi);
+      step += w * xi;
     });
-    double dx, dy, dt;
-    planarExp(sum, dx, dy, dt);
-    mx += c * dx - s * dy;
-    my += s * dx + c * dy;
-    mt = wrapAngle(mt + dt);
-    if (!std::isfinite(mx) || !std::isfinite(my) || !std::isfinite(mt)) return;
-    if (std::abs(dx) + std::abs(dy) + std::abs(dt) < 1e-12) break;
+    manifold::Se2Block::plus(Pose(mu), step, mu);
+    if (!mu.allFinite()) return;
+    if (step.cwiseAbs().sum() < 1e-12) break;
   }
-  mean(k.x) = mx;
-  mean(k.y) = my;
-  mean(k.heading) = mt;
+  mean(k.x) = mu(1);
+  mean(k.y) = mu(2);
+  mean(k.heading) = mu(0);
 }
 
 }  // namespace estimation
