@@ -182,7 +182,7 @@ class Attacks:
     # -- D4: a covariance block asymmetric in the last bit
 
     def attack_d4_asymmetric_block(self):
-        """D4 20 poses whose covariance pair is 0.1 against nextafter(0.1) (the issue's 20 values)
+        """D4 21 poses whose covariance pair is 0.1 against nextafter(0.1) (20 estimated periods)
         all 20 used, each with the pair's mean: the Kalman filter stepped by hand"""
         import genpy
         import rosbag
