@@ -324,6 +324,13 @@ class OnlineNode:
         self.processes = []
 
     def __enter__(self):
+        try:
+            return self.start_all()
+        except BaseException:
+            self.__exit__()  # no master or node left behind
+            raise
+
+    def start_all(self):
         with socket.socket() as s:
             s.bind(("127.0.0.1", 0))
             port = s.getsockname()[1]
@@ -357,7 +364,8 @@ class OnlineNode:
     def __exit__(self, *exc):
         import rospy
 
-        rospy.signal_shutdown("attacks done")
+        if rospy.core.is_initialized():
+            rospy.signal_shutdown("attacks done")
         for process in reversed(self.processes):
             process.terminate()
             try:
