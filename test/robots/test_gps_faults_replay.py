@@ -26,8 +26,9 @@ FAULTS = {0: ("latitude", 91.0), 19: ("longitude", 500.0), 39: ("altitude", 1e30
           59: (("latitude", "longitude"), None)}  # None: 9 degrees more (about 1000 km)
 
 
-def write_bags(faulty_path, removed_path):
-    """The recording with the fixes of FAULTS changed, and with them left out."""
+def write_bags(faulty_path, removed_path, faults=FAULTS):
+    """The recording with the fixes of `faults` changed, and with them left out. `faults`:
+    {fix index: (field, value)}, or ((fields), (values)) for several fields of one fix."""
     import rosbag
 
     fix = -1
@@ -36,11 +37,14 @@ def write_bags(faulty_path, removed_path):
         for topic, msg, t in src.read_messages():
             if topic == "/fix":
                 fix += 1
-                if fix in FAULTS:
-                    field, value = FAULTS[fix]
+                if fix in faults:
+                    field, value = faults[fix]
                     if value is None:
                         msg.latitude += 9.0
                         msg.longitude += 9.0
+                    elif isinstance(field, tuple):
+                        for name, v in zip(field, value):
+                            setattr(msg, name, v)
                     else:
                         setattr(msg, field, value)
                     faulty.write(topic, msg, t)
