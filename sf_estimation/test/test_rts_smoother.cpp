@@ -3,9 +3,11 @@
 // least-squares solution of the whole track (batch_map.hpp) for a linear model, where RTS is
 // exact, and the Gauss-Newton MAP track of a simulated unicycle for the EKF and UKF smoothers,
 // with the ground truth that the smoothed track must approach better than the filtered one.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -124,6 +126,64 @@ TEST(RtsSmootherHandCase, AngleStateAcrossTheWrap) {
                  0.5, offset, true, 1e-9);
 }
 
+// A period whose belief was set (not predicted) cuts the record: the periods before it are
+// smoothed as a record of their own.
+TEST(RtsSmootherRecord, SetBeliefSeparatesTheSegments) {
+  const KalmanFilter<1, 1, 0> kf(kOne, Matrix<1, 0>(), kOne, kOne, kOne, Vector<1>(0.0), kOne);
+  const auto smoother = smootherFor(kf);
+  using Period = FilteredPeriod<1, 0>;
+  const auto period = [](double x, double P, bool predicted) {
+    return Period{Vector<1>(x), Matrix<1, 1>(P), Vector<0>(), predicted};
+  };
+  // The hand case's filtered periods, then a belief set to (10, 1) and one predicted period.
+  const std::vector<Period> head{period(0.0, 1.0, false), period(2.0, 2.0 / 3.0, true),
+                                 period(4.5, 5.0 / 8.0, true)};
+  std::vector<Period> record = head;
+  record.push_back(period(10.0, 1.0, false));
+  record.push_back(period(10.5, 0.5, true));
+  std::vector<estimation::SmoothedPeriod<1>> smoothed;
+  smoother.smooth(record, smoothed);
+  ASSERT_EQ(smoothed.size(), 5u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_NEAR(smoothed[k].x(0), kHandMeans[k], 1e-14) << "period " << k;
+    EXPECT_NEAR(smoothed[k].P(0, 0), kHandVariances[k], 1e-14) << "period " << k;
+  }
+  // Period 3 is smoothed from period 4: G = 1 / 2, x = 10 + (10.5 - 10) / 2, P = 1 + (0.5 - 2) / 4.
+  EXPECT_NEAR(smoothed[3].x(0), 10.25, 1e-14);
+  EXPECT_NEAR(smoothed[3].P(0, 0), 0.625, 1e-14);
+}
+
+// A state known exactly (P = 0, Q = 0) has a semi-definite prediction: nothing flows back, and
+// the smoothed period is the filtered one, finite.
+TEST(RtsSmootherRecord, KnownStateIsItsOwnSmoothedState) {
+  const Matrix<1, 1> zero = Matrix<1, 1>::Zero();
+  const KalmanFilter<1, 1, 0> kf(kOne, Matrix<1, 0>(), kOne, zero, kOne, Vector<1>(0.0), kOne);
+  using Period = FilteredPeriod<1, 0>;
+  const std::vector<Period> record{Period{Vector<1>(2.0), zero, Vector<0>(), false},
+                                   Period{Vector<1>(2.0), zero, Vector<0>(), true}};
+  std::vector<estimation::SmoothedPeriod<1>> smoothed;
+  smootherFor(kf).smooth(record, smoothed);
+  EXPECT_EQ(smoothed[0].x(0), 2.0);
+  EXPECT_EQ(smoothed[0].P(0, 0), 0.0);
+}
+
+// A record whose prediction is indefinite (a negative variance) is refused with an error that
+// names it, not turned into a track.
+TEST(RtsSmootherRecord, IndefinitePredictionIsRefused) {
+  const KalmanFilter<1, 1, 0> kf(kOne, Matrix<1, 0>(), kOne, kOne, kOne, Vector<1>(0.0), kOne);
+  using Period = FilteredPeriod<1, 0>;
+  const std::vector<Period> record{Period{Vector<1>(0.0), Matrix<1, 1>(-3.0), Vector<0>(), false},
+                                   Period{Vector<1>(0.0), kOne, Vector<0>(), true}};
+  std::vector<estimation::SmoothedPeriod<1>> smoothed;
+  try {
+    smootherFor(kf).smooth(record, smoothed);
+    FAIL() << "no error";
+  } catch (const estimation::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("predicted covariance is indefinite"), std::string::npos)
+        << e.what();
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // (a) Linear model against the batch solution: means and covariances to 1e-9 relative.
 // ---------------------------------------------------------------------------------------------
@@ -177,6 +237,141 @@ TEST(RtsSmootherLinear, EqualsBatchLeastSquares) {
   }
   // The last period is its filtered estimate; earlier ones moved (the test is not vacuous).
   EXPECT_GT(relDiff(smoothed.filtered[20].x, batch.x[20]), 1e-3);
+}
+
+// ---------------------------------------------------------------------------------------------
+// (c) A unicycle with noisy position fixes: EKF and UKF smoothers against the Gauss-Newton MAP
+// track of the same problem, and against the ground truth.
+// ---------------------------------------------------------------------------------------------
+
+/// State (x, y, heading), control (speed, turn rate), period T; a position fix z = (x, y).
+struct Unicycle {
+  static constexpr int StateSize = 3, MeasurementSize = 2, ControlSize = 2;
+  double T = 0.1;
+  Index stateSize() const { return 3; }
+  Index measurementSize() const { return 2; }
+  Index controlSize() const { return 2; }
+  template <class S>
+  void transition(const Eigen::Matrix<S, 3, 1>& x, const Vector<2>& u,
+                  Eigen::Matrix<S, 3, 1>& next) const {
+    using std::cos;
+    using std::sin;
+    next(0) = x(0) + u(0) * T * cos(x(2));
+    next(1) = x(1) + u(0) * T * sin(x(2));
+    next(2) = x(2) + u(1) * T;
+  }
+  template <class S>
+  void observation(const Eigen::Matrix<S, 3, 1>& x, Eigen::Matrix<S, 2, 1>& z) const {
+    z(0) = x(0);
+    z(1) = x(1);
+  }
+};
+
+/// A drive of `steps` periods along a loop (the heading wraps several times), the truth
+/// perturbed by Q, a position fix every third period with noise R.
+struct UnicycleDrive {
+  BatchProblem<Unicycle> problem;
+  std::vector<Vector<3>> truth;
+
+  UnicycleDrive(int steps, std::uint64_t seed, double sigma) {
+    const double variance = sigma * sigma;
+    problem.Q = variance * Vector<3>(0.02 * 0.02, 0.02 * 0.02, 0.03 * 0.03).asDiagonal();
+    problem.R = variance * Vector<2>(0.5 * 0.5, 0.5 * 0.5).asDiagonal();
+    problem.x0 = Vector<3>(0.0, 0.0, 3.0);
+    problem.P0 = variance * Vector<3>(0.1, 0.1, 0.05).asDiagonal();
+    problem.angles.states = {2};
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    const Eigen::Vector3d rootQ = problem.Q.diagonal().cwiseSqrt();
+    Vector<3> x = problem.x0;
+    truth.push_back(x);
+    problem.u.push_back(Vector<2>::Zero());
+    problem.z.push_back(Measurement<2>::missing());
+    for (int k = 1; k <= steps; ++k) {
+      const Vector<2> u(1.0 + 0.5 * std::sin(0.01 * k), 0.8 * std::cos(0.013 * k));
+      Vector<3> next;
+      problem.model.transition(x, u, next);
+      for (Index i = 0; i < 3; ++i) next(i) += rootQ(i) * normal(rng);
+      next(2) = wrapAngle(next(2));
+      x = next;
+      truth.push_back(x);
+      problem.u.push_back(u);
+      Measurement<2> z = Measurement<2>::missing();
+      z.value = x.head<2>() + 0.5 * sigma * Vector<2>(normal(rng), normal(rng));
+      z.available.setConstant(k % 3 == 0);
+      problem.z.push_back(z);
+    }
+  }
+
+  /// Root mean square position error of a track against the truth.
+  template <class Track>
+  double positionRmse(const Track& track) const {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < truth.size(); ++k) {
+      sum += (track[k].x.template head<2>() - truth[k].head<2>()).squaredNorm();
+    }
+    return std::sqrt(sum / static_cast<double>(truth.size()));
+  }
+};
+
+/// Largest gap of the smoothed track to the MAP track, in MAP standard deviations.
+template <class Run>
+double largestGapInSigmas(const Run& run, const sftest::BatchSolution& map) {
+  double gap = 0.0;
+  for (std::size_t k = 0; k < map.x.size(); ++k) {
+    Vector<3> difference = run.smoothed[k].x - map.x[k];
+    difference(2) = wrapAngle(difference(2));
+    for (Index i = 0; i < 3; ++i) {
+      gap = std::max(gap, std::abs(difference(i)) / std::sqrt(map.P[k](i, i)));
+    }
+  }
+  return gap;
+}
+
+/// The smoother of `filter` (its parameters taken from `drive`) on `drive`: the largest gap to
+/// the MAP track in MAP standard deviations, and the filtered and smoothed position RMSE.
+struct NonlinearResult {
+  double gap, filteredRmse, smoothedRmse;
+};
+
+template <class Filter>
+NonlinearResult smoothDrive(const Filter& filter, const UnicycleDrive& drive) {
+  const SmoothedRun<Filter> run(filter, drive.problem.u, drive.problem.z);
+  std::vector<Eigen::VectorXd> start;
+  for (const auto& period : run.filtered) start.emplace_back(period.x);
+  const sftest::BatchSolution map = sftest::solveBatch(drive.problem, start);
+  return {largestGapInSigmas(run, map), drive.positionRmse(run.filtered),
+          drive.positionRmse(run.smoothed)};
+}
+
+/// The RTS pass linearises (EKF) or sigma-point-approximates (UKF) each transition about the
+/// filtered estimate instead of iterating to the MAP track: an error of first order in the
+/// noise, measured as 0.45 (EKF) and 0.29 (UKF) MAP standard deviations at most over the 300
+/// periods (tolerance 0.6), and ten times smaller with every noise ten times smaller (0.045,
+/// 0.027; tolerance 0.06). A wrong model, control or gain would not shrink with the noise. The
+/// smoothed position RMSE was 0.52 of the filtered one for both (tolerance 0.7).
+template <class MakeFilter>
+void expectCloseToMapAndTruth(const MakeFilter& makeFilter) {
+  const UnicycleDrive drive(300, 11, 1.0);
+  const NonlinearResult result = smoothDrive(makeFilter(drive.problem), drive);
+  EXPECT_LT(result.gap, 0.6);
+  EXPECT_LT(result.smoothedRmse, 0.7 * result.filteredRmse)
+      << "filtered " << result.filteredRmse << ", smoothed " << result.smoothedRmse;
+  const UnicycleDrive quiet(300, 11, 0.1);
+  EXPECT_LT(smoothDrive(makeFilter(quiet.problem), quiet).gap, 0.06);
+}
+
+TEST(RtsSmootherNonlinear, ExtendedKalmanFilterNearMapTrack) {
+  expectCloseToMapAndTruth([](const BatchProblem<Unicycle>& p) {
+    return ExtendedKalmanFilter<Unicycle>(p.model, p.Q, p.R, p.x0, p.P0, p.angles);
+  });
+}
+
+TEST(RtsSmootherNonlinear, UnscentedKalmanFilterNearMapTrack) {
+  expectCloseToMapAndTruth([](const BatchProblem<Unicycle>& p) {
+    return UnscentedKalmanFilter<Unicycle>(p.model, p.Q, p.R, p.x0, p.P0, UnscentedParameters{},
+                                           p.angles);
+  });
 }
 
 }  // namespace

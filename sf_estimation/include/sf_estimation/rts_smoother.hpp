@@ -69,18 +69,21 @@ struct OneStepPrediction {
 
 /// One backward step: (x, P) filtered at k, `prediction` from k to k+1, (xNext, PNext)
 /// smoothed at k+1; writes the smoothed (xOut, POut) at k. Throws NumericalError when the
-/// predicted covariance cannot be factorised or the result is not finite.
+/// predicted covariance is indefinite or the result is not finite.
 template <int N>
 void rtsBackwardStep(const Vector<N>& x, const Matrix<N, N>& P,
                      const OneStepPrediction<N>& prediction, const Vector<N>& xNext,
                      const Matrix<N, N>& PNext, const AngleMask<N>& angles, Vector<N>& xOut,
                      Matrix<N, N>& POut) {
   // G^T = P(k+1|k)^-1 C^T, as P(k+1|k) is symmetric. LDLT (pivoted) rather than LLT: a
-  // predicted covariance with an exactly known state (a zero row of Q and F) is only
-  // semi-definite, and the solve then fails visibly instead of returning garbage.
+  // predicted covariance with an exactly known direction (a state without process noise that
+  // the transition copies, or a record with P = 0) is only semi-definite. C is zero in such a
+  // direction (P(k+1|k) >= F P F^T), and LDLT's solve then leaves the gain zero there (zero
+  // pivots are skipped), which is the smoother's answer: nothing to propagate back. A negative
+  // pivot (an indefinite prediction from a corrupt record) is refused.
   const Eigen::LDLT<Matrix<N, N>> factor(prediction.P);
   if (factor.info() != Eigen::Success || !factor.isPositive()) {
-    throw NumericalError("RtsSmoother: the predicted covariance is not positive definite");
+    throw NumericalError("RtsSmoother: the predicted covariance is indefinite");
   }
   const Matrix<N, N> gain = factor.solve(prediction.cross.transpose()).transpose();
   Vector<N> difference = xNext - prediction.x;
