@@ -154,6 +154,28 @@ TEST(RtsSmootherRecord, KnownStateIsItsOwnSmoothedState) {
   EXPECT_EQ(smoothed[0].P(0, 0), 0.0);
 }
 
+// The UKF's prediction from x ~ N(0, 1) through x^2 with alpha = 1, kappa = 0, beta = -10 is
+// -9.99 in closed form (test_numerical_repairs.cpp), which the UKF repairs to 0 and commits as
+// (1, 0). The smoother repairs it as the UKF did: a zero prediction, nothing flows back, and
+// period 0 keeps its (0, 1); the cross covariance is 0 too (-10 (0)(-1) + (1)(0) / 2 +
+// (-1)(0) / 2).
+TEST(RtsSmootherRecord, UnscentedPredictionRepairedAsTheFilterDid) {
+  UnscentedParameters params;
+  params.alpha = 1.0;
+  params.beta = -10.0;
+  params.kappa = 0.0;
+  const UnscentedKalmanFilter<sftest::SquareTransition> ukf({}, Matrix<1, 1>::Constant(0.01),
+                                                            Matrix<1, 1>::Constant(0.1),
+                                                            Vector<1>::Zero(), kOne, params);
+  const SmoothedRun<UnscentedKalmanFilter<sftest::SquareTransition>> run(
+      ukf, std::vector<Vector<0>>(2), {Measurement<1>::missing(), Measurement<1>::missing()});
+  ASSERT_EQ(run.smoothed.size(), 2u);
+  EXPECT_NEAR(run.filtered[1].x(0), 1.0, 1e-15);
+  EXPECT_EQ(run.filtered[1].P(0, 0), 0.0);
+  EXPECT_EQ(run.smoothed[0].x(0), 0.0);
+  EXPECT_EQ(run.smoothed[0].P(0, 0), 1.0);
+}
+
 // A record whose prediction is indefinite (a negative variance) is refused with an error that
 // names it, not turned into a track.
 TEST(RtsSmootherRecord, IndefinitePredictionIsRefused) {

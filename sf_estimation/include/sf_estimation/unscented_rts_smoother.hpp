@@ -9,6 +9,7 @@
 #include <optional>
 #include <utility>
 
+#include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/rts_smoother.hpp"
 #include "sf_estimation/unscented_kalman_filter.hpp"
 #include "sf_estimation/unscented_transform.hpp"
@@ -50,6 +51,9 @@ class UnscentedPrediction {
                               angleStates_);
     out.P += Q_;
     symmetrize(out.P);
+    // A negative central weight can make it indefinite; the UKF repairs it before using it (in
+    // its correction, or commit()), and so does the smoother (one Cholesky when it is healthy).
+    repairCovariance(out.P);
     // The sigma points' deviations from x are the columns of the root, exactly: not wrapped
     // (as in the UKF's correction), even when an angle's spread exceeds pi.
     transform.crossCovariance(points, x, propagated, out.x, out.cross, AngleMask<N>(n),
