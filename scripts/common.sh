@@ -32,6 +32,8 @@ SF_PACKAGE=sf_pkg
 # libgeographiclib-dev: the WGS84 geodesy of the GPS inputs (GeographicLib::LocalCartesian).
 # python3-rosservice, python3-rostopic: the rostests that look up the type of a
 # running service or topic (set_pose, covariance_block).
+# libceres-dev: the batch MAP reference of the smoother tests (sf_estimation_ceres_tests,
+# optional in CMake; neither the library nor the nodes link Ceres; doc/smoothing.md).
 SF_DEB_PACKAGES=(
   ros-core-dev catkin libroscpp-dev librosbag-dev python3-rostest rosbash
   libtf2-ros-dev libtf2-geometry-msgs-dev
@@ -39,6 +41,7 @@ SF_DEB_PACKAGES=(
   libdiagnostic-updater-dev libtopic-tools-dev ros-message-generation ros-message-runtime
   libeigen3-dev libboost-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   libnlopt-dev libnlopt-cxx-dev
+  libceres-dev
   python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
   python3-diagnostic-msgs tf2-tools python3-rosservice python3-rostopic
   libgeographiclib-dev

@@ -221,7 +221,8 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   const std::string program = argv[0];
   const std::string usage =
       "usage: " + program +
-      " --replay INPUT.bag [INPUT.bag]... [--csv OUT.csv] [--bag OUT.bag] [--name NODE]\n"
+      " --replay INPUT.bag [INPUT.bag]... [--csv OUT.csv] [--bag OUT.bag] [--smooth]\n"
+      "       [--name NODE]\n"
       "       [--estimation-period S | --estimation-period-ms MS] [--scale-q FACTOR]\n"
       "       [--scale-r FACTOR] [--seed N] [--strict]\n"
       "       [--frame-id FRAME] [--child-frame-id FRAME] [--base-frame FRAME]\n"
@@ -250,6 +251,9 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       "here override it. FROM:=TO reads the configured topic FROM from the bag's topic TO.\n"
       "--static-transform: a transform as static_transform_publisher takes it (metres,\n"
       "radians), for a bag without /tf_static.\n"
+      "--smooth: after the replay, the Rauch-Tung-Striebel backward pass over every period\n"
+      "(KF, EKF; the unscented one for a UKF); the CSV gets smoothed_* columns after the\n"
+      "filtered ones (doc/smoothing.md).\n"
       "POLICY: AVERAGE, LAST, SAMPLED, 'HOLD LAGRANGE|BEZIER|TAYLOR ORDER [VARIANCE]' or\n"
       "'FILL OMEGA N [VARIANCE]'; THRESHOLD 0 removes a gate (doc/alignment_policies.md).\n"
       "INPUT: the input's index, or its record name in a header with INPUTS records.\n"
@@ -344,6 +348,8 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
         options.csvPath = value();
       } else if (arg == "--bag") {
         options.outputBag = value();
+      } else if (arg == "--smooth") {
+        options.smooth = true;
       } else if (arg == "--params") {
         value();  // read above
       } else if (arg == "--static-transform") {
@@ -558,6 +564,11 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                 << " late), " << gated << " gated, " << substituted << " substitutes, "
                 << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
                 << " us per estimation step, " << wall << " s in all" << std::endl;
+      if (options.smooth) {
+        std::cout << options.nodeName << ": smoothed " << s.smoothedPeriods << " periods ("
+                  << s.smoothedSegments << " segments) in " << s.smoothingSeconds << " s, "
+                  << s.smoothingBytesPerPeriod << " bytes per period" << std::endl;
+      }
       printInputCounters(options.nodeName, replay.core());
       printNis(options.nodeName, replay.core(), def.description.inputs);
       printGpsCounters(options.nodeName, replay, def.description.inputs);

@@ -19,6 +19,7 @@
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
 #include "sf_filter/core/nis_window.hpp"
+#include "sf_filter/core/period_smoother.hpp"
 
 namespace sf_filter {
 
@@ -104,6 +105,10 @@ class FusionEngine {
   virtual double estimatorSeconds() const = 0;
   virtual std::uint64_t estimateCount() const = 0;
   virtual double maxStepSeconds() const = 0;
+
+  /// An offline smoother of this core's run (period_smoother.hpp), which records the periods
+  /// it is told to and keeps a reference to the core; null for a filter without one.
+  virtual std::unique_ptr<PeriodSmoother> makeSmoother() const { return nullptr; }
 
   /// The filter's own description ("extended Kalman filter", ...) and sizes.
   virtual std::string filterDescription() const = 0;

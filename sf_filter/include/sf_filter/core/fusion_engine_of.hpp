@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -14,6 +15,7 @@
 
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/core/period_smoother_of.hpp"
 
 namespace sf_filter {
 
@@ -106,6 +108,14 @@ class FusionEngineOf final : public FusionEngine {
   double estimatorSeconds() const override { return core_.estimatorSeconds(); }
   std::uint64_t estimateCount() const override { return core_.estimateCount(); }
   double maxStepSeconds() const override { return core_.maxStepSeconds(); }
+
+  std::unique_ptr<PeriodSmoother> makeSmoother() const override {
+    if constexpr (HasSmoother<Filter>::value) {
+      return std::make_unique<PeriodSmootherOf<Core>>(core_);
+    } else {
+      return nullptr;
+    }
+  }
 
   std::string filterDescription() const override { return core_.filter().description(); }
   Index stateSize() const override { return core_.filter().stateSize(); }

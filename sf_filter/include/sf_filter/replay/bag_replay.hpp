@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -57,6 +58,10 @@ struct ReplayOptions {
   bool allowMissingTopics = false;
   /// The --params file the caller read ("" for none): no output may replace it either.
   std::string parametersFile;
+  /// --smooth: after the forward run, the RTS backward pass of the filter (KF, EKF; the
+  /// unscented one for the UKF) over every period; the CSV gets the smoothed columns after the
+  /// filtered ones (doc/smoothing.md). The output bag keeps the filtered estimates.
+  bool smooth = false;
 };
 
 /// The files a replay reads, which none of its outputs may be (atomic_output.hpp).
@@ -80,6 +85,12 @@ struct ReplaySummary {
   std::uint64_t dropped = 0;
   std::uint64_t skippedGaps = 0;  ///< gaps longer than ReplayClock::kMaxGapPeriods, skipped
   double estimatorSeconds = 0.0;
+  /// --smooth: the periods smoothed, in how many segments (period_smoother.hpp), the backward
+  /// pass's time and the memory per period of the record and its result.
+  std::uint64_t smoothedPeriods = 0;
+  std::uint64_t smoothedSegments = 0;
+  double smoothingSeconds = 0.0;
+  std::size_t smoothingBytesPerPeriod = 0;
 };
 
 /// Rotates the vectors of FRAME_ALIGNED_INPUTS offline (replay_frame_aligner.hpp).
@@ -161,6 +172,7 @@ class BagReplay final : public MessageSink {
   ReplaySummary run() {
     checkOutputs(inputFiles(options_),
                  {{"--csv", options_.csvPath}, {"--bag", options_.outputBag}});
+    const std::unique_ptr<PeriodSmoother> smoother = makeSmoother();
     const std::vector<std::unique_ptr<rosbag::Bag>> inputs = openInputs();
     const std::map<std::string, Recorded> recorded = readInput([&] { return connections(inputs); });
     checkTypes(recorded);
@@ -189,8 +201,11 @@ class BagReplay final : public MessageSink {
     }
     auto write = [&](const EstimateRef& e) {
       ++summary_.estimates;
-      if (csv.is_open()) {
-        writeCsvRow(csv, e);
+      if (smoother) {
+        smoother->record();
+        rows_.push_back(CsvRow{e.time, e.presentInputs});
+      } else if (csv.is_open()) {
+        writeCsvRow(csv, e.time, e.state, e.covariance, e.presentInputs);
         if (!csv) throw writeError(csvFile);
       }
       if (output) writeOutput(bagFile, [&] { writeBag(*output, e); });
@@ -210,6 +225,7 @@ class BagReplay final : public MessageSink {
         ++summary_.messages;
       }
     });
+    if (smoother) smoothRun(*smoother, csv, csvFile);
     if (csv.is_open()) {
       csv.close();
       if (!csv) throw writeError(csvFile);
@@ -439,25 +455,75 @@ class BagReplay final : public MessageSink {
     return topics;
   }
 
+  /// The columns: time, the filtered belief, present_inputs, and with --smooth the smoothed
+  /// belief (its names prefixed "smoothed_").
   void writeCsvHeader(std::ofstream& csv) const {
-    const Index n = core_.lastEstimate().state.size();
     csv << "time";
-    for (Index i = 0; i < n; ++i) csv << ",x" << i;
-    for (Index i = 0; i < n; ++i) csv << ",var" << i;
-    if (description_.pose) csv << ",pose_x,pose_y,pose_heading";
-    csv << ",present_inputs\n";
+    writeCsvNames(csv, "");
+    csv << ",present_inputs";
+    if (options_.smooth) writeCsvNames(csv, "smoothed_");
+    csv << '\n';
   }
 
-  void writeCsvRow(std::ofstream& csv, const EstimateRef& e) const {
-    const Index n = e.state.size();
-    csv << std::setprecision(17) << e.time;
-    for (Index i = 0; i < n; ++i) csv << ',' << e.state(i);
-    for (Index i = 0; i < n; ++i) csv << ',' << e.covariance(i, i);
+  void writeCsvNames(std::ofstream& csv, const char* prefix) const {
+    const Index n = core_.lastEstimate().state.size();
+    for (Index i = 0; i < n; ++i) csv << ',' << prefix << 'x' << i;
+    for (Index i = 0; i < n; ++i) csv << ',' << prefix << "var" << i;
+    if (description_.pose) {
+      csv << ',' << prefix << "pose_x," << prefix << "pose_y," << prefix << "pose_heading";
+    }
+  }
+
+  void writeCsvRow(std::ofstream& csv, double time, const Eigen::Map<const Eigen::VectorXd>& x,
+                   const Eigen::Map<const Eigen::MatrixXd>& P, Index presentInputs,
+                   const PeriodBelief* smoothed = nullptr) const {
+    csv << std::setprecision(17) << time;
+    writeCsvBelief(csv, x, P);
+    csv << ',' << presentInputs;
+    if (smoothed) writeCsvBelief(csv, smoothed->state, smoothed->covariance);
+    csv << '\n';
+  }
+
+  void writeCsvBelief(std::ofstream& csv, const Eigen::Map<const Eigen::VectorXd>& x,
+                      const Eigen::Map<const Eigen::MatrixXd>& P) const {
+    const Index n = x.size();
+    for (Index i = 0; i < n; ++i) csv << ',' << x(i);
+    for (Index i = 0; i < n; ++i) csv << ',' << P(i, i);
     if (description_.pose) {
       const auto& p = *description_.pose;
-      csv << ',' << e.state(p[0]) << ',' << e.state(p[1]) << ',' << e.state(p[2]);
+      csv << ',' << x(p[0]) << ',' << x(p[1]) << ',' << x(p[2]);
     }
-    csv << ',' << e.presentInputs << '\n';
+  }
+
+  /// --smooth: the filter's smoother, refused for a filter without one.
+  std::unique_ptr<PeriodSmoother> makeSmoother() const {
+    if (!options_.smooth) return nullptr;
+    std::unique_ptr<PeriodSmoother> smoother = core_.makeSmoother();
+    if (!smoother) {
+      throw ReplayError(
+          "--smooth: the " + core_.filterDescription() +
+          " has no smoother (the Kalman, extended and unscented Kalman filters have)");
+    }
+    return smoother;
+  }
+
+  /// After the forward run: the backward pass (timed), then the CSV's rows, filtered and
+  /// smoothed side by side.
+  void smoothRun(PeriodSmoother& smoother, std::ofstream& csv, const AtomicOutput& csvFile) {
+    const auto begin = std::chrono::steady_clock::now();
+    smoother.smooth();
+    summary_.smoothingSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    summary_.smoothedPeriods = smoother.periods();
+    summary_.smoothedSegments = smoother.segments();
+    summary_.smoothingBytesPerPeriod = smoother.bytesPerPeriod() + sizeof(CsvRow);
+    if (!csv.is_open()) return;
+    for (std::size_t k = 0; k < smoother.periods(); ++k) {
+      const PeriodBelief filtered = smoother.filtered(k), smoothed = smoother.smoothed(k);
+      writeCsvRow(csv, rows_[k].time, filtered.state, filtered.covariance, rows_[k].presentInputs,
+                  &smoothed);
+      if (!csv) throw writeError(csvFile);
+    }
   }
 
   void writeBag(rosbag::Bag& bag, const EstimateRef& e) const {
@@ -487,6 +553,12 @@ class BagReplay final : public MessageSink {
   ReplaySummary summary_;
   ReplayClock clock_;
   EventLog* events_ = nullptr;
+  /// --smooth: what the CSV rows hold besides the beliefs, per period.
+  struct CsvRow {
+    double time;
+    Index presentInputs;
+  };
+  std::vector<CsvRow> rows_;
 };
 
 }  // namespace sf_filter

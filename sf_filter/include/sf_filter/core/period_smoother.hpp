@@ -1,0 +1,42 @@
+// The offline smoother of a fusion core's run (issue 39), seen through sizes known only at run
+// time: it records what the core's filter produced in each period (filtered mean, covariance,
+// the control of its time update) and, after the forward run, smooths the record with the
+// filter's own backward pass (sf_estimation/rts_smoother.hpp; period_smoother_of.hpp
+// implements it for one filter type). Made by FusionEngine::makeSmoother().
+#pragma once
+
+#include <cstddef>
+
+#include <Eigen/Core>
+
+namespace sf_filter {
+
+/// One recorded period's mean and covariance, viewed in place.
+struct PeriodBelief {
+  Eigen::Map<const Eigen::VectorXd> state;
+  Eigen::Map<const Eigen::MatrixXd> covariance;
+};
+
+class PeriodSmoother {
+ public:
+  virtual ~PeriodSmoother() = default;
+
+  /// Records the belief of the period the core has just estimated. A period that the filter
+  /// did not reach by its time update from the previously recorded one (the first, a rejected
+  /// step, a filter restart, a clock reset before it) starts a new segment: the backward pass
+  /// does not link it to its predecessor.
+  virtual void record() = 0;
+  /// The backward pass over everything recorded (throws estimation::NumericalError).
+  virtual void smooth() = 0;
+
+  virtual std::size_t periods() const = 0;
+  /// Segments of the record (1 for an uninterrupted run).
+  virtual std::size_t segments() const = 0;
+  virtual PeriodBelief filtered(std::size_t period) const = 0;
+  /// Valid after smooth().
+  virtual PeriodBelief smoothed(std::size_t period) const = 0;
+  /// Memory of one period: the record and its smoothed result.
+  virtual std::size_t bytesPerPeriod() const = 0;
+};
+
+}  // namespace sf_filter
