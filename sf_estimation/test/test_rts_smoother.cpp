@@ -265,4 +265,28 @@ TEST(RtsSmootherNonlinear, UnscentedKalmanFilterNearMapTrack) {
   });
 }
 
+// Without any measurement every filtered estimate is the previous one's prediction, so the
+// backward pass has nothing to move: x_s(k) = x_f(k) + G (x_s(k+1) - x(k+1|k)) with
+// x_s(k+1) = x_f(k+1) = x(k+1|k). That holds only if the smoother re-derives the filter's own
+// prediction, here the UKF's propagated mean (PredictedMean::Propagated) on a unicycle whose
+// heading is uncertain enough that the sigma points' average would differ.
+TEST(RtsSmootherRecord, UnscentedPropagatedMeanIsTheFiltersPrediction) {
+  UnicycleDrive drive(100, 5, 1.0);
+  for (auto& z : drive.problem.z) z = Measurement<2>::missing();
+  drive.problem.P0 = Vector<3>(0.1, 0.1, 1.0).asDiagonal();
+  for (const auto mean :
+       {estimation::PredictedMean::Propagated, estimation::PredictedMean::SigmaPointAverage}) {
+    UnscentedParameters params;
+    params.predictedMean = mean;
+    const BatchProblem<Unicycle>& p = drive.problem;
+    const SmoothedRun<UnscentedKalmanFilter<Unicycle>> run(
+        UnscentedKalmanFilter<Unicycle>(p.model, p.Q, p.R, p.x0, p.P0, params, p.angles), p.u, p.z);
+    double largest = 0.0;
+    for (std::size_t k = 0; k < run.filtered.size(); ++k) {
+      largest = std::max(largest, (run.smoothed[k].x - run.filtered[k].x).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(largest, 1e-9) << "predicted mean " << static_cast<int>(mean);
+  }
+}
+
 }  // namespace

@@ -58,6 +58,12 @@ class UnscentedPrediction {
     // (as in the UKF's correction), even when an angle's spread exceeds pi.
     transform.crossCovariance(points, x, propagated, out.x, out.cross, AngleMask<N>(n),
                               angleStates_);
+    // The UKF's predicted mean (PredictedMean): P and C are around the points' weighted mean
+    // either way, as in UnscentedKalmanFilter::predict.
+    if (params_.predictedMean == PredictedMean::Propagated) {
+      out.x = propagated.col(0);
+      angleStates_.wrap(out.x);
+    }
     if (!out.x.allFinite() || !out.P.allFinite() || !out.cross.allFinite()) {
       throw NumericalError("UnscentedRtsSmoother: the time update became non-finite");
     }
