@@ -237,6 +237,7 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
       return Rejection::FutureStamp;
     }
     c.lastStamp = stamp;
+    c.delays.add(now - stamp);
     // A value is never sent before it is stamped: stamps of two inputs ahead of the clock's
     // reading tell that the clock stands still while the values come (rosbag play catching up
     // publishes them without /clock); one input alone may only have a clock running ahead.
