@@ -43,6 +43,18 @@
 //   heading's variance grow with t^2, and the UKF's and PF's averages over a wide heading
 //   distribution shorten every step of the track (issue 13: the UKF contracted a real
 //   track to half). Raise it for a cold gyro that stands still at start.
+// - No standstill assumed at the start. The standstill test k(v, omega) reads the estimate,
+//   and an initial v = omega = 0 would be read as standstill: the first period would take the
+//   wheels' yaw rate as exact and write the difference to the gyro, all slip on a recording that
+//   starts in a turn, into b_g (issue 37: 0.0019 rad/s on a real Husky recording, kept until its
+//   first stop 236 s later). So v starts at the first wheel speed and omega at the first gyro
+//   reading (INITIAL_STATE_FROM_INPUTS, minus b_g's initial 0; the gyro, not the slipping
+//   wheels, carries the yaw rate), their variances of 1 kept: the test then sees measured
+//   values from the first step on. Chosen over gating the test on the readings themselves,
+//   which an observation model cannot see, and over a "moving" x0, which would move the pose
+//   in the first period. The particle filter (config/husky_skid_steer_pf.h) cannot replace
+//   its belief and keeps x0; its particles, spread over v and omega by P0, read mostly as
+//   moving anyway.
 // - Position does not jump. Nothing measures x, y or theta; they are integrated from the
 //   velocities of the previous period's estimate (the state transition below uses x[3],
 //   x[4] of the last a posteriori estimate). A Kalman update moves a state only through its
@@ -106,6 +118,8 @@
   ((0)(4e-4)(0)) \
   ((0)(0)(1.25e-5))
 #define INITIAL_STATE (0)(0)(0)(0)(0)(0)(0)
+// v from the wheels' first speed, omega from the gyro's first yaw rate (see above).
+#define INITIAL_STATE_FROM_INPUTS ((3)(0))((4)(2))
 #define INITIAL_ERROR_COVARIANCE \
   ((0)(0)(0)(0)(0)(0)(0)) \
   ((0)(0)(0)(0)(0)(0)(0)) \

@@ -497,6 +497,13 @@ const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Ind
                                      " entries (one per input), found " +
                                      std::to_string(o.inputs.size()));
   }
+  for (const FusionCoreOptions::FirstReading& f : o.initialFromInputs) {
+    if (f.input < 0 || f.input >= inputs) {
+      throw estimation::ParameterError("initial state from inputs: input " +
+                                       std::to_string(f.input) + " is not one of the " +
+                                       std::to_string(inputs) + " inputs");
+    }
+  }
   for (std::size_t i = 0; i < o.inputs.size(); ++i) {
     const std::string problem = inputOptionsProblem(o.inputs[i]);
     if (!problem.empty()) {
