@@ -136,6 +136,8 @@
   ((fused/x)(0))((fused/y)(1))((fused/heading)(2)) \
   ((fused/linear_velocity)(3))((fused/angular_velocity)(4))((fused/gyro_bias)(5))
 #define POSE_OUT (0)(1)(2)
+// The Odometry's twist from v and omega (doc/configuration.md, "Outputs").
+#define TWIST_OUT (3)(4)
 #define BASE_FRAME base_link
 #define FRAME_ALIGNED_INPUTS ((2)(angular_velocity)(z))
 #define ANGLE_STATES (2)

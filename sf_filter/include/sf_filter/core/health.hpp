@@ -16,7 +16,8 @@
 //   WARN   the clock jumped backwards (filter reset); the filter repaired its numbers
 //          (covariance made positive semi-definite, particle weights all vanished, UKF
 //          sigma spread widened: numerical_repairs.hpp); the NIS window is full and its mean
-//          lies outside the chi-square bounds (filter inconsistent: Q or R mistuned); the mean
+//          lies outside the chi-square bounds (filter inconsistent: what that tells and what to
+//          check, nisAdvice); the mean
 //          estimation step took longer than the period; ROS time did not advance since the
 //          previous report (a paused bag or simulation: no estimates)
 //   OK     otherwise
@@ -195,8 +196,7 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
                 health_detail::format(bounds.lower) + ", " + health_detail::format(bounds.upper) +
                 "] and more than a factor " + health_detail::format(nis.tolerance()) +
                 " from its expected " + health_detail::format(nis.expectedMean()) +
-                (nis.mean() > bounds.upper ? " (innovations larger than S: Q or R too small?)"
-                                           : " (innovations smaller than S: Q or R too large?)"));
+                " (" + nisAdvice(nis.mean() > bounds.upper) + ")");
   }
   if (steps > 0 && stepSeconds > e.period) {
     s.raise(HealthLevel::Warn, "estimation step takes longer than the period");
