@@ -18,6 +18,9 @@
 #include <cstddef>
 #include <iterator>
 
+#include <boost/preprocessor/seq/elem.hpp>
+#include <boost/preprocessor/seq/for_each.hpp>
+
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
 

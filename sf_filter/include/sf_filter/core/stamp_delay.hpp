@@ -97,7 +97,7 @@ class StampDelays {
 inline std::string delayFigures(const StampDelays& d) {
   if (d.count() == 0) return "no stamped values";
   char text[96];
-  std::snprintf(text, sizeof text, "median %.3g ms, p95 %.3g ms", 1e3 * d.quantile(0.5),
+  std::snprintf(text, sizeof text, "median %.1f ms, p95 %.1f ms", 1e3 * d.quantile(0.5),
                 1e3 * d.quantile(0.95));
   return text;
 }
