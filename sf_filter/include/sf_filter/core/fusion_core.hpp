@@ -90,8 +90,9 @@ struct CanInflateByProcessNoise<
 template <class F, class = void>
 struct CanSetBelief : std::false_type {};
 template <class F>
-struct CanSetBelief<F, std::void_t<decltype(std::declval<F&>().setBelief(
-                           std::declval<const F&>().state(), std::declval<const F&>().covariance()))>>
+struct CanSetBelief<F,
+                    std::void_t<decltype(std::declval<F&>().setBelief(
+                        std::declval<const F&>().state(), std::declval<const F&>().covariance()))>>
     : std::true_type {};
 
 /// The fusion core of one filter type: FusionCoreBase (compiled once) does the scheduling,
@@ -132,9 +133,9 @@ class FusionCore : public FusionCoreBase {
         control_(estimation::Vector<L>::Zero(filter_.controlSize())) {
     for (const Options::FirstReading& f : options.initialFromInputs) {
       if (f.state < 0 || f.state >= static_cast<int>(filter_.state().size())) {
-        throw estimation::ParameterError("initial state from inputs: state " +
-                                         std::to_string(f.state) + " is not one of the " +
-                                         std::to_string(filter_.state().size()) + " state variables");
+        throw estimation::ParameterError(
+            "initial state from inputs: state " + std::to_string(f.state) + " is not one of the " +
+            std::to_string(filter_.state().size()) + " state variables");
       }
     }
     armFirstReadings();
@@ -415,7 +416,7 @@ class FusionCore : public FusionCoreBase {
   bool covariancesGiven_ = false;        ///< measurement_ holds covariances to clear
   /// Per Options::initialFromInputs entry: its state still waits for the input's first value.
   std::vector<bool> firstReadingsDue_;
-  estimation::Vector<L> control_;        ///< the controls in force, in the filter's type
+  estimation::Vector<L> control_;  ///< the controls in force, in the filter's type
   Estimate last_;
   estimation::NumericalRepairs repairsBeforeRestart_;  ///< of the filters before restarts
 };

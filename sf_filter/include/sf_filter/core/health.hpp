@@ -195,8 +195,8 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
             "filter inconsistent: NIS mean " + health_detail::format(nis.mean()) + " outside [" +
                 health_detail::format(bounds.lower) + ", " + health_detail::format(bounds.upper) +
                 "] and more than a factor " + health_detail::format(nis.tolerance()) +
-                " from its expected " + health_detail::format(nis.expectedMean()) +
-                " (" + nisAdvice(nis.mean() > bounds.upper) + ")");
+                " from its expected " + health_detail::format(nis.expectedMean()) + " (" +
+                nisAdvice(nis.mean() > bounds.upper) + ")");
   }
   if (steps > 0 && stepSeconds > e.period) {
     s.raise(HealthLevel::Warn, "estimation step takes longer than the period");

@@ -62,8 +62,7 @@ class StampDelays {
  private:
   static int binOf(double delay) {
     if (!(delay > lowerEdge(1))) return 0;
-    const int b = static_cast<int>(
-        std::floor((std::log2(delay) - kLowestOctave) * kBinsPerOctave));
+    const int b = static_cast<int>(std::floor((std::log2(delay) - kLowestOctave) * kBinsPerOctave));
     return b >= kBins ? kBins - 1 : b;
   }
   /// The lower edge of bin b (b = kBins: the upper edge of the highest).
