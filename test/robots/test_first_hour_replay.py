@@ -18,7 +18,7 @@ rate twice the true one, --slip-chi 2) cut to start in a turn (wheels -1.35 rad/
 must stay within 2 of its own standard deviations of the simulator's bias; the header's old
 start at v = omega = 0 read the first period as standstill and wrote 0.057 times the slip,
 about 0.04 rad/s (8 standard deviations), into it. The Odometry's twist (TWIST_OUT, item 6)
-is the state's v and omega with their variances.
+is the state's v and omega with their variances, for this header and a Pioneer one.
 
 The executable comes from $SF_LIB_DIR or the sourced devel space (skipped when not built).
 """
@@ -157,19 +157,35 @@ class StartInMotion(unittest.TestCase):
         self.assertLess(worst, 2.0)
 
     def test_odometry_twist_is_the_states_velocity(self):
-        import rosbag  # noqa: E402
-        by_time = {round(r["time"], 6): r for r in self.rows}
-        seen = 0
-        with rosbag.Bag(os.path.join(self.tmp.name, "out.bag")) as bag:
-            for _, msg, _ in bag.read_messages(topics=["/odometry/filtered"]):
-                row = by_time[round(msg.header.stamp.to_sec(), 6)]
-                self.assertAlmostEqual(msg.twist.twist.linear.x, row["x3"], places=9)
-                self.assertAlmostEqual(msg.twist.twist.angular.z, row["x4"], places=9)
-                self.assertAlmostEqual(msg.twist.covariance[0], row["var3"], places=12)
-                self.assertAlmostEqual(msg.twist.covariance[35], row["var4"], places=12)
-                self.assertEqual(msg.twist.covariance[7], 1e6)  # lateral speed: not estimated
-                seen += 1
-        self.assertGreater(seen, 100)
+        check_twist(self, os.path.join(self.tmp.name, "out.bag"), self.rows, 3, 4)
+
+
+def check_twist(test, out_bag, rows, v, omega):
+    """The replay's /odometry/filtered twist is x[v] and x[omega] with their variances."""
+    import rosbag  # noqa: E402
+    by_time = {round(r["time"], 6): r for r in rows}
+    seen = 0
+    with rosbag.Bag(out_bag) as bag:
+        for _, msg, _ in bag.read_messages(topics=["/odometry/filtered"]):
+            row = by_time[round(msg.header.stamp.to_sec(), 6)]
+            test.assertAlmostEqual(msg.twist.twist.linear.x, row["x%d" % v], places=9)
+            test.assertAlmostEqual(msg.twist.twist.angular.z, row["x%d" % omega], places=9)
+            test.assertAlmostEqual(msg.twist.covariance[0], row["var%d" % v], places=12)
+            test.assertAlmostEqual(msg.twist.covariance[35], row["var%d" % omega], places=12)
+            test.assertEqual(msg.twist.covariance[7], 1e6)  # lateral speed: not estimated
+            seen += 1
+    test.assertGreater(seen, 100)
+
+
+class PioneerTwist(unittest.TestCase):
+    """The Pioneer headers' Odometry twist (TWIST_OUT (5)(3): v = x[5], omega = x[3])."""
+
+    def test_nav3ctrl_ekf(self):
+        with tempfile.TemporaryDirectory(prefix="sf_pioneer_twist_test_") as tmp:
+            csv_path, out_bag = os.path.join(tmp, "out.csv"), os.path.join(tmp, "out.bag")
+            replay_exe("sf_nav3ctrl_ekf", os.path.join(REPO, "bags", "pioneer_seed1.bag"),
+                       csv_path, "--bag", out_bag)
+            check_twist(self, out_bag, read_rows(csv_path), 5, 3)
 
 
 if __name__ == "__main__":
