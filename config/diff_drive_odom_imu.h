@@ -78,6 +78,9 @@
   ((2.5e-5)(0)(0)) \
   ((0)(4e-4)(0)) \
   ((0)(0)(1.25e-5))
+// v = omega = 0 at the start is harmless here (unlike config/skid_steer_odom_imu.h, whose
+// standstill test reads them): the wheels' yaw rate is an observation of omega in every
+// period, so the first period teaches the bias what every other period does.
 #define INITIAL_STATE (0)(0)(0)(0)(0)(0)
 #define INITIAL_ERROR_COVARIANCE \
   ((0)(0)(0)(0)(0)(0)) \
