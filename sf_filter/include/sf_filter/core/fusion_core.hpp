@@ -283,6 +283,7 @@ class FusionCore : public FusionCoreBase {
 
   void armFirstReadings() {
     firstReadingsDue_.assign(options().initialFromInputs.size(), CanSetBelief<Filter>::value);
+    firstReadingsLeft_ = CanSetBelief<Filter>::value ? firstReadingsDue_.size() : 0;
   }
 
   /// Options::initialFromInputs: the state variables whose input has its first measured value
@@ -290,6 +291,7 @@ class FusionCore : public FusionCoreBase {
   /// reading once, the covariance being kept). True when the belief changed.
   bool takeFirstReadings() {
     if constexpr (CanSetBelief<Filter>::value) {
+      if (firstReadingsLeft_ == 0) return false;
       bool changed = false;
       estimation::Vector<N> x = filter_.state();
       for (std::size_t k = 0; k < firstReadingsDue_.size(); ++k) {
@@ -298,6 +300,7 @@ class FusionCore : public FusionCoreBase {
         if (!firstReadingsDue_[k] || !e.measured) continue;
         x(f.state) = e.value;
         firstReadingsDue_[k] = false;
+        --firstReadingsLeft_;
         changed = true;
       }
       if (changed) filter_.setBelief(x, filter_.covariance());
@@ -416,7 +419,8 @@ class FusionCore : public FusionCoreBase {
   bool covariancesGiven_ = false;        ///< measurement_ holds covariances to clear
   /// Per Options::initialFromInputs entry: its state still waits for the input's first value.
   std::vector<bool> firstReadingsDue_;
-  estimation::Vector<L> control_;  ///< the controls in force, in the filter's type
+  std::size_t firstReadingsLeft_ = 0;  ///< entries of firstReadingsDue_ still true
+  estimation::Vector<L> control_;      ///< the controls in force, in the filter's type
   Estimate last_;
   estimation::NumericalRepairs repairsBeforeRestart_;  ///< of the filters before restarts
 };
