@@ -74,7 +74,7 @@ def late_counts(line):
 class LateValuesReplay(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.tmp = tempfile.TemporaryDirectory(prefix="sf_late_values_test_")
+        cls.tmp = tempfile.TemporaryDirectory(prefix="sf_first_hour_late_test_")
         cls.bag = os.path.join(cls.tmp.name, "late_imu.bag")
         sim.main(["--seed", "3", "--duration", "40", "--imu-latency-ms", str(LATENCY_MS),
                   "--imu-jitter-ms", str(JITTER_MS), "--compression", "none", "--out", cls.bag])
