@@ -151,6 +151,16 @@ TEST(LateAdvice, TheInputsDiagnosticWarningNamesTheDelaysAndTheParameter) {
   EXPECT_NE(h.message.find("~max_measurement_lag 0.026 would keep 99 % (now 0.02)"),
             std::string::npos)
       << h.message;
+  // Every value late (150 ms behind a lag of 20 ms): ERROR, with the same advice.
+  const Core allLate = runDelayedSpeed(0.02, 0.15);
+  in.now = allLate.counters(0);
+  in.before = sf_filter::InputCounters();
+  const sf_filter::HealthStatus e = sf_filter::inputHealth(allLate.inputOptions(0), in);
+  EXPECT_EQ(e.level, sf_filter::HealthLevel::Error);
+  EXPECT_EQ(e.message.rfind("all 500 values dropped (500 late: stamp-to-arrival delay median ", 0),
+            0u)
+      << e.message;
+  EXPECT_NE(e.message.find("would keep 99 % (now 0.02)"), std::string::npos) << e.message;
   // 25 ms lies in the bin [2^-5.375, 2^-5.3125) s, whose middle is 2^-5.34375 s = 24.625 ms.
   EXPECT_NEAR(std::stod(h.value("stamp-to-arrival delay median [ms]")), 24.625, 1e-3);
   EXPECT_NEAR(std::stod(h.value("stamp-to-arrival delay p95 [ms]")), 24.625, 1e-3);

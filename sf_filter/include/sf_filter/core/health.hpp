@@ -103,7 +103,8 @@ inline HealthStatus inputHealth(const InputOptions& o, const InputInterval& in) 
   const std::uint64_t gated = c.gated - b.gated;
   const double age = std::isnan(c.lastAccepted) ? in.sinceStart : in.clock - c.lastAccepted;
   if (received > 0 && dropped == received) {
-    s.raise(HealthLevel::Error, "all " + std::to_string(received) + " values dropped");
+    s.raise(HealthLevel::Error, "all " + std::to_string(received) + " values dropped" +
+                                    health_detail::lateReason(in, c.late - b.late));
   } else if (dropped > 0) {
     s.raise(HealthLevel::Warn, std::to_string(dropped) + " values dropped" +
                                    health_detail::lateReason(in, c.late - b.late));
