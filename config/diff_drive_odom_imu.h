@@ -78,6 +78,9 @@
   ((2.5e-5)(0)(0)) \
   ((0)(4e-4)(0)) \
   ((0)(0)(1.25e-5))
+// v = omega = 0 at the start is harmless here (unlike config/skid_steer_odom_imu.h, whose
+// standstill test reads them): the wheels' yaw rate is an observation of omega in every
+// period, so the first period teaches the bias what every other period does.
 #define INITIAL_STATE (0)(0)(0)(0)(0)(0)
 #define INITIAL_ERROR_COVARIANCE \
   ((0)(0)(0)(0)(0)(0)) \
@@ -94,6 +97,8 @@
   ((fused/x)(0))((fused/y)(1))((fused/heading)(2)) \
   ((fused/linear_velocity)(3))((fused/angular_velocity)(4))((fused/gyro_bias)(5))
 #define POSE_OUT (0)(1)(2)
+// The Odometry's twist from v and omega (doc/configuration.md, "Outputs").
+#define TWIST_OUT (3)(4)
 #define BASE_FRAME base_link
 #define FRAME_ALIGNED_INPUTS ((2)(angular_velocity)(z))
 #define ANGLE_STATES (2)

@@ -45,6 +45,18 @@
 //   longer shortens its steps as the sigma points' average did (issue 13: that UKF
 //   contracted a real track to half); the particle filter's pose mean is taken on SE(2).
 //   Raise it for a cold gyro that stands still at start.
+// - No standstill assumed at the start. The standstill test k(v, omega) reads the estimate,
+//   and an initial v = omega = 0 would be read as standstill: the first period would take the
+//   wheels' yaw rate as exact and write the difference to the gyro, all slip on a recording that
+//   starts in a turn, into b_g (issue 37: 0.0019 rad/s on a real Husky recording, kept until its
+//   first stop 236 s later). So v starts at the first wheel speed and omega at the first gyro
+//   reading (INITIAL_STATE_FROM_INPUTS, minus b_g's initial 0; the gyro, not the slipping
+//   wheels, carries the yaw rate), their variances of 1 kept: the test then sees measured
+//   values from the first step on. Chosen over gating the test on the readings themselves,
+//   which an observation model cannot see, and over a "moving" x0, which would move the pose
+//   in the first period. The particle filter (config/husky_skid_steer_pf.h) cannot replace
+//   its belief and keeps x0; its particles, spread over v and omega by P0, read mostly as
+//   moving anyway.
 // - Position does not jump. Nothing measures x, y or theta; they are integrated from the
 //   velocities of the previous period's estimate (the state transition below uses x[3],
 //   x[4] of the last a posteriori estimate). A Kalman update moves a state only through its
@@ -108,6 +120,8 @@
   ((0)(4e-4)(0)) \
   ((0)(0)(1.25e-5))
 #define INITIAL_STATE (0)(0)(0)(0)(0)(0)(0)
+// v from the wheels' first speed, omega from the gyro's first yaw rate (see above).
+#define INITIAL_STATE_FROM_INPUTS ((3)(0))((4)(2))
 #define INITIAL_ERROR_COVARIANCE \
   ((0)(0)(0)(0)(0)(0)(0)) \
   ((0)(0)(0)(0)(0)(0)(0)) \
@@ -124,6 +138,8 @@
   ((fused/x)(0))((fused/y)(1))((fused/heading)(2)) \
   ((fused/linear_velocity)(3))((fused/angular_velocity)(4))((fused/gyro_bias)(5))
 #define POSE_OUT (0)(1)(2)
+// The Odometry's twist from v and omega (doc/configuration.md, "Outputs").
+#define TWIST_OUT (3)(4)
 #define BASE_FRAME base_link
 #define FRAME_ALIGNED_INPUTS ((2)(angular_velocity)(z))
 #define ANGLE_STATES (2)

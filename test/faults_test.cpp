@@ -445,6 +445,36 @@ TEST(Faults, TheNisFlagsTheMistunedFilterAndPassesTheTunedOne) {
   EXPECT_GT(numberOf(*mistuned, "NIS mean"), numberOf(*mistuned, "NIS upper bound (97.5 %)"));
 }
 
+// Last: its stamps run 180 ms behind the clock, which the nodes aligning by arrival ignore
+// (the first is older than the previous test's and dropped as out of order).
+TEST(Faults, LateValuesNameTheirDelayAndTheLagThatKeepsThem) {
+  Harness& h = *harness;
+  h.mark();
+  // Stamped 180 ms before the period's middle: in the period before the previous one, which
+  // was estimated 20 ms after its end, 80 ms (or, with the node's clock still at the period's
+  // start, 30 ms) before the value arrives.
+  h.run(10, [&](double t) { h.sendSpeed(t - 0.18, kSpeed); });
+  // ERROR when every value of a report's interval was late, WARN when some were.
+  const auto late = h.find("late/faults_kf: input 0 (faults/speed", [](const DiagnosticStatus& s) {
+    return s.level != DiagnosticStatus::OK && s.message.find(" late: ") != std::string::npos &&
+           numberOf(s, "dropped: late") >= 8;
+  });
+  ASSERT_TRUE(late) << "the late values were not reported";
+  EXPECT_NE(late->message.find("late: stamp-to-arrival delay median "), std::string::npos)
+      << late->message;
+  EXPECT_NE(late->message.find("(now 0.02)"), std::string::npos) << late->message;
+  const std::string key = "~max_measurement_lag ";
+  const std::size_t at = late->message.find(key);
+  ASSERT_NE(at, std::string::npos) << late->message;
+  // The delays since the start: the earlier tests' values (stamped at their arrival, 0 ms)
+  // and these, 180 ms at the period's middle or 130 ms at its start. The advised lag keeps
+  // the late ones, and is at most one bin (4.4 %) and a millisecond above the longest.
+  const double lag = std::stod(late->message.substr(at + key.size()));
+  EXPECT_GE(lag, 0.130) << late->message;
+  EXPECT_LE(lag, 0.180 * 1.045 + 0.001) << late->message;
+  EXPECT_NE(valueOf(*late, "stamp-to-arrival delay p95 [ms]"), "") << late->message;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -41,4 +41,6 @@
               (PIONEER_POSE_START_VARIANCE)(1)(1)(1))
 #define TOPICS_OUT PIONEER_POSE_OUTPUTS
 #define POSE_OUT PIONEER_POSE_INDICES
+// The Odometry's twist: v = x[5], omega = x[3].
+#define TWIST_OUT (5)(3)
 #define ANGLE_STATES PIONEER_ANGLE_STATES

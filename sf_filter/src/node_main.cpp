@@ -117,13 +117,24 @@ double numberOption(const std::string& option, const std::string& text) {
   return value;
 }
 
-/// The replay summary's line per input: what it received, used, dropped (by reason), gated.
-void printInputCounters(const std::string& name, const sf_filter::FusionEngine& core) {
+/// The replay summary's line per input: what it received, used, dropped (by reason), gated,
+/// the stamp-to-arrival delays; and for an input with late values, why and the lag to set.
+void printInputCounters(const std::string& name, const sf_filter::FusionEngine& core,
+                        const std::vector<std::string>& inputs) {
   for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
     const sf_filter::InputCounters& c = core.counters(i);
     std::cout << name << ": input " << i << ": " << c.received << " received, " << c.used
               << " used, dropped: " << sf_filter::dropReasons(c) << ", " << c.gated << " gated, "
-              << c.timedOutPeriods << " periods timed out" << std::endl;
+              << c.timedOutPeriods << " periods timed out, stamp-to-arrival delay "
+              << sf_filter::delayFigures(c.delays) << std::endl;
+  }
+  for (sf_filter::Index i = 0; i < core.inputCount(); ++i) {
+    const auto index = static_cast<std::size_t>(i);
+    if (core.counters(i).late == 0) continue;
+    std::cout << name << ": "
+              << sf_filter::lateAdvice(index, inputs.at(index), core.counters(i),
+                                       core.maxMeasurementLag(), "--max-lag (~max_measurement_lag)")
+              << std::endl;
   }
 }
 
@@ -569,7 +580,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
                   << s.smoothedSegments << " segments) in " << s.smoothingSeconds << " s, "
                   << s.smoothingBytesPerPeriod << " bytes per period" << std::endl;
       }
-      printInputCounters(options.nodeName, replay.core());
+      printInputCounters(options.nodeName, replay.core(), def.description.inputs);
       printNis(options.nodeName, replay.core(), def.description.inputs);
       printGpsCounters(options.nodeName, replay, def.description.inputs);
       if (aligner) {

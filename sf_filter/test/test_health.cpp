@@ -157,6 +157,22 @@ TEST(EstimationHealth, FlagsAnInconsistentNisAndErrsOnAFailure) {
   auto h = sf_filter::estimationHealth(e, nis);
   EXPECT_EQ(h.level, HealthLevel::Warn);
   EXPECT_EQ(h.message.rfind("filter inconsistent: NIS mean 9 outside [", 0), 0u) << h.message;
+  // Above: what may cause it and where to see which input.
+  EXPECT_NE(h.message.find("(innovations larger than S: Q or R too small, a sensor bias or a "
+                           "wrong model; a replay's per-input NIS shows which input)"),
+            std::string::npos)
+      << h.message;
+  // Below: no push to tune a track that may be right (issue 37).
+  sf_filter::NisWindow small(20);
+  for (int k = 0; k < 20; ++k) small.add(0.02, 1);
+  const auto below = sf_filter::estimationHealth(e, small);
+  EXPECT_EQ(below.level, HealthLevel::Warn);
+  EXPECT_NE(below.message.find("(innovations smaller than S: the variances are pessimistic, the "
+                               "track can still be right; check it against a reference before "
+                               "tuning Q or R)"),
+            std::string::npos)
+      << below.message;
+  EXPECT_EQ(below.message.find("too large?"), std::string::npos) << below.message;
   EXPECT_EQ(h.value("NIS consistent"), "false");
   EXPECT_EQ(h.value("NIS degrees of freedom"), "20");
   e.now.failures = 1;

@@ -1,7 +1,9 @@
 """Unit tests of tools/eval/gps_holdout.py: the split into fused and held-out fixes, the turn
 of ENU into the odom frame, the held track, the errors at held-out points, the yaw offset
 measured on a track turned by a known angle, and the reduced bag (hand-made, written with
-rosbag) that leaves out exactly the held-out fixes."""
+rosbag) that leaves out exactly the held-out fixes; the whole evaluation with the replays
+replaced by known tracks: fixes before the first estimate (issue 37: TypeError) and the
+nodes, topic, remaps, static transforms and parameters given as options."""
 
 import math
 import os
@@ -116,6 +118,92 @@ class ReducedBagTest(unittest.TestCase):
                 others = [m for _, m, _ in bag.read_messages(topics=["/other"])]
             self.assertEqual([round(m.header.stamp.to_sec(), 3) for m in fixes], [100.0, 101.2])
             self.assertEqual(len(others), 6)
+
+
+@unittest.skipIf(rosbag is None, "python3-rosbag missing")
+class EvaluateHoldoutTest(unittest.TestCase):
+    """evaluate_holdout with pioneer_nodes.replay replaced by a writer of a known track: the
+    robot drives east at 1 m/s, the track 0.5 m ahead of it, from t = 100.066 s (the first
+    estimate 66 ms after the first fix, as on the recording of issue 37); fixes every 0.4 s
+    from t = 100.0 s on the true path, on the bag's topic /gps/fix."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.bag = os.path.join(self.tmp.name, "in.bag")
+        self.calls = []
+        self.frame = None
+        with rosbag.Bag(self.bag, "w") as bag:
+            for k in range(60):
+                t = 100.0 + 0.4 * k
+                m = NavSatFix()
+                m.header.stamp = rospy.Time.from_sec(t)
+                m.status.status = 0
+                m.latitude, m.longitude, m.altitude = self.latlon(t - 100.0)
+                bag.write("/gps/fix", m, rospy.Time.from_sec(t + 0.001))
+        self.saved_replay = gh.pioneer_nodes.replay
+        gh.pioneer_nodes.replay = self.fake_replay
+
+    def tearDown(self):
+        gh.pioneer_nodes.replay = self.saved_replay
+        self.tmp.cleanup()
+
+    @staticmethod
+    def latlon(east):
+        """The point `east` metres east of 49 N 8 E along its parallel (WGS84: the parallel's
+        radius is N cos(lat), N the prime vertical radius; a few mm off the tangent plane)."""
+        lat = math.radians(49.0)
+        n = 6378137.0 / math.sqrt(1.0 - 6.69437999014e-3 * math.sin(lat) ** 2)
+        return 49.0, 8.0 + math.degrees(east / (n * math.cos(lat))), 100.0
+
+    def fake_replay(self, exe, bag, csv_path, extra=()):
+        self.calls.append((os.path.basename(exe), list(extra)))
+        with open(csv_path, "w") as f:
+            f.write("time,pose_x,pose_y,pose_heading\n")
+            for k in range(3000):
+                t = 100.066 + 0.01 * k
+                f.write("%.3f,%.6f,0,0\n" % (t, t - 100.0 + 0.5))
+        return "summary"
+
+    def test_fixes_before_the_first_estimate_and_the_options(self):
+        setup = gh.HoldoutSetup("sf_my_gps", "sf_my_odom", "/gps/fix",
+                                gh.replay_args(["odom:=/wheels/odom"],
+                                               [["0", "0", "0.2", "0", "0", "0", "base_link",
+                                                 "imu"]]),
+                                None)
+        result = gh.evaluate_holdout(self.bag, "/nowhere", self.tmp.name, 5, 10.0, setup)
+        transform = ["--static-transform", "0", "0", "0.2", "0", "0", "0", "base_link", "imu"]
+        self.assertEqual(self.calls[0], ("sf_my_odom", ["odom:=/wheels/odom"] + transform))
+        self.assertEqual(self.calls[1][0], "sf_my_gps")
+        self.assertEqual(self.calls[1][1][2:], ["odom:=/wheels/odom"] + transform)
+        self.assertEqual(result["left_out"], 48)  # 60 fixes, every 5th fused
+        self.assertAlmostEqual(result["yaw_offset"], 0.0, places=3)  # both east
+        by_label = {r["label"]: r for r in result["rows"]}
+        # The fused fix at 100.0 s lies before the track: left out of the fit, which moves the
+        # track back by its 0.5 m; every held-out fix lies inside the track and is compared.
+        fit = by_label["no GPS, best fit on the fused fixes"]
+        self.assertEqual(fit["n"], 48)
+        self.assertLess(fit["rmse"], 0.01)
+        self.assertAlmostEqual(by_label["no GPS, same frame (`sf_my_odom`)"]["rmse"], 0.5,
+                               delta=0.01)
+
+    def test_user_parameters_go_to_both_replays_and_keep_the_measured_offset(self):
+        params = os.path.join(self.tmp.name, "user.yaml")
+        with open(params, "w") as f:
+            f.write("max_measurement_lag: 0.05\ngps_yaw_offset: 1.0\n")
+        setup = gh.HoldoutSetup(fix_topic="/gps/fix", params=params)
+        gh.evaluate_holdout(self.bag, "/nowhere", self.tmp.name, 5, 10.0, setup)
+        self.assertEqual(self.calls[0][1], ["--params", params])
+        with open(os.path.join(self.tmp.name, "gps.yaml")) as f:
+            written = f.read().splitlines()
+        self.assertEqual(written[0], "max_measurement_lag: 0.05")
+        self.assertEqual(len(written), 2)
+        self.assertAlmostEqual(float(written[1].split(":")[1]), 0.0, places=3)
+
+    def test_bad_options_are_refused(self):
+        with self.assertRaises(ValueError):
+            gh.replay_args(["odom"], [])
+        with self.assertRaises(ValueError):
+            gh.replay_args([], [["0", "0", "x", "0", "0", "0", "a", "b"]])
 
 
 if __name__ == "__main__":

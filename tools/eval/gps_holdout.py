@@ -3,7 +3,9 @@
 
 Usage:
   gps_holdout.py [--bag bags/husky_gps.bag] [--every 5] [--calibration 10] [--lib-dir DIR]
-                 [--out-dir DIR] [--plot OUT.png]
+                 [--out-dir DIR] [--plot OUT.png] [--node NODE] [--baseline-node NODE]
+                 [--fix-topic /fix] [--remap FROM:=TO]... [--params FILE.yaml]
+                 [--static-transform X Y Z YAW PITCH ROLL PARENT CHILD]...
 
 The valid fixes of the bag's /fix (sensor_msgs/NavSatFix, status >= STATUS_FIX) are split:
 fix k is *fused* when k % EVERY == 0 (fix 0, the datum, is fused), *held out* otherwise. A
@@ -30,6 +32,14 @@ held-out fixes, and the RMSE on the fused ones; rows:
                       (all of them: a batch alignment no online filter has)
   fused fixes held    the last fused fix held until the next one (what the GPS alone gives
                       between fused fixes)
+
+Another robot's recording: --node and --baseline-node name the GPS node and the node without
+GPS (built from the user's headers), --fix-topic the bag's NavSatFix topic, and --remap,
+--static-transform and --params go to both replays as to the node's own --replay (the
+configured topic FROM read from the bag's TO; a transform the bag lacks; a YAML of private
+parameters, to which the GPS node's replay adds its own with gps_yaw_offset). Fixes before
+the first estimate or after the last (a fix recorded 66 ms before the odometry) are left out
+of the comparisons and the fits.
 
 The executables are found as real_robot_report.py finds them (--lib-dir, else the sourced
 devel space, else $SF_WS/devel). Needs python3-rosbag, and python3-matplotlib for --plot.
@@ -127,6 +137,58 @@ def calibrate_yaw_offset(track, fused_points, seconds):
     return gr.fit_rigid_2d(src, dst)[0]
 
 
+def best_fit_track(track, points):
+    """`track` moved by its best rotation and shift onto the points [(t, x, y)] inside its
+    time range (at least two)."""
+    src, dst = [], []
+    for t, x, y in points:
+        p = ev.interpolate(track, t)
+        if p is not None:
+            src.append(p[:2])
+            dst.append((x, y))
+    if len(src) < 2:
+        raise ValueError("fewer than 2 fused fixes inside the track's time range")
+    moved = gr.apply_rigid_2d(gr.fit_rigid_2d(src, dst), list(zip(track.x, track.y)))
+    return ev.make_trajectory(track.t, [p[0] for p in moved], [p[1] for p in moved])
+
+
+class HoldoutSetup:
+    """Which nodes replay the recording, and what both replays are given."""
+
+    def __init__(self, node=GPS_NODE, baseline_node=BASELINE_NODE, fix_topic="/fix",
+                 replay_args=(), params=None):
+        self.node, self.baseline_node, self.fix_topic = node, baseline_node, fix_topic
+        self.replay_args = list(replay_args)  # remaps and --static-transform, as --replay takes
+        self.params = params  # a YAML of private parameters, or None
+
+
+def replay_args(remaps, transforms):
+    """The replay's arguments for remaps ["FROM:=TO"] and transforms [[X, Y, Z, YAW, PITCH,
+    ROLL, PARENT, CHILD]] (checked: FROM:=TO with both names, six numbers)."""
+    args = []
+    for remap in remaps:
+        source, sep, target = remap.partition(":=")
+        if not sep or not source or not target:
+            raise ValueError("--remap %r: expected FROM:=TO" % remap)
+        args.append(remap)
+    for t in transforms:
+        for value in t[:6]:
+            float(value)  # ValueError names the value
+        args += ["--static-transform"] + list(t)
+    return args
+
+
+def gps_params(path, yaw_offset, user_params=None):
+    """Writes the GPS node's parameter file: the user's YAML (if any) and gps_yaw_offset."""
+    text = ""
+    if user_params:
+        with open(user_params) as f:
+            text = "\n".join(line for line in f.read().splitlines()
+                             if not line.strip().startswith("gps_yaw_offset:")) + "\n"
+    with open(path, "w") as f:
+        f.write(text + "gps_yaw_offset: %.9f\n" % yaw_offset)
+
+
 def write_reduced_bag(in_path, out_path, keep_stamps, topic="/fix"):
     """Copies in_path to out_path without the messages of `topic` whose header stamp is not in
     keep_stamps (raw bytes and connection headers kept); returns the number left out."""
@@ -154,40 +216,38 @@ def _fix_stamp(raw, t):
     return stamp.to_sec()
 
 
-def evaluate_holdout(bag, lib_dir, out_dir, every=5, calibration=10.0):
-    """Replays and compares as described above. Returns a dict: fixes (valid), fused and held
-    ([(t, x, y)] in the odom frame), left_out (messages left out of the copy), yaw_offset
-    [rad], summary (the GPS node's replay output) and rows, one dict per track: label,
-    track, n (held-out fixes compared), rmse, max, final, fused_rmse [m]."""
-    fixes = gr.read_fixes(bag)
+def evaluate_holdout(bag, lib_dir, out_dir, every=5, calibration=10.0, setup=None):
+    """Replays and compares as described above (`setup`: a HoldoutSetup, the shipped Husky
+    nodes by default). Returns a dict: fixes (valid), fused and held ([(t, x, y)] in the odom
+    frame), left_out (messages left out of the copy), yaw_offset [rad], summary (the GPS
+    node's replay output) and rows, one dict per track: label, track, n (held-out fixes
+    compared), rmse, max, final, fused_rmse [m]."""
+    setup = setup or HoldoutSetup()
+    fixes = gr.read_fixes(bag, setup.fix_topic)
     fused, held = split_fixes(fixes, every)
     frame = gr.LocalFrame(fused[0][2], fused[0][3], fused[0][4])
+    user = (["--params", setup.params] if setup.params else []) + setup.replay_args
 
-    base_csv = os.path.join(out_dir, BASELINE_NODE + ".csv")
-    pioneer_nodes.replay(os.path.join(lib_dir, BASELINE_NODE), bag, base_csv)
+    base_csv = os.path.join(out_dir, setup.baseline_node + ".csv")
+    pioneer_nodes.replay(os.path.join(lib_dir, setup.baseline_node), bag, base_csv, user)
     base = ev.load_result_csv(base_csv)
     yaw_offset = calibrate_yaw_offset(base, odom_points(frame, fused, 0.0), calibration)
 
     reduced = os.path.join(out_dir, "fused_fixes.bag")
-    left_out = write_reduced_bag(bag, reduced, [f[0] for f in fused])
+    left_out = write_reduced_bag(bag, reduced, [f[0] for f in fused], setup.fix_topic)
     params = os.path.join(out_dir, "gps.yaml")
-    with open(params, "w") as f:
-        f.write("gps_yaw_offset: %.9f\n" % yaw_offset)
-    gps_csv = os.path.join(out_dir, GPS_NODE + ".csv")
-    summary = pioneer_nodes.replay(os.path.join(lib_dir, GPS_NODE), reduced, gps_csv,
-                                   ["--params", params])
+    gps_params(params, yaw_offset, setup.params)
+    gps_csv = os.path.join(out_dir, setup.node + ".csv")
+    summary = pioneer_nodes.replay(os.path.join(lib_dir, setup.node), reduced, gps_csv,
+                                   ["--params", params] + setup.replay_args)
     gps_track = ev.load_result_csv(gps_csv)
 
     fused_pts = odom_points(frame, fused, yaw_offset)
     held_pts = odom_points(frame, held, yaw_offset)
-    fit = gr.fit_rigid_2d(
-        [ev.interpolate(base, t)[:2] for t, _, _ in fused_pts], [(x, y) for _, x, y in fused_pts])
-    moved = gr.apply_rigid_2d(fit, list(zip(base.x, base.y)))
-    base_fit = ev.make_trajectory(base.t, [p[0] for p in moved], [p[1] for p in moved])
     rows = []
-    for label, track in (("GPS node (`%s`)" % GPS_NODE, gps_track),
-                         ("no GPS, same frame (`%s`)" % BASELINE_NODE, base),
-                         ("no GPS, best fit on the fused fixes", base_fit),
+    for label, track in (("GPS node (`%s`)" % setup.node, gps_track),
+                         ("no GPS, same frame (`%s`)" % setup.baseline_node, base),
+                         ("no GPS, best fit on the fused fixes", best_fit_track(base, fused_pts)),
                          ("fused fixes held", held_track(fused_pts))):
         errors = holdout_errors(track, held_pts)
         rmse, emax, final = gr.error_stats(errors)
@@ -210,26 +270,41 @@ def main(argv=None):
     parser.add_argument("--lib-dir", help="where the sf_husky_* executables are")
     parser.add_argument("--out-dir", help="keep the bag, parameters and CSVs here")
     parser.add_argument("--plot", help="write the tracks and fixes (PNG)")
+    parser.add_argument("--node", default=GPS_NODE, help="the GPS node (default %(default)s)")
+    parser.add_argument("--baseline-node", default=BASELINE_NODE,
+                        help="the node without GPS (default %(default)s)")
+    parser.add_argument("--fix-topic", default="/fix", help="the bag's NavSatFix topic")
+    parser.add_argument("--remap", action="append", default=[], metavar="FROM:=TO",
+                        help="read the configured topic FROM from the bag's TO (both replays)")
+    parser.add_argument("--static-transform", action="append", nargs=8, default=[],
+                        metavar=("X", "Y", "Z", "YAW", "PITCH", "ROLL", "PARENT", "CHILD"),
+                        help="a transform the bag lacks (both replays)")
+    parser.add_argument("--params", help="a YAML of private parameters (both replays)")
     args = parser.parse_args(argv)
+    try:
+        setup = HoldoutSetup(args.node, args.baseline_node, args.fix_topic,
+                             replay_args(args.remap, args.static_transform), args.params)
+    except ValueError as e:
+        parser.error(str(e))
 
     # tmp keeps a temporary out_dir until main returns.
     lib_dir, out_dir, tmp = pioneer_nodes.husky_dirs(args.lib_dir, args.out_dir)  # noqa: F841
     if not lib_dir:
         return 2
 
-    result = evaluate_holdout(args.bag, lib_dir, out_dir, args.every, args.calibration)
+    result = evaluate_holdout(args.bag, lib_dir, out_dir, args.every, args.calibration, setup)
     print("# %s: %d valid fixes, %d fused (every %d), %d held out; %d /fix messages left out "
           "of the replayed copy" % (os.path.basename(args.bag), result["fixes"],
                                     len(result["fused"]), args.every, len(result["held"]),
                                     result["left_out"]))
     print("# yaw offset from the fused fixes of the first %g s: %.2f deg" %
           (args.calibration, math.degrees(result["yaw_offset"])))
-    covariances = gr.covariance_summary(gr.read_covariances(args.bag))
+    covariances = gr.covariance_summary(gr.read_covariances(args.bag, args.fix_topic))
     print("# fix covariances: %s; %d with entries off the diagonal, %d with unequal east and "
           "north variances" % (", ".join("%d %s" % (n, t) for t, n in
                                          sorted(covariances["types"].items())),
                                covariances["off_diagonal"], covariances["unequal_en"]))
-    print("# %s replay: %s" % (GPS_NODE, result["summary"].replace("\n", "\n#   ")))
+    print("# %s replay: %s" % (args.node, result["summary"].replace("\n", "\n#   ")))
     print()
     print("| track | held-out fixes | RMSE [m] | max [m] | final [m] | RMSE on fused fixes [m] |")
     print("| --- | --- | --- | --- | --- | --- |")

@@ -244,6 +244,7 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
       return Rejection::FutureStamp;
     }
     c.lastStamp = stamp;
+    c.delays.add(now - stamp);
     // A value is never sent before it is stamped: stamps of two inputs ahead of the clock's
     // reading tell that the clock stands still while the values come (rosbag play catching up
     // publishes them without /clock); one input alone may only have a clock running ahead.
@@ -502,6 +503,13 @@ const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Ind
     throw estimation::ParameterError("input options: expected " + std::to_string(inputs) +
                                      " entries (one per input), found " +
                                      std::to_string(o.inputs.size()));
+  }
+  for (const FusionCoreOptions::FirstReading& f : o.initialFromInputs) {
+    if (f.input < 0 || f.input >= inputs) {
+      throw estimation::ParameterError("initial state from inputs: input " +
+                                       std::to_string(f.input) + " is not one of the " +
+                                       std::to_string(inputs) + " inputs");
+    }
   }
   for (std::size_t i = 0; i < o.inputs.size(); ++i) {
     const std::string problem = inputOptionsProblem(o.inputs[i]);

@@ -287,4 +287,5 @@
 #include "sf_filter/config/gps_inputs.hpp"
 #include "sf_filter/config/input_covariance_blocks.hpp"
 #include "sf_filter/config/twist_output.hpp"
+#include "sf_filter/config/initial_from_inputs.hpp"
 #endif

@@ -46,6 +46,14 @@
 // flagged and counted; only
 // Options::maxConsecutiveFailures rejected steps in a row restart the filter from its initial
 // belief (filterResets()).
+//
+// First readings (Options::initialFromInputs, INITIAL_STATE_FROM_INPUTS). A state variable the
+// header cannot know in advance (a velocity: the recording may start in motion) takes the
+// aligned value of its input in the first period that has one, set into the belief before that
+// period's step with its covariance kept, so that the step predicts with it and weighs the
+// reading once; the gates of that period have already been checked against the initial state.
+// Armed again by every reset and filter restart. Filters without setBelief (the particle
+// filter, the averaging methods) start from the initial state as before.
 #pragma once
 
 #include <algorithm>
@@ -54,6 +62,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include <sf_estimation/errors.hpp>
 #include <sf_estimation/measurement.hpp>
@@ -75,6 +84,15 @@ struct CanInflateByProcessNoise<
     F, std::void_t<decltype(std::declval<F&>().setBelief(
            std::declval<const F&>().state(),
            std::declval<const F&>().covariance() + std::declval<const F&>().processNoise()))>>
+    : std::true_type {};
+
+/// Whether the filter can replace its belief (setBelief: the Kalman filter family).
+template <class F, class = void>
+struct CanSetBelief : std::false_type {};
+template <class F>
+struct CanSetBelief<F,
+                    std::void_t<decltype(std::declval<F&>().setBelief(
+                        std::declval<const F&>().state(), std::declval<const F&>().covariance()))>>
     : std::true_type {};
 
 /// The fusion core of one filter type: FusionCoreBase (compiled once) does the scheduling,
@@ -113,6 +131,14 @@ class FusionCore : public FusionCoreBase {
         prediction_(filter_.measurementSize()),
         measured_(filter_.measurementSize()),
         control_(estimation::Vector<L>::Zero(filter_.controlSize())) {
+    for (const Options::FirstReading& f : options.initialFromInputs) {
+      if (f.state < 0 || f.state >= static_cast<int>(filter_.state().size())) {
+        throw estimation::ParameterError(
+            "initial state from inputs: state " + std::to_string(f.state) + " is not one of the " +
+            std::to_string(filter_.state().size()) + " state variables");
+      }
+    }
+    armFirstReadings();
     fillEstimate(0.0);
   }
 
@@ -206,6 +232,8 @@ class FusionCore : public FusionCoreBase {
       return estimation::squaredMahalanobisDistance(get(), input, value, variance);
     }
     double mean(Index input) override { return get().mean(input); }
+    /// The filter's belief changed: predict again when next asked.
+    void forget() { predicted_ = false; }
     const estimation::MeasurementPrediction<M>& get() {
       if constexpr (kCanPredict) {
         if (!predicted_) core_.filter_.predictMeasurement(core_.prediction_);
@@ -250,6 +278,36 @@ class FusionCore : public FusionCoreBase {
   void restartFilter() {
     repairsBeforeRestart_ = numericalRepairs();
     filter_ = initial_;
+    armFirstReadings();
+  }
+
+  void armFirstReadings() {
+    firstReadingsDue_.assign(options().initialFromInputs.size(), CanSetBelief<Filter>::value);
+    firstReadingsLeft_ = CanSetBelief<Filter>::value ? firstReadingsDue_.size() : 0;
+  }
+
+  /// Options::initialFromInputs: the state variables whose input has its first measured value
+  /// in this period take it, before the step (which then predicts with it and weighs the
+  /// reading once, the covariance being kept). True when the belief changed.
+  bool takeFirstReadings() {
+    if constexpr (CanSetBelief<Filter>::value) {
+      if (firstReadingsLeft_ == 0) return false;
+      bool changed = false;
+      estimation::Vector<N> x = filter_.state();
+      for (std::size_t k = 0; k < firstReadingsDue_.size(); ++k) {
+        const Options::FirstReading& f = options().initialFromInputs[k];
+        const PeriodEntry& e = periodEntries()[static_cast<std::size_t>(f.input)];
+        if (!firstReadingsDue_[k] || !e.measured) continue;
+        x(f.state) = e.value;
+        firstReadingsDue_[k] = false;
+        --firstReadingsLeft_;
+        changed = true;
+      }
+      if (changed) filter_.setBelief(x, filter_.covariance());
+      return changed;
+    } else {
+      return false;
+    }
   }
 
   /// Aligns the current period's inputs, estimates, and moves the schedule on.
@@ -262,6 +320,7 @@ class FusionCore : public FusionCoreBase {
       filter_.setControl(control_);
       LazyPrediction prediction(*this);
       alignInputs(prediction);
+      if (takeFirstReadings()) prediction.forget();
       const auto& entries = periodEntries();
       for (Index i = 0; i < filter_.measurementSize(); ++i) {
         const auto& e = entries[static_cast<std::size_t>(i)];
@@ -358,7 +417,10 @@ class FusionCore : public FusionCoreBase {
   estimation::MeasurementPrediction<M> prediction_;
   estimation::Measurement<M> measured_;  ///< the period's measured entries, for the NIS
   bool covariancesGiven_ = false;        ///< measurement_ holds covariances to clear
-  estimation::Vector<L> control_;        ///< the controls in force, in the filter's type
+  /// Per Options::initialFromInputs entry: its state still waits for the input's first value.
+  std::vector<bool> firstReadingsDue_;
+  std::size_t firstReadingsLeft_ = 0;  ///< entries of firstReadingsDue_ still true
+  estimation::Vector<L> control_;      ///< the controls in force, in the filter's type
   Estimate last_;
   estimation::NumericalRepairs repairsBeforeRestart_;  ///< of the filters before restarts
 };

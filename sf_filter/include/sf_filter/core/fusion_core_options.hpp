@@ -56,6 +56,16 @@ struct FusionCoreOptions {
   /// fault that waiting does not mend); counted by filterResets(). At least 1 (1: restart at
   /// once).
   std::uint64_t maxConsecutiveFailures = 10;
+  /// A state variable that starts at an input's first reading (INITIAL_STATE_FROM_INPUTS).
+  struct FirstReading {
+    int state = 0;
+    int input = 0;
+  };
+  /// State variables set, before the step of the first period in which their input has a
+  /// measured value (after the start and after every reset), to that value; their covariance
+  /// is kept, so the step still weighs the reading once. Only filters that can replace their
+  /// belief (the Kalman family); others start from the initial state (fusion_core.hpp).
+  std::vector<FirstReading> initialFromInputs;
 };
 
 }  // namespace sf_filter

@@ -42,6 +42,19 @@
 
 namespace sf_filter {
 
+/// What a NIS mean outside its bounds tells, and what to check (doc/filter_node.md, "What OK
+/// and WARN mean"). Above: the innovations exceed S, which a sensor bias, a wrong model or a
+/// too small Q or R gives; the replay's per-input NIS lines show which input. Below: S is
+/// larger than the innovations, the variances are pessimistic (or an input is uninformative
+/// by design), which does not make the track wrong: tuning Q and R for consistency alone can
+/// make the track worse (issue 37), so the track is checked against a reference first.
+inline const char* nisAdvice(bool above) {
+  return above ? "innovations larger than S: Q or R too small, a sensor bias or a wrong model; "
+                 "a replay's per-input NIS shows which input"
+               : "innovations smaller than S: the variances are pessimistic, the track can "
+                 "still be right; check it against a reference before tuning Q or R";
+}
+
 struct NisBounds {
   double lower = 0.0;
   double upper = 0.0;

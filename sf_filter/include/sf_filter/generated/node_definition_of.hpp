@@ -447,8 +447,13 @@ inline NodeDefinition nodeDefinition() {
     return toRunTime(sf_config::defaultParameters(periodMs));
   };
   d.makeEngine = [](const FilterParameters& parameters, const FusionCoreOptions& options) {
+    FusionCoreOptions o = options;
+    for (std::size_t k = 0; k < sf_config::kInitialFromInputsCount; ++k) {
+      o.initialFromInputs.push_back(
+          {sf_config::kInitialFromInputs[k].state, sf_config::kInitialFromInputs[k].input});
+    }
     return std::unique_ptr<FusionEngine>(
-        new FusionEngineOf<Filter>(makeFilter(toFixedSize(parameters)), options));
+        new FusionEngineOf<Filter>(makeFilter(toFixedSize(parameters)), o));
   };
   return d;
 }

@@ -118,6 +118,7 @@ class FusionDiagnostics {
     in.interval = interval();
     in.sinceStart = core_.clock() - core_.startTime();
     in.timedOut = core_.timedOut(input);
+    in.maxMeasurementLag = core_.maxMeasurementLag();
     fill(inputHealth(core_.inputOptions(input), in), s);
     for (std::size_t j = 0; j < lossSources_.size(); ++j) {
       const InputLossSource& source = lossSources_[j];

@@ -185,22 +185,13 @@ class FusionNode final : public MessageSink {
   void measurement(Index input, double now, double value, std::optional<double> variance,
                    double stamp) override {
     const Rejection r = core_.addMeasurement(input, now, value, variance, stamp);
-    if (r != Rejection::None) {
-      ROS_WARN_THROTTLE(5.0, "dropped a value of input %ld (%s): %s", static_cast<long>(input),
-                        description_.inputs.at(static_cast<std::size_t>(input)).c_str(),
-                        toString(r));
-    }
+    if (r != Rejection::None) reportDrop(input, r, "a value");
   }
 
   void measurementBlock(const Index* inputs, const double* values, const double* covariance,
                         int count, double now, double stamp) override {
     const Rejection r = core_.addMeasurementBlock(inputs, values, covariance, count, now, stamp);
-    if (r != Rejection::None) {
-      ROS_WARN_THROTTLE(5.0, "dropped a value of the covariance block of input %ld (%s): %s",
-                        static_cast<long>(inputs[0]),
-                        description_.inputs.at(static_cast<std::size_t>(inputs[0])).c_str(),
-                        toString(r));
-    }
+    if (r != Rejection::None) reportDrop(inputs[0], r, "a value of the covariance block");
   }
 
   void control(Index index, double value) override {
@@ -222,6 +213,26 @@ class FusionNode final : public MessageSink {
 
  private:
   using MessageEvent = ros::MessageEvent<topic_tools::ShapeShifter const>;
+
+  /// A value of input `input` dropped for `r`. Late values are explained per input, with
+  /// their delays and the lag that would keep them (lateAdvice): at the first, then at most
+  /// every kLateWarningPeriod s of wall time; other drops in one line every 5 s.
+  void reportDrop(Index input, Rejection r, const char* what) {
+    const auto i = static_cast<std::size_t>(input);
+    if (r == Rejection::TooLate && i < description_.inputs.size()) {
+      if (lateWarnings_.empty()) lateWarnings_.resize(description_.inputs.size());
+      const ros::WallTime now = ros::WallTime::now();
+      if (lateWarnings_[i].isZero() || (now - lateWarnings_[i]).toSec() >= kLateWarningPeriod) {
+        lateWarnings_[i] = now;
+        ROS_WARN("%s", lateAdvice(i, description_.inputs[i], core_.counters(input),
+                                  core_.maxMeasurementLag())
+                           .c_str());
+      }
+      return;
+    }
+    ROS_WARN_THROTTLE(5.0, "dropped %s of input %ld (%s): %s", what, static_cast<long>(input),
+                      description_.inputs.at(i).c_str(), toString(r));
+  }
 
   /// A message of `reader`'s topic: the clock advances to its arrival, then the reader reads it.
   void receive(const TopicReader& reader, const MessageEvent& event) {
@@ -533,7 +544,7 @@ class FusionNode final : public MessageSink {
         std::snprintf(range, sizeof range, ", range [%g, %g]", o.minimum, o.maximum);
         alignment += range;
       }
-      ROS_INFO("  input %zu: %s (%s)", i, description_.inputs[i].c_str(), alignment.c_str());
+      ROS_INFO("  input %zu: %s (%s)", i, resolvedInput(i).c_str(), alignment.c_str());
     }
     if (byStamp) {
       ROS_INFO("  periods wait %.1f ms for stamped values", core_.maxMeasurementLag() * 1000.0);
@@ -563,6 +574,17 @@ class FusionNode final : public MessageSink {
   /// [s] a pose in another frame waits for tf's first transform (the listener starts with
   /// the first such pose, so /tf_static's latched transforms arrive within this).
   static constexpr double kPoseTfWait = 2.0;
+  /// Input i's "topic field" name with the topic as subscribed (namespace and remaps applied),
+  /// and the configured name when a remap changed it: the log shows what the node listens to.
+  std::string resolvedInput(std::size_t i) const {
+    const std::string& name = description_.inputs.at(i);
+    const std::size_t space = name.find(' ');
+    const std::string topic = name.substr(0, space);
+    const std::string resolved = nh_.resolveName(topic);
+    const std::string rest = space == std::string::npos ? "" : name.substr(space);
+    const bool remapped = resolved != nh_.resolveName(topic, false);
+    return resolved + rest + (remapped ? " [remapped from " + topic + "]" : "");
+  }
 
   ros::NodeHandle nh_, pnh_;
   NodeDescription description_;
@@ -609,6 +631,9 @@ class FusionNode final : public MessageSink {
   ros::WallTimer clockWait_;      ///< reports the wait for the first /clock message
   ros::Publisher waitingReport_;  ///< /diagnostics while the updater cannot run yet
   ros::WallTime waitingSince_, lastWaitWarning_;
+  /// Seconds between two explanations of an input's late values (reportDrop).
+  static constexpr double kLateWarningPeriod = 60.0;
+  std::vector<ros::WallTime> lateWarnings_;  ///< per input: the last one (zero: none yet)
   tf2_ros::TransformBroadcaster broadcaster_;
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;

@@ -22,8 +22,8 @@ inline std::string nisVerdict(const NisSeries& series) {
   const NisBounds b = series.bounds();
   const double mean = series.mean();
   if (series.inconsistent()) {
-    return mean > b.upper ? "inconsistent, above (innovations larger than S: Q or R too small?)"
-                          : "inconsistent, below (innovations smaller than S: Q or R too large?)";
+    return std::string(mean > b.upper ? "inconsistent, above (" : "inconsistent, below (") +
+           nisAdvice(mean > b.upper) + ")";
   }
   if (mean < b.lower || mean > b.upper) {
     char text[96];
