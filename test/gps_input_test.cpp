@@ -106,7 +106,8 @@ TEST(GpsInput, CovarianceOfEastAndNorthReachesTheSinkTurned) {
   sink.blocks.clear();
 
   // KNOWN: east 1, north 2, their covariance 0.5; R = Rot S Rot^T by hand (local_frame.hpp):
-  // xx = c^2 + 2 c s 0.5 + 2 s^2, yy = s^2 - 2 c s 0.5 + 2 c^2, xy = -c s + (c^2 - s^2) 0.5 + 2 c s.
+  // xx = c^2 + 2 c s 0.5 + 2 s^2, yy = s^2 - 2 c s 0.5 + 2 c^2, xy = -c s + (c^2 - s^2) 0.5 + 2 c
+  // s.
   sensor_msgs::NavSatFix known = navSatFix(hundredMetresNorth(), 2.0, 0, 3);
   known.position_covariance = {1.0, 0.5, 0.0, 0.5, 2.0, 0.0, 0.0, 0.0, 3.24};
   feed(fix, known, sink, 0.0);

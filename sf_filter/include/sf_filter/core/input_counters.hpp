@@ -77,9 +77,9 @@ struct InputCounters {
   /// dropped: the message's covariance block is no covariance (not finite, asymmetric beyond
   /// estimation::kSymmetryTolerance, not positive definite); every value of the message
   std::uint64_t badCovariance = 0;
-  std::uint64_t gated = 0;        ///< values of periods whose value failed the gate
-  std::uint64_t superseded = 0;   ///< LAST, SAMPLED: values replaced by a newer one in a period
-  std::uint64_t substituted = 0;  ///< periods given a HOLD or FILL substitute (not values)
+  std::uint64_t gated = 0;            ///< values of periods whose value failed the gate
+  std::uint64_t superseded = 0;       ///< LAST, SAMPLED: values replaced by a newer one in a period
+  std::uint64_t substituted = 0;      ///< periods given a HOLD or FILL substitute (not values)
   std::uint64_t aheadOfClock = 0;     ///< stamps beyond the open periods, used in the newest one
   std::uint64_t timedOutPeriods = 0;  ///< periods estimated while the input was timed out
   double lastArrival = std::numeric_limits<double>::quiet_NaN();

@@ -609,7 +609,7 @@ class FusionNode final : public MessageSink {
     const auto it = wrongType_.find(nh_.resolveName(name.substr(0, name.find(' '))));
     return it == wrongType_.end() ? none : it->second;
   }
-  std::map<std::string, WrongType> wrongType_;  ///< by resolved topic name
+  std::map<std::string, WrongType> wrongType_;        ///< by resolved topic name
   std::map<std::string, std::string> resolvedTypes_;  ///< subscribed: resolved topic -> type
   std::vector<ros::Subscriber> subscribers_;
   std::vector<ros::Subscriber> setPoseSubscribers_;

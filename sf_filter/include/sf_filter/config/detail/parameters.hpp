@@ -30,8 +30,8 @@ struct Parameters {
   double ukf_beta = kUkfBeta;                          ///< UKF_BETA (default 2)
   double ukf_kappa = kUkfKappa;                        ///< UKF_KAPPA (default 0)
   bool ukf_propagated_mean = kUkfPropagatedMean;  ///< UKF_PROPAGATED_MEAN (default: ANGLE_STATES)
-  int window_size = kWindowSize;                       ///< WINDOW_SIZE (default 1, CWA only)
-  Eigen::VectorXd weighting_coefficients;              ///< WEIGHTING_COEFFICIENTS (default empty)
+  int window_size = kWindowSize;                  ///< WINDOW_SIZE (default 1, CWA only)
+  Eigen::VectorXd weighting_coefficients;         ///< WEIGHTING_COEFFICIENTS (default empty)
 };
 
 /// The parameters of the configuration header. Matrix and vector entries may use T, which is
