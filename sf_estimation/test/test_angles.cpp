@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <optional>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -175,7 +176,7 @@ TEST(AngleParticles, CircularMeanOfParticlesAcrossPi) {
   const Matrix<1, 1> q = Matrix<1, 1>::Constant(1e-4), r = Matrix<1, 1>::Constant(0.01);
   const Vector<1> x0 = Vector<1>::Constant(kPi - 0.05);
   const Matrix<1, 1> P0 = Matrix<1, 1>::Constant(0.01);
-  estimation::ParticleFilterParameters params{2000, 5, 0.5};
+  estimation::ParticleFilterParameters params{2000, 5, 0.5, std::nullopt};
   estimation::ParticleFilterSIR<Compass> pf(Compass{}, q, r, x0, P0, params, kCompassAngles);
   const Measurement<1> z = Measurement<1>::complete(Vector<1>::Constant(-kPi + 0.05));
   for (int k = 0; k < 5; ++k) pf.estimate(z);

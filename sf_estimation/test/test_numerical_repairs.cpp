@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <random>
 #include <utility>
 
@@ -143,7 +144,7 @@ TEST(ParticleWeights, NotANumberLikelihoodIsZeroWeight) {
   // step; the estimate is the weighted mean of the others, all positive.
   estimation::ParticleFilterSIR<SquareRootSensor> pf(
       SquareRootSensor{}, Matrix<1, 1>::Zero(), Matrix<1, 1>::Constant(0.04), Vector<1>::Zero(),
-      Matrix<1, 1>::Identity(), estimation::ParticleFilterParameters{1000, 9, 0.0});
+      Matrix<1, 1>::Identity(), estimation::ParticleFilterParameters{1000, 9, 0.0, std::nullopt});
   pf.estimate(Measurement<1>::complete(Vector<1>::Constant(0.8)));
   ASSERT_TRUE(pf.state().allFinite());
   EXPECT_GT(pf.state()(0), 0.3);  // near 0.64 = 0.8^2
