@@ -102,7 +102,7 @@ TEST(ParticleWeights, AllWeightsVanishedDropsTheMeasurement) {
   // z = 1e200 with R = 1: every squared residual overflows to infinity, every likelihood is
   // zero. The step must equal the same step with the measurement missing (same random
   // numbers), and be counted.
-  const estimation::ParticleFilterParameters params{500, 3, 0.5};
+  const estimation::ParticleFilterParameters params{500, 3, 0.5, std::nullopt};
   using PF = estimation::ParticleFilterSIR<Direct>;
   PF pf(Direct{}, Matrix<1, 1>::Constant(0.01), Matrix<1, 1>::Identity(), Vector<1>::Zero(),
         Matrix<1, 1>::Identity(), params);
