@@ -18,6 +18,7 @@
 #include "sf_filter/core/innovation_record.hpp"
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
+#include "sf_filter/core/lagged_smoother.hpp"
 #include "sf_filter/core/nis_window.hpp"
 #include "sf_filter/core/period_smoother.hpp"
 
@@ -109,6 +110,12 @@ class FusionEngine {
   /// An offline smoother of this core's run (period_smoother.hpp), which records the periods
   /// it is told to and keeps a reference to the core; null for a filter without one.
   virtual std::unique_ptr<PeriodSmoother> makeSmoother() const { return nullptr; }
+  /// An online smoother with a lag of `lagPeriods` periods (lagged_smoother.hpp), fed by the
+  /// caller after each estimate; nullptr for a filter without a smoother.
+  virtual std::unique_ptr<LaggedSmoother> makeLaggedSmoother(std::size_t lagPeriods) const {
+    (void)lagPeriods;
+    return nullptr;
+  }
 
   /// The filter's own description ("extended Kalman filter", ...) and sizes.
   virtual std::string filterDescription() const = 0;

@@ -15,6 +15,7 @@
 
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/core/lagged_smoother_of.hpp"
 #include "sf_filter/core/period_smoother_of.hpp"
 
 namespace sf_filter {
@@ -112,6 +113,14 @@ class FusionEngineOf final : public FusionEngine {
   std::unique_ptr<PeriodSmoother> makeSmoother() const override {
     if constexpr (HasSmoother<Filter>::value) {
       return std::make_unique<PeriodSmootherOf<Core>>(core_);
+    } else {
+      return nullptr;
+    }
+  }
+
+  std::unique_ptr<LaggedSmoother> makeLaggedSmoother(std::size_t lagPeriods) const override {
+    if constexpr (HasSmoother<Filter>::value) {
+      return std::make_unique<LaggedSmootherOf<Core>>(core_, lagPeriods);
     } else {
       return nullptr;
     }

@@ -17,6 +17,14 @@ struct PeriodBelief {
   Eigen::Map<const Eigen::MatrixXd> covariance;
 };
 
+/// A fixed- or dynamic-size mean and covariance viewed as a PeriodBelief.
+template <class X, class P>
+PeriodBelief viewOf(const X& x, const P& covariance) {
+  const auto n = x.size();
+  return {Eigen::Map<const Eigen::VectorXd>(x.data(), n),
+          Eigen::Map<const Eigen::MatrixXd>(covariance.data(), n, n)};
+}
+
 class PeriodSmoother {
  public:
   virtual ~PeriodSmoother() = default;

@@ -23,6 +23,32 @@ struct HasSmoother<Filter,
                    std::void_t<decltype(estimation::smootherFor(std::declval<const Filter&>()))>>
     : std::true_type {};
 
+/// Turns a core's last estimates into the smoothers' record (estimation::FilteredPeriod): a
+/// period is linked to the previously recorded one only when the filter reached it by a time
+/// update from it. A rejected step (the belief kept and widened by Q), a restart or a clock
+/// reset since the last record (the filter back at its initial belief) is not such an update.
+template <class Core, class Period>
+class PeriodRecorder {
+ public:
+  Period next(const Core& core) {
+    const auto& e = core.lastEstimate();
+    const bool predicted =
+        linked_ && !e.stepFailed && !e.filterReset && core.clockResets() == clockResets_;
+    clockResets_ = core.clockResets();
+    linked_ = true;
+    if (!predicted) ++segments_;
+    return Period{e.state, e.covariance, core.filter().control(), predicted};
+  }
+  /// The next period starts a new segment (its predecessor was not recorded).
+  void cut() { linked_ = false; }
+  std::size_t segments() const { return segments_; }
+
+ private:
+  bool linked_ = false;
+  std::uint64_t clockResets_ = 0;
+  std::size_t segments_ = 0;
+};
+
 template <class Core>
 class PeriodSmootherOf final : public PeriodSmoother {
   using Filter = std::decay_t<decltype(std::declval<const Core&>().filter())>;
@@ -35,44 +61,26 @@ class PeriodSmootherOf final : public PeriodSmoother {
   explicit PeriodSmootherOf(const Core& core)
       : core_(core), smoother_(estimation::smootherFor(core.filter())) {}
 
-  void record() override {
-    const auto& e = core_.lastEstimate();
-    // The core's last estimate is the filter's committed belief; a rejected step (the belief
-    // kept and widened by Q), a restart, or a clock reset since the last record (the filter
-    // back at its initial belief) is not a time update from the recorded predecessor.
-    const bool predicted =
-        !record_.empty() && !e.stepFailed && !e.filterReset && core_.clockResets() == clockResets_;
-    clockResets_ = core_.clockResets();
-    record_.push_back(Period{e.state, e.covariance, core_.filter().control(), predicted});
-    if (!predicted) ++segments_;
-  }
+  void record() override { record_.push_back(recorder_.next(core_)); }
 
   void smooth() override { smoother_.smooth(record_, smoothed_); }
 
   std::size_t periods() const override { return record_.size(); }
-  std::size_t segments() const override { return segments_; }
-  PeriodBelief filtered(std::size_t k) const override { return view(record_[k].x, record_[k].P); }
+  std::size_t segments() const override { return recorder_.segments(); }
+  PeriodBelief filtered(std::size_t k) const override { return viewOf(record_[k].x, record_[k].P); }
   PeriodBelief smoothed(std::size_t k) const override {
-    return view(smoothed_[k].x, smoothed_[k].P);
+    return viewOf(smoothed_[k].x, smoothed_[k].P);
   }
   std::size_t bytesPerPeriod() const override {
     return sizeof(Period) + sizeof(estimation::SmoothedPeriod<N>);
   }
 
  private:
-  template <class X, class P>
-  static PeriodBelief view(const X& x, const P& covariance) {
-    const auto n = x.size();
-    return {Eigen::Map<const Eigen::VectorXd>(x.data(), n),
-            Eigen::Map<const Eigen::MatrixXd>(covariance.data(), n, n)};
-  }
-
   const Core& core_;
   Smoother smoother_;
   std::vector<Period> record_;
   std::vector<estimation::SmoothedPeriod<N>> smoothed_;
-  std::uint64_t clockResets_ = 0;
-  std::size_t segments_ = 0;
+  PeriodRecorder<Core, Period> recorder_;
 };
 
 }  // namespace sf_filter
