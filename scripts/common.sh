@@ -42,7 +42,7 @@ SF_DEB_PACKAGES=(
   libeigen3-dev libboost-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   libnlopt-dev libnlopt-cxx-dev
   libceres-dev
-  python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-matplotlib
+  python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-tf2 python3-matplotlib
   python3-diagnostic-msgs tf2-tools python3-rosservice python3-rostopic
   libgeographiclib-dev
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools pluginlib-dev

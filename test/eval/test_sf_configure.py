@@ -1,0 +1,77 @@
+"""Unit tests of tools/sf_configure's decisions against hand-computed answers: the robot class
+from the wheels' against the gyro's turn, the measurement lag from the delays, the period from
+the rate, and the static transform that puts a found gyro axis on the base's z (checked by
+rotating the axis with hand-written rotation matrices)."""
+
+import importlib.machinery
+import importlib.util
+import math
+import os
+import sys
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.dont_write_bytecode = True
+
+
+def load_tool():
+    path = os.path.join(REPO, "tools", "sf_configure")
+    loader = importlib.machinery.SourceFileLoader("sf_configure", path)
+    spec = importlib.util.spec_from_loader("sf_configure", loader)
+    module = importlib.util.module_from_spec(spec)
+    loader.exec_module(module)
+    return module
+
+
+sfc = load_tool()
+
+
+def matrix_rpy(yaw, pitch, roll):
+    """Rz(yaw) Ry(pitch) Rx(roll) written out (the tf2 / static_transform_publisher order)."""
+    cy, sy, cp, sp, cr, sr = (math.cos(yaw), math.sin(yaw), math.cos(pitch), math.sin(pitch),
+                              math.cos(roll), math.sin(roll))
+    return [[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+            [-sp, cp * sr, cp * cr]]
+
+
+class DecisionsTest(unittest.TestCase):
+    def test_robot_class_by_the_wheels_turn(self):
+        self.assertEqual(sfc.robot_class(1.0), sfc.DIFF_DRIVE)
+        self.assertEqual(sfc.robot_class(1.09), sfc.DIFF_DRIVE)
+        self.assertEqual(sfc.robot_class(0.91), sfc.DIFF_DRIVE)
+        self.assertEqual(sfc.robot_class(1.11), sfc.SKID_STEER)
+        self.assertEqual(sfc.robot_class(2.06), sfc.SKID_STEER)  # the Husky recording
+        with self.assertRaisesRegex(sfc.ConfigureError, "0.50 times the gyro's turn"):
+            sfc.robot_class(0.5)
+
+    def test_lag_is_the_worst_p99_plus_2_ms_rounded_up_to_5_ms(self):
+        # 9.5 ms + 2 = 11.5 -> 15; 34.5 + 2 = 36.5 -> 40; exactly 18 + 2 = 20 stays 20.
+        self.assertAlmostEqual(sfc.measurement_lag([0.004, 0.0095]), 0.015, delta=1e-12)
+        self.assertAlmostEqual(sfc.measurement_lag([0.0, 0.0345]), 0.040, delta=1e-12)
+        self.assertAlmostEqual(sfc.measurement_lag([0.018]), 0.020, delta=1e-12)
+        self.assertAlmostEqual(sfc.measurement_lag([]), 0.005, delta=1e-12)
+        self.assertAlmostEqual(sfc.measurement_lag([None, 0.001]), 0.005, delta=1e-12)
+
+    def test_period_is_one_over_the_rate_in_milliseconds(self):
+        self.assertAlmostEqual(sfc.estimation_period(10.0), 0.1, delta=1e-12)
+        self.assertAlmostEqual(sfc.estimation_period(8.3), 0.120, delta=1e-12)
+        self.assertAlmostEqual(sfc.estimation_period(50.0), 0.02, delta=1e-12)
+
+    def test_static_transform_puts_the_gyro_axis_on_the_base_z(self):
+        for axis in range(3):
+            for sign in (1, -1):
+                ypr = sfc.yaw_axis_transform(axis, sign)
+                m = matrix_rpy(*ypr)
+                # The IMU's axis `axis` with `sign`, in the base frame: the column of m.
+                in_base = [sign * m[row][axis] for row in range(3)]
+                for got, want in zip(in_base, (0.0, 0.0, 1.0)):
+                    self.assertAlmostEqual(got, want, delta=1e-12, msg="axis %d sign %d" % (axis, sign))
+                for got, want in zip(sfc.rotate(ypr, [sign * (k == axis) for k in range(3)]),
+                                     in_base):
+                    self.assertAlmostEqual(got, want, delta=1e-12)
+
+
+if __name__ == "__main__":
+    unittest.main()
