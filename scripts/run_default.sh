@@ -22,7 +22,7 @@ for node in ast.parse(open(sys.argv[1]).read()).body:
 ' "${SF_REPO_ROOT}/tools/eval/pioneer_report.py")
   ((${#targets[@]} > 1)) \
     || sf_die "no default nodes read from tools/eval/pioneer_report.py (DEFAULT_CONFIGS)"
-  # Nine nodes built once: each compiles the fixed-size steps of its own sizes, instead of the
+  # Ten nodes built once: each compiles the fixed-size steps of its own sizes, instead of the
   # library compiling the whole size grid for every node to come (doc/build_cost.md, "The main
   # job's build"). run_tests.sh and --all turn the grid back on.
   SF_CMAKE_ARGS=(-DSF_ESTIMATION_EXPLICIT_INSTANCES=OFF)
