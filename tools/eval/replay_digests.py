@@ -37,7 +37,8 @@ PAIRS = ([("sf_%s_%s" % (model, method), "bags/pioneer_seed1.bag")
           if os.path.exists(os.path.join(REPO, "config", "%s_%s.h" % (model, method)))] +
          [("sf_soccer_%s" % name, "bags/soccer_seed1.bag")
           for name in ("kf", "vision_kf", "encoder_kf")] +
-         [("sf_diff_drive_odom_imu", "bags/diff_drive_seed1.bag"),
+         [("sf_pioneer_skid_steer_ekf", "bags/pioneer_seed1.bag"),
+          ("sf_diff_drive_odom_imu", "bags/diff_drive_seed1.bag"),
           ("sf_skid_steer_odom_imu", "bags/diff_drive_seed1.bag")] +
          [("sf_husky_%s" % name, "bags/husky_gps.bag")
           for name in ("diff_drive_ekf", "diff_drive_ukf", "diff_drive_pf", "skid_steer_ekf",
