@@ -7,7 +7,9 @@ import importlib.machinery
 import importlib.util
 import math
 import os
+import subprocess
 import sys
+import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -71,6 +73,41 @@ class DecisionsTest(unittest.TestCase):
                 for got, want in zip(sfc.rotate(ypr, [sign * (k == axis) for k in range(3)]),
                                      in_base):
                     self.assertAlmostEqual(got, want, delta=1e-12)
+
+
+class OutputsTest(unittest.TestCase):
+    """Every output is checked as the C++ tools check theirs (doc/reliability.md): an output
+    that is an input, or a symbolic link, is refused before anything is written."""
+
+    def run_tool(self, *args):
+        return subprocess.run([sys.executable, os.path.join(REPO, "tools", "sf_configure")] + list(args),
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True,
+                              timeout=120)
+
+    def test_an_output_that_is_the_input_bag_is_refused(self):
+        with tempfile.TemporaryDirectory(prefix="sf_configure_out_") as tmp:
+            bag = os.path.join(tmp, "robot.launch")
+            os.link(os.path.join(REPO, "bags", "diff_drive_seed1.bag"), bag)
+            before = os.stat(bag)
+            proc = self.run_tool(bag, "--out", tmp, "--no-replay")
+            self.assertEqual(proc.returncode, 1, proc.stdout + proc.stderr)
+            self.assertIn("is the input", proc.stderr)
+            self.assertEqual(os.stat(bag).st_size, before.st_size)
+            self.assertEqual(sorted(os.listdir(tmp)), ["robot.launch"])
+
+    def test_a_symbolic_link_is_refused_and_its_target_kept(self):
+        with tempfile.TemporaryDirectory(prefix="sf_configure_out_") as tmp:
+            target = os.path.join(tmp, "kept.md")
+            with open(target, "w") as f:
+                f.write("mine\n")
+            os.symlink(target, os.path.join(tmp, "report.md"))
+            proc = self.run_tool(os.path.join(REPO, "bags", "diff_drive_seed1.bag"), "--out", tmp,
+                                 "--no-replay")
+            self.assertEqual(proc.returncode, 1, proc.stdout + proc.stderr)
+            self.assertIn("report.md: it is not a regular file", proc.stderr)
+            with open(target) as f:
+                self.assertEqual(f.read(), "mine\n")
+            self.assertFalse(os.path.exists(os.path.join(tmp, "robot.yaml")))
 
 
 if __name__ == "__main__":
