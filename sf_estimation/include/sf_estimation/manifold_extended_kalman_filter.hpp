@@ -71,15 +71,22 @@ class ManifoldExtendedKalmanFilter : public manifold::ManifoldFilterBase<Model> 
 
   /// F and G at the current state (see the top of the file) and f(x, u, 0).
   void transitionJacobians(const Control& u, State& next, Matrix<D, D>& F, Matrix<D, W>& G) const {
+    transitionJacobiansAt(this->model_, this->x_, u, next, F, G);
+  }
+
+  /// F and G of `model` at the state x and f(x, u, 0) (the smoother re-derives its
+  /// predictions with it, manifold_rts_smoother.hpp).
+  static void transitionJacobiansAt(const Model& model, const State& at, const Control& u,
+                                    State& next, Matrix<D, D>& F, Matrix<D, W>& G) {
     using Ad = Eigen::AutoDiffScalar<Vector<D + W>>;
     typename Space::template Tangent<Ad> e;
     Eigen::Matrix<Ad, W, 1> w;
     for (Index i = 0; i < D; ++i) e(i) = Ad(0.0, D + W, i);
     for (Index i = 0; i < W; ++i) w(i) = Ad(0.0, D + W, D + i);
     const typename Space::template Stored<Ad> x =
-        Space::template plus<Ad>(this->x_.template cast<Ad>(), e);
+        Space::template plus<Ad>(at.template cast<Ad>(), e);
     typename Space::template Stored<Ad> out;
-    this->model_.transition(x, u, w, out);
+    model.transition(x, u, w, out);
     for (Index i = 0; i < X; ++i) next(i) = out(i).value();
     const typename Space::template Tangent<Ad> deviation =
         Space::template minus<Ad>(out, next.template cast<Ad>());
