@@ -24,6 +24,10 @@ of the base-frame yaw rate is its component along the robot's z axis, printed at
 
   diff_drive_sim.py --seed 1 --duration 60 --out bags/diff_drive_seed1.bag
 
+--imu-mount level mounts the IMU with base_link's axes (the yaw rate on angular_velocity.z, as
+on the real Husky recording that config/husky_skid_steer_odom_imu.h reads); --no-stops drives
+a path that is never at rest (it starts and ends in motion and does not return to the start).
+
 Realistic errors (sensor_errors.py; also --odom-separation-scale, a driver with a wrong wheel
 separation) are off by default; --realistic husky switches on a calibrated set.
 """
@@ -57,6 +61,8 @@ ACCEL_RES = G / 16384.0                     # 16-bit, +-2 g
 GT_PERIOD_MS = 20                           # ground truth at 50 Hz (phase 0)
 MOUNT_XYZ = (0.12, 0.0, 0.18)               # IMU position on base_link [m]
 MOUNT_RPY = (math.pi / 2, 0.0, math.pi / 2)  # IMU orientation on base_link (tf2 RPY)
+MOUNTS = {"side": MOUNT_RPY,                # --imu-mount: the default, yaw rate on y
+          "level": (0.0, 0.0, 0.0)}         # z up, as the real Husky's (doc/real_robot.md)
 DEFAULT_GYRO_BIAS = (0.004, 0.012, -0.006)  # [rad/s] in the IMU's frame
 
 
@@ -83,10 +89,10 @@ def transpose_times(m, v):
     return [sum(m[r][c] * v[r] for r in range(3)) for c in range(3)]
 
 
-def base_z_bias(gyro_bias):
+def base_z_bias(gyro_bias, mount_rpy=MOUNT_RPY):
     """Bias of the base-frame yaw rate: the z row of the mount rotation times the IMU-frame
     bias."""
-    m = rotation_rpy(*MOUNT_RPY)
+    m = rotation_rpy(*mount_rpy)
     return sum(m[2][c] * gyro_bias[c] for c in range(3))
 
 
@@ -101,7 +107,7 @@ def transform(bag, t_ns, parent, child, xyz, quat):
     return t
 
 
-def build_bag(seed, truth, tele, gyro_bias, start_s, profile=None):
+def build_bag(seed, truth, tele, gyro_bias, start_s, profile=None, mount_rpy=MOUNT_RPY):
     bag = simbag.BagBuilder(start_s)
     states = truth.log
     n_ms = len(tele.cmds) * pioneer_sim.TICK_MS
@@ -110,7 +116,7 @@ def build_bag(seed, truth, tele, gyro_bias, start_s, profile=None):
     # the IMU's mount, once at the start, latched
     bag.latch("tf_static")
     bag.add("tf_static", TFMessage(transforms=[
-        transform(bag, 0, "base_link", "imu_link", MOUNT_XYZ, quaternion_rpy(*MOUNT_RPY))]), 0)
+        transform(bag, 0, "base_link", "imu_link", MOUNT_XYZ, quaternion_rpy(*mount_rpy))]), 0)
 
     # wheel odometry (diff_drive_controller): twist from the wheel speeds of this message,
     # pose integrated from the twist (midpoint heading); its tf odom -> base_link
@@ -170,7 +176,7 @@ def build_bag(seed, truth, tele, gyro_bias, start_s, profile=None):
             bag.add("tf", tf, arrival)
 
     # IMU in imu_link: base-frame rates and accelerations rotated into the sensor's frame
-    mount = rotation_rpy(*MOUNT_RPY)
+    mount = rotation_rpy(*mount_rpy)
     rg = simbag.rng("diff_drive", seed, "gyro")
     ra = simbag.rng("diff_drive", seed, "accel")
     gyro = None           # sensor_errors: bias walk and scale factor of the yaw axis
@@ -242,6 +248,12 @@ def main(argv=None):
     parser.add_argument("--start", type=int, default=simbag.DEFAULT_START_S,
                         help="simulated clock at the start, in seconds (default %(default)s)")
     parser.add_argument("--compression", choices=simbag.COMPRESSIONS, default="bz2")
+    parser.add_argument("--no-stops", action="store_true",
+                        help="a path that is never at rest: starts and ends driving, forward only, "
+                        "no stops, no return to the start (pioneer_sim.plan_moving_run)")
+    parser.add_argument("--imu-mount", choices=sorted(MOUNTS), default="side",
+                        help="side: roll and yaw 90 deg, the yaw rate on angular_velocity.y "
+                        "(default); level: the IMU's axes are base_link's, the yaw rate on z")
     sensor_errors.add_arguments(parser)
     args = parser.parse_args(argv)
     if args.duration <= 0 or abs(args.duration * 10 - round(args.duration * 10)) > 1e-9:
@@ -251,12 +263,13 @@ def main(argv=None):
     except Exception as exc:  # noqa: BLE001 - report bad option values as usage errors
         parser.error(str(exc))
 
-    truth, tele = pioneer_sim.plan_run(args.seed, args.duration, robot="diff_drive",
-                                       lateral_slip=profile.lateral_slip)
+    plan = pioneer_sim.plan_moving_run if args.no_stops else pioneer_sim.plan_run
+    truth, tele = plan(args.seed, args.duration, robot="diff_drive", lateral_slip=profile.lateral_slip)
     x, y, th = truth.state[:3]
-    if math.hypot(x, y) > pioneer_sim.LOOP_TOLERANCE:
+    if not args.no_stops and math.hypot(x, y) > pioneer_sim.LOOP_TOLERANCE:
         raise SystemExit("loop not closed: final true pose (%.4f, %.4f) m" % (x, y))
-    bag, odom_end = build_bag(args.seed, truth, tele, args.gyro_bias, args.start, profile)
+    mount_rpy = MOUNTS[args.imu_mount]
+    bag, odom_end = build_bag(args.seed, truth, tele, args.gyro_bias, args.start, profile, mount_rpy)
     bag.write(args.out, args.compression)
     if profile.active:
         print("diff_drive errors: %s" % profile.summary())
@@ -264,7 +277,7 @@ def main(argv=None):
     print("diff_drive seed=%d duration=%.1fs path=%.2fm gyro_bias_imu=(%g, %g, %g)rad/s "
           "gyro_bias_base_z=%.6frad/s wheel_odometry_final_error=%.3fm,%.2fdeg out=%s"
           % (args.seed, len(tele.cmds) * pioneer_sim.TICK_S, path_len, *args.gyro_bias,
-             base_z_bias(args.gyro_bias), math.hypot(odom_end[0] - x, odom_end[1] - y),
+             base_z_bias(args.gyro_bias, mount_rpy), math.hypot(odom_end[0] - x, odom_end[1] - y),
              math.degrees(pioneer_sim.wrap(odom_end[2] - th)), args.out))
     return 0
 

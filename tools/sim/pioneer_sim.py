@@ -91,8 +91,8 @@ class Truth:
     """True planar motion at 1 kHz: (x, y, theta) driven by v, omega that follow the
     commanded velocities under acceleration limits (rate limiter)."""
 
-    def __init__(self, lateral_slip=0.0):
-        self.state = (0.0, 0.0, 0.0, 0.0, 0.0)   # x, y, theta (unwrapped), v, omega
+    def __init__(self, lateral_slip=0.0, speed=0.0):
+        self.state = (0.0, 0.0, 0.0, speed, 0.0)  # x, y, theta (unwrapped), v, omega
         self.log = [self.state]                 # state at t = k ms
         self.lateral_slip = lateral_slip        # K [s]: side velocity -K v omega (sensor_errors)
 
@@ -258,6 +258,47 @@ def plan_run(seed, duration, robot="pioneer", lateral_slip=0.0):
     if len(tele.cmds) > total_ticks:
         raise SystemExit("internal error: closing took longer than planned")
     tele.hold(0.0, 0.0, total_ticks - len(tele.cmds))
+    return truth, tele
+
+
+V_MOVING_MIN = 0.15   # [m/s] slowest forward speed of a run that never stops
+
+
+def moving_segment(rng, state):
+    """One segment of a run that never stops (plan_moving_run): random_segment's kinds
+    without its stops and reversals (a reversal passes through rest), turns on the spot
+    replaced by tight arcs at the slowest speed: list of (v, omega, ticks)."""
+    x, y, th = state[:3]
+    d_home = math.hypot(x, y)
+    kind = rng.choices(("straight", "arc", "turn", "home"),
+                       weights=(0.32, 0.30, 0.18, 0.10 + 0.08 * max(0.0, d_home - 3.0)))[0]
+    if kind == "straight":
+        return [(rng.uniform(0.3, V_MAX), 0.0, ceil_ticks(rng.uniform(2.0, 6.0)))]
+    if kind == "arc":
+        w = rng.choice((-1, 1)) * rng.uniform(0.2, W_MAX)
+        return [(rng.uniform(0.2, 0.5), w, ceil_ticks(rng.uniform(2.0, 5.0)))]
+    if kind == "turn":
+        w = rng.choice((-1, 1)) * rng.uniform(0.3, W_MAX)
+        return [(V_MOVING_MIN, w, ceil_ticks(rng.uniform(1.5, 4.0)))]
+    err = wrap(math.atan2(-y, -x) - th) + rng.gauss(0.0, 0.3) if d_home > 0.5 else rng.uniform(-2, 2)
+    w = math.copysign(rng.uniform(0.4, 0.6), err)
+    return [(rng.uniform(V_MOVING_MIN, 0.3), w, ceil_ticks(abs(err) / abs(w))),
+            (rng.uniform(0.4, V_MAX), 0.0, ceil_ticks(rng.uniform(2.0, min(8.0, 1.0 + d_home))))]
+
+
+def plan_moving_run(seed, duration, robot="pioneer", lateral_slip=0.0):
+    """Like plan_run, but the robot is never at rest: the recording starts while it drives
+    (a cut from a longer drive) and ends while it drives, every command has v >= V_MOVING_MIN
+    and the rate limiter moves v between such commands monotonically, so v never falls below
+    it. The operator still steers back towards the start now and then; the loop is not
+    closed (that would need stops). Its own random stream: not a prefix of plan_run's path."""
+    total_ticks = int(round(duration / TICK_S))
+    rng = simbag.rng(robot, seed, "moving-path")
+    truth = Truth(lateral_slip, speed=rng.uniform(0.3, 0.5))
+    tele = Teleop(truth)
+    while len(tele.cmds) < total_ticks:
+        for v, w, n in moving_segment(rng, truth.state):
+            tele.hold(v, w, min(n, total_ticks - len(tele.cmds)))
     return truth, tele
 
 
