@@ -239,6 +239,9 @@ class FusionCoreBase {
   /// Whether a stamp of input `input` is further ahead than maxFutureStamp of the clock reading
   /// `now` and of the newest stamp every other input sent while the clock stood still.
   bool tooFarAhead(Index input, double stamp, double now) const;
+  /// place()'s checks of a set stamp against the input's previous one and the clock; notes the
+  /// stamp (delay, lead stamps) when it is accepted.
+  Rejection acceptStamp(Index input, InputCounters& c, double stamp, double now);
   /// The open period of time t (ring.openPeriodOf), remembered as queued when it lies ahead.
   std::uint64_t placeValue(double t, bool& estimated, bool& beyond);
   /// The time a value aligned by arrival (or a control: `stamp` NaN) belongs to: its arrival,

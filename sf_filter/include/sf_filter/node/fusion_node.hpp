@@ -40,7 +40,7 @@
 #include "sf_filter/core/message_arrival.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
-#include "sf_filter/node/estimate_messages.hpp"
+#include "sf_filter/io/estimate_messages.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_diagnostics.hpp"
 #include "sf_filter/node/ros_parameters.hpp"
@@ -72,62 +72,8 @@ class FusionNode final : public MessageSink {
       outputs_.push_back(nh_.advertise<sf_msgs::OutputEntityStamped>(out.first, queueSize_));
     }
     state_ = pnh_.advertise<sf_msgs::StateEstimateStamped>("state", queueSize_);
-    if (description_.pose) {
-      odometry_ = nh_.advertise<nav_msgs::Odometry>("odometry/filtered", queueSize_);
-      // robot_localization's set_pose topic and rviz's 2D Pose Estimate (/initialpose).
-      for (const char* topic : {"set_pose", "initialpose"}) {
-        setPoseSubscribers_.push_back(nh_.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
-            topic, 10, [this, topic](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
-              setPose(topic, *m);
-            }));
-      }
-      // robot_localization's ~set_pose service: the same reset, with its outcome returned.
-      setPoseService_ =
-          pnh_.advertiseService<sf_msgs::SetPose::Request, sf_msgs::SetPose::Response>(
-              "set_pose",
-              [this](sf_msgs::SetPose::Request& request, sf_msgs::SetPose::Response& response) {
-                response.message = setPose("~set_pose", request.pose);
-                response.success = response.message.empty();
-                return true;
-              });
-      diagnostics_.addEstimationValue("poses set", [this] { return std::to_string(setPoses_); });
-      diagnostics_.addEstimationValue("poses refused",
-                                      [this] { return std::to_string(refusedPoses_); });
-    }
-    // What is lost before the core sees it is in the input's diagnostics too: a message of
-    // another type on its topic, a value that cannot be rotated into the base frame.
-    InputLossSource wrongType;
-    wrongType.alwaysError = true;
-    wrongType.count = [this](std::size_t i) { return wrongTypeOf(i).count; };
-    wrongType.reason = [this](std::size_t i) {
-      const WrongType& w = wrongTypeOf(i);
-      return "topic " + w.topic + " receives " + w.received + ", the configuration reads " +
-             w.expected;
-    };
-    diagnostics_.addLossSource(wrongType);
-    // A GPS input's fixes without a valid status (gps::GpsInputs).
-    InputLossSource noFix;
-    noFix.count = [this](std::size_t i) { return gps().noFix(i); };
-    noFix.reason = [](std::size_t) { return std::string("GPS fix status below STATUS_FIX"); };
-    diagnostics_.addLossSource(noFix);
-    // A GPS input's fixes whose position is not on the Earth (gps::implausible).
-    InputLossSource implausibleFix;
-    implausibleFix.count = [this](std::size_t i) { return gps().implausibleFixes(i); };
-    implausibleFix.reason = [this](std::size_t i) {
-      return "GPS fix not on the Earth: " + gps().implausibleReason(i);
-    };
-    diagnostics_.addLossSource(implausibleFix);
-    // INPUT_COVARIANCE: messages whose covariance was unknown (all zero, -1 first) used R.
-    diagnostics_.addInputValue("covariance unknown, header R used", [this](std::size_t i) {
-      const std::uint64_t n = covarianceFallbacks(static_cast<Index>(i));
-      return n ? std::to_string(n) : std::string();
-    });
-    if (aligner_) {
-      InputLossSource unrotated;
-      unrotated.count = [this](std::size_t i) { return aligner_->dropped(i); };
-      unrotated.reason = [this](std::size_t i) { return aligner_->dropReason(i); };
-      diagnostics_.addLossSource(unrotated);
-    }
+    if (description_.pose) advertisePose();
+    addLossSources();
     logConfiguration();
   }
 
@@ -212,6 +158,67 @@ class FusionNode final : public MessageSink {
   const FusionEngine& core() const { return core_; }
 
  private:
+  /// POSE_OUT: the odometry's publisher, robot_localization's set_pose topics and service.
+  void advertisePose() {
+    odometry_ = nh_.advertise<nav_msgs::Odometry>("odometry/filtered", queueSize_);
+    // robot_localization's set_pose topic and rviz's 2D Pose Estimate (/initialpose).
+    for (const char* topic : {"set_pose", "initialpose"}) {
+      setPoseSubscribers_.push_back(nh_.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+          topic, 10, [this, topic](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+            setPose(topic, *m);
+          }));
+    }
+    // robot_localization's ~set_pose service: the same reset, with its outcome returned.
+    setPoseService_ = pnh_.advertiseService<sf_msgs::SetPose::Request, sf_msgs::SetPose::Response>(
+        "set_pose",
+        [this](sf_msgs::SetPose::Request& request, sf_msgs::SetPose::Response& response) {
+          response.message = setPose("~set_pose", request.pose);
+          response.success = response.message.empty();
+          return true;
+        });
+    diagnostics_.addEstimationValue("poses set", [this] { return std::to_string(setPoses_); });
+    diagnostics_.addEstimationValue("poses refused",
+                                    [this] { return std::to_string(refusedPoses_); });
+  }
+
+  /// The values lost before the core sees them, in the inputs' diagnostics.
+  void addLossSources() {
+    // What is lost before the core sees it is in the input's diagnostics too: a message of
+    // another type on its topic, a value that cannot be rotated into the base frame.
+    InputLossSource wrongType;
+    wrongType.alwaysError = true;
+    wrongType.count = [this](std::size_t i) { return wrongTypeOf(i).count; };
+    wrongType.reason = [this](std::size_t i) {
+      const WrongType& w = wrongTypeOf(i);
+      return "topic " + w.topic + " receives " + w.received + ", the configuration reads " +
+             w.expected;
+    };
+    diagnostics_.addLossSource(wrongType);
+    // A GPS input's fixes without a valid status (gps::GpsInputs).
+    InputLossSource noFix;
+    noFix.count = [this](std::size_t i) { return gps().noFix(i); };
+    noFix.reason = [](std::size_t) { return std::string("GPS fix status below STATUS_FIX"); };
+    diagnostics_.addLossSource(noFix);
+    // A GPS input's fixes whose position is not on the Earth (gps::implausible).
+    InputLossSource implausibleFix;
+    implausibleFix.count = [this](std::size_t i) { return gps().implausibleFixes(i); };
+    implausibleFix.reason = [this](std::size_t i) {
+      return "GPS fix not on the Earth: " + gps().implausibleReason(i);
+    };
+    diagnostics_.addLossSource(implausibleFix);
+    // INPUT_COVARIANCE: messages whose covariance was unknown (all zero, -1 first) used R.
+    diagnostics_.addInputValue("covariance unknown, header R used", [this](std::size_t i) {
+      const std::uint64_t n = covarianceFallbacks(static_cast<Index>(i));
+      return n ? std::to_string(n) : std::string();
+    });
+    if (aligner_) {
+      InputLossSource unrotated;
+      unrotated.count = [this](std::size_t i) { return aligner_->dropped(i); };
+      unrotated.reason = [this](std::size_t i) { return aligner_->dropReason(i); };
+      diagnostics_.addLossSource(unrotated);
+    }
+  }
+
   using MessageEvent = ros::MessageEvent<topic_tools::ShapeShifter const>;
 
   /// A value of input `input` dropped for `r`. Late values are explained per input, with

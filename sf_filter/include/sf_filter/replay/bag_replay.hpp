@@ -35,11 +35,11 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/core/replay_clock.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
-#include "sf_filter/node/estimate_messages.hpp"
+#include "sf_filter/io/estimate_messages.hpp"
 #include "sf_filter/replay/atomic_output.hpp"
-#include "sf_filter/replay/replay_clock.hpp"
 #include "sf_filter/tuning/event_log.hpp"
 
 namespace sf_filter {
@@ -174,18 +174,8 @@ class BagReplay final : public MessageSink {
                  {{"--csv", options_.csvPath}, {"--bag", options_.outputBag}});
     const std::unique_ptr<PeriodSmoother> smoother = makeSmoother();
     const std::vector<std::unique_ptr<rosbag::Bag>> inputs = openInputs();
-    const std::map<std::string, Recorded> recorded = readInput([&] { return connections(inputs); });
-    checkTypes(recorded);
-    std::vector<std::string> topics = recordedTopics(recorded);
-    const bool readTf = transformSink_ && recorded.count(kTf);
-    if (transformSink_) {
-      if (recorded.count(kTfStatic)) {
-        readInput([&] { readStaticTransforms(inputs, recorded.at(kTfStatic).names); });
-      }
-      if (readTf) {
-        topics.insert(topics.end(), recorded.at(kTf).names.begin(), recorded.at(kTf).names.end());
-      }
-    }
+    bool readTf = false;
+    const std::vector<std::string> topics = topicsToRead(inputs, readTf);
 
     AtomicOutput csvFile("--csv", options_.csvPath, inputFiles(options_));
     AtomicOutput bagFile("--bag", options_.outputBag, inputFiles(options_));
@@ -210,21 +200,7 @@ class BagReplay final : public MessageSink {
       }
       if (output) writeOutput(bagFile, [&] { writeBag(*output, e); });
     };
-    readInput([&] {
-      rosbag::View view;
-      for (const auto& input : inputs) view.addQuery(*input, rosbag::TopicQuery(topics));
-      for (const rosbag::MessageInstance& m : view) {
-        if (readTf && absolute(m.getTopic()) == kTf) {
-          transformSink_(*instantiate<tf2_msgs::TFMessage>(m, kTf), false);
-          continue;
-        }
-        const double now = m.getTime().toSec();
-        if (events_) events_->clock(now);
-        clock_.advance(core_, now, write);
-        for (const TopicReader& reader : readers_.at(absolute(m.getTopic()))) read(reader, m, now);
-        ++summary_.messages;
-      }
-    });
+    readInput([&] { readMessages(inputs, topics, readTf, write); });
     if (smoother) smoothRun(*smoother, csv, csvFile);
     if (csv.is_open()) {
       csv.close();
@@ -241,6 +217,45 @@ class BagReplay final : public MessageSink {
   const FusionEngine& core() const { return core_; }
 
  private:
+  /// The topics the replay reads, the bags' types checked: the configured ones and, with a
+  /// transform sink, /tf (`readTf`); /tf_static is read into the sink here, before the rest.
+  std::vector<std::string> topicsToRead(const std::vector<std::unique_ptr<rosbag::Bag>>& inputs,
+                                        bool& readTf) {
+    const std::map<std::string, Recorded> recorded = readInput([&] { return connections(inputs); });
+    checkTypes(recorded);
+    std::vector<std::string> topics = recordedTopics(recorded);
+    readTf = transformSink_ && recorded.count(kTf);
+    if (transformSink_) {
+      if (recorded.count(kTfStatic)) {
+        readInput([&] { readStaticTransforms(inputs, recorded.at(kTfStatic).names); });
+      }
+      if (readTf) {
+        topics.insert(topics.end(), recorded.at(kTf).names.begin(), recorded.at(kTf).names.end());
+      }
+    }
+    return topics;
+  }
+
+  /// The bags' messages on `topics` in recorded order: the clock advanced to each (estimates
+  /// to `write`), then the message read; /tf to the transform sink.
+  template <class Write>
+  void readMessages(const std::vector<std::unique_ptr<rosbag::Bag>>& inputs,
+                    const std::vector<std::string>& topics, bool readTf, Write& write) {
+    rosbag::View view;
+    for (const auto& input : inputs) view.addQuery(*input, rosbag::TopicQuery(topics));
+    for (const rosbag::MessageInstance& m : view) {
+      if (readTf && absolute(m.getTopic()) == kTf) {
+        transformSink_(*instantiate<tf2_msgs::TFMessage>(m, kTf), false);
+        continue;
+      }
+      const double now = m.getTime().toSec();
+      if (events_) events_->clock(now);
+      clock_.advance(core_, now, write);
+      for (const TopicReader& reader : readers_.at(absolute(m.getTopic()))) read(reader, m, now);
+      ++summary_.messages;
+    }
+  }
+
   /// Hands the serialized message to the topic's reader.
   void read(const TopicReader& reader, const rosbag::MessageInstance& m, double now) {
     buffer_.resize(m.size());
