@@ -28,11 +28,11 @@ namespace {
 std::string inputCountersLine(const FusionEngine& core, const std::vector<std::string>& names) {
   std::ostringstream line;
   line << "input counters at shutdown:";
-  for (Index i = 0; i < core.inputCount(); ++i) {
-    const InputCounters& c = core.counters(i);
-    line << (i ? ";" : "") << " input " << i << " (" << names.at(static_cast<std::size_t>(i))
-         << "): received " << c.received << ", used " << c.used << ", dropped " << c.dropped()
-         << ", gated " << c.gated;
+  const FusionStatistics statistics = core.statistics();
+  for (std::size_t i = 0; i < statistics.inputs.size(); ++i) {
+    const InputCounters& c = statistics.inputs[i];
+    line << (i ? ";" : "") << " input " << i << " (" << names.at(i) << "): received " << c.received
+         << ", used " << c.used << ", dropped " << c.dropped() << ", gated " << c.gated;
   }
   return line.str();
 }

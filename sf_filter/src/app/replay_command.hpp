@@ -67,6 +67,7 @@ FusionCoreOptions replayCoreOptions(const ReplayCommand& command);
 struct ReplayOutcome {
   const ReplaySummary& summary;
   const FusionEngine& core;
+  const FusionStatistics& statistics;  ///< the core's, after the run
   const MessageSink& sink;
   const ReplayFrameAligner* aligner;  ///< nullptr without FRAME_ALIGNED_INPUTS
   double wallSeconds;

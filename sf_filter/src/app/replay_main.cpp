@@ -86,7 +86,9 @@ int replayBag(const ReplayCommand& c, const NodeDefinition& def) {
   const ReplaySummary s = replay.run();
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const ReplayOutcome outcome{s, replay.core(), replay, aligner ? &*aligner : nullptr, wall};
+  const FusionStatistics statistics = replay.core().statistics();
+  const ReplayOutcome outcome{s,   replay.core(), statistics, replay, aligner ? &*aligner : nullptr,
+                              wall};
   printReplaySummary(c, def, outcome);
   if (c.tune) return tuneFromEvents(c, def, events, engineOptions, parameters, tunedFile);
   return strictStatus(c, def, outcome);

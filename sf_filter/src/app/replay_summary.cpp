@@ -59,37 +59,32 @@ std::uint64_t droppedBeforeCore(const NodeDefinition& def, const ReplayOutcome& 
 /// The summary's first line: the run's totals.
 void printTotals(const std::string& name, const ReplayOutcome& o) {
   const ReplaySummary& s = o.summary;
-  std::uint64_t gated = 0, late = 0, substituted = 0;
-  for (Index i = 0; i < o.core.inputCount(); ++i) {
-    gated += o.core.counters(i).gated;
-    late += o.core.counters(i).late;
-    substituted += o.core.counters(i).substituted;
-  }
+  const FusionStatistics& f = o.statistics;
   std::cout << name << ": " << s.messages << " messages, " << s.estimates << " estimates, "
-            << o.core.estimationFailures() << " failed steps, " << o.core.filterResets()
-            << " filter resets, " << s.skippedGaps << " gaps skipped, " << s.dropped
-            << " dropped values (" << late << " late), " << gated << " gated, " << substituted
+            << f.estimationFailures << " failed steps, " << f.filterResets << " filter resets, "
+            << f.skippedGaps << " gaps skipped, " << s.dropped << " dropped values ("
+            << f.totals.late << " late), " << f.totals.gated << " gated, " << f.totals.substituted
             << " substitutes, "
-            << (s.estimates ? 1e6 * s.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
+            << (s.estimates ? 1e6 * f.estimatorSeconds / static_cast<double>(s.estimates) : 0.0)
             << " us per estimation step, " << o.wallSeconds << " s in all" << std::endl;
 }
 
 /// The replay summary's line per input: what it received, used, dropped (by reason), gated,
 /// the stamp-to-arrival delays; and for an input with late values, why and the lag to set.
-void printInputCounters(const std::string& name, const FusionEngine& core,
+void printInputCounters(const std::string& name, const ReplayOutcome& o,
                         const std::vector<std::string>& inputs) {
-  for (Index i = 0; i < core.inputCount(); ++i) {
-    const InputCounters& c = core.counters(i);
+  const std::vector<InputCounters>& counters = o.statistics.inputs;
+  for (std::size_t i = 0; i < counters.size(); ++i) {
+    const InputCounters& c = counters[i];
     std::cout << name << ": input " << i << ": " << c.received << " received, " << c.used
               << " used, dropped: " << dropReasons(c) << ", " << c.gated << " gated, "
               << c.timedOutPeriods << " periods timed out, stamp-to-arrival delay "
               << delayFigures(c.delays) << std::endl;
   }
-  for (Index i = 0; i < core.inputCount(); ++i) {
-    const auto index = static_cast<std::size_t>(i);
-    if (core.counters(i).late == 0) continue;
+  for (std::size_t i = 0; i < counters.size(); ++i) {
+    if (counters[i].late == 0) continue;
     std::cout << name << ": "
-              << lateAdvice(index, inputs.at(index), core.counters(i), core.maxMeasurementLag(),
+              << lateAdvice(i, inputs.at(i), counters[i], o.core.maxMeasurementLag(),
                             "--max-lag (~max_measurement_lag)")
               << std::endl;
   }
@@ -150,15 +145,15 @@ void printReplaySummary(const ReplayCommand& c, const NodeDefinition& def, const
               << " segments) in " << s.smoothingSeconds << " s, " << s.smoothingBytesPerPeriod
               << " bytes per period" << std::endl;
   }
-  printInputCounters(name, o.core, def.description.inputs);
+  printInputCounters(name, o, def.description.inputs);
   printNis(name, o.core, def.description.inputs);
   printGpsCounters(name, o.sink, def.description.inputs);
   if (o.aligner) printAlignment(c, *o.aligner);
 }
 
 int strictStatus(const ReplayCommand& c, const NodeDefinition& def, const ReplayOutcome& o) {
-  const std::uint64_t failures = o.core.estimationFailures();
-  const std::uint64_t resets = o.core.filterResets();
+  const std::uint64_t failures = o.statistics.estimationFailures;
+  const std::uint64_t resets = o.statistics.filterResets;
   const std::uint64_t dropped = o.summary.dropped + droppedBeforeCore(def, o);
   if (c.strict && (failures > 0 || resets > 0 || dropped > 0)) {
     std::cerr << c.program << ": --strict: " << failures << " failed steps, " << resets

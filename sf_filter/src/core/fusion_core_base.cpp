@@ -306,6 +306,24 @@ Rejection FusionCoreBase::acceptStamp(Index input, InputCounters& c, double stam
   return Rejection::None;
 }
 
+void FusionCoreBase::fillStatistics(FusionStatistics& out) const {
+  out.inputs.assign(counters_.begin(), counters_.end());
+  out.sumInputs();
+  out.estimates = estimateCount_;
+  out.estimationFailures = estimationFailures_;
+  out.filterResets = filterResets_;
+  out.clockResets = clockResets_;
+  out.nisFailures = nisFailures_;
+  out.controlNonFinite = controlNonFinite_;
+  out.skippedGaps = skippedGaps_;
+  out.skippedPeriods = skippedPeriods_;
+  out.estimatorSeconds = estimatorSeconds_;
+  out.maxStepSeconds = maxStepSeconds_;
+  out.lastFailure = lastFailure_;
+  out.clock = clock_;
+  out.startTime = startTime_;
+}
+
 bool FusionCoreBase::tooFarAhead(Index input, double stamp, double now) const {
   // Another input's stamp vouches for a stalled clock; an input's own stamps do not, so a
   // sensor whose clock runs ahead cannot carry itself further ahead value by value.

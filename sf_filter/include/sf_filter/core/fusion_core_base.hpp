@@ -18,6 +18,7 @@
 
 #include "sf_filter/core/fusion_core_options.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/core/fusion_statistics.hpp"
 #include "sf_filter/core/innovation_record.hpp"
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
@@ -117,6 +118,9 @@ class FusionCoreBase {
   std::uint64_t estimateCount() const { return estimateCount_; }
   /// The longest estimator step so far [s].
   double maxStepSeconds() const { return maxStepSeconds_; }
+  /// The counters above copied into `out` (FusionStatistics), the inputs' totals summed; the
+  /// filter's numerical repairs are FusionCore's to add.
+  void fillStatistics(FusionStatistics& out) const;
 
  protected:
   /// `canPredict`: the filter gives its predicted measurement (gates and FILL possible).

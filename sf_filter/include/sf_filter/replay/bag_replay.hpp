@@ -38,7 +38,7 @@
 #include "sf_filter/core/replay_clock.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
-#include "sf_filter/io/estimate_messages.hpp"
+#include "sf_filter/io/estimate_writer.hpp"
 #include "sf_filter/replay/atomic_output.hpp"
 #include "sf_filter/tuning/event_log.hpp"
 
@@ -83,8 +83,6 @@ struct ReplaySummary {
   std::uint64_t messages = 0;
   std::uint64_t estimates = 0;
   std::uint64_t dropped = 0;
-  std::uint64_t skippedGaps = 0;  ///< gaps longer than ReplayClock::kMaxGapPeriods, skipped
-  double estimatorSeconds = 0.0;
   /// --smooth: the periods smoothed, in how many segments (period_smoother.hpp), the backward
   /// pass's time and the memory per period of the record and its result.
   std::uint64_t smoothedPeriods = 0;
@@ -113,7 +111,8 @@ class BagReplay final : public MessageSink {
       : engine_(std::move(engine)),
         core_(*engine_),
         description_(std::move(description)),
-        options_(std::move(options)) {}
+        options_(std::move(options)),
+        writer_(description_, OutputFrames{options_.frameId, options_.childFrameId}) {}
 
   /// Records what the bag's messages give the core into `events` (tuning/event_log.hpp), so
   /// that it can be replayed from memory without the bag.
@@ -209,8 +208,6 @@ class BagReplay final : public MessageSink {
     if (output) writeOutput(bagFile, [&] { output.close(); });
     csvFile.commit();
     bagFile.commit();
-    summary_.estimatorSeconds = core_.estimatorSeconds();
-    summary_.skippedGaps = clock_.skippedGaps();
     return summary_;
   }
 
@@ -541,24 +538,32 @@ class BagReplay final : public MessageSink {
     }
   }
 
+  /// EstimateWriter's sink offline: each message into the output bag at the estimate's time,
+  /// the private ~state under the node's name (--name).
+  struct BagSink {
+    rosbag::Bag& bag;
+    const std::string& nodeName;
+    ros::Time stamp;
+    template <class Message>
+    void operator()(std::size_t, const std::string& topic, OutputScope scope,
+                    const Message& m) const {
+      bag.write(scope == OutputScope::Private ? "/" + nodeName + "/" + topic : absolute(topic),
+                stamp, m);
+    }
+  };
+
+  /// The estimate's messages as the node publishes them; the robot's motion from the first
+  /// period on (the bag is read afterwards, not driven).
   void writeBag(rosbag::Bag& bag, const EstimateRef& e) const {
-    const ros::Time stamp(e.time);
-    for (const auto& out : description_.outputs) {
-      bag.write(absolute(out.first), stamp, makeOutputEntity(e, out.second, options_.frameId));
-    }
-    bag.write("/" + options_.nodeName + "/state", stamp,
-              makeStateEstimate(e, description_.method, options_.frameId));
-    if (description_.pose) {
-      bag.write("/odometry/filtered", stamp,
-                makeOdometry(e, *description_.pose, options_.frameId, options_.childFrameId,
-                             description_.twist));
-    }
+    BagSink sink{bag, options_.nodeName, ros::Time(e.time)};
+    writer_.write(e, true, sink);
   }
 
   std::unique_ptr<FusionEngine> engine_;
   FusionEngine& core_;
   NodeDescription description_;
   ReplayOptions options_;
+  EstimateWriter writer_;
   /// By absolute topic name: one per configured topic that resolves onto it (remaps).
   std::map<std::string, std::vector<TopicReader>> readers_;
   ReplayRotation* rotation_ = nullptr;
