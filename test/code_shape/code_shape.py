@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The product code's shape (doc/design.md): no function longer than --max-lines lines in
-sf_filter/ and sf_estimation/ (tests and benchmarks excluded), and no include cycle between the
-directories of sf_filter/include/sf_filter.
+sf_filter/ and sf_estimation/ (tests and benchmarks excluded), no include cycle between the
+directories of sf_filter/include/sf_filter, and neither of node/ and replay/ including the other.
 
 Usage: code_shape.py [--root DIR] [--max-lines N]
 Prints one line per violation and exits 1 when there is one. Standard library only: a
@@ -277,13 +277,25 @@ def cycle_violations(root):
     return out
 
 
+# The online node and the offline replay share what they share from the layers below them
+# (core/, definition/, io/): neither includes the other (doc/design.md, "Layers").
+SEPARATE = (("node", "replay"), ("replay", "node"))
+
+
+def layer_violations(root):
+    graph = directory_graph(root)
+    return ["%s includes %s (%s): they share what they share from a lower layer" %
+            (a, b, graph[a][b]) for a, b in SEPARATE if b in graph.get(a, {})]
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--root", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                        "..", ".."))
     parser.add_argument("--max-lines", type=int, default=60)
     args = parser.parse_args(argv)
-    problems = function_violations(args.root, args.max_lines) + cycle_violations(args.root)
+    problems = (function_violations(args.root, args.max_lines) + cycle_violations(args.root) +
+                layer_violations(args.root))
     for p in problems:
         print(p)
     return 1 if problems else 0

@@ -1,6 +1,6 @@
 """The product code's shape (code_shape.py, doc/design.md): no function over 60 lines in
-sf_filter/ and sf_estimation/, no include cycle between sf_filter's include directories; and the
-checker's own rules on hand-written C++."""
+sf_filter/ and sf_estimation/, no include cycle between sf_filter's include directories, node/
+and replay/ apart; and the checker's own rules on hand-written C++."""
 
 import os
 import sys
@@ -61,6 +61,11 @@ class ProductShape(unittest.TestCase):
 
     def test_no_include_cycle_between_sf_filter_directories(self):
         problems = code_shape.cycle_violations(ROOT)
+        self.assertEqual(problems, [], "\n".join(problems))
+
+
+    def test_node_and_replay_share_only_lower_layers(self):
+        problems = code_shape.layer_violations(ROOT)
         self.assertEqual(problems, [], "\n".join(problems))
 
 

@@ -17,7 +17,7 @@
 #include "sf_filter/node/fusion_node.hpp"
 #include "sf_filter/node/fusion_node_instance.hpp"
 #include "sf_filter/node/gps_parameters.hpp"
-#include "sf_filter/node/ros_parameters.hpp"
+#include "sf_filter/io/ros_parameters.hpp"
 
 namespace sf_filter::app {
 

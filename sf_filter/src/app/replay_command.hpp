@@ -13,7 +13,7 @@
 #include "sf_filter/definition/filter_parameters.hpp"
 #include "sf_filter/definition/node_definition.hpp"
 #include "sf_filter/gps/gps_inputs.hpp"
-#include "sf_filter/node/ros_parameters.hpp"
+#include "sf_filter/io/ros_parameters.hpp"
 #include "sf_filter/replay/bag_replay.hpp"
 #include "sf_filter/tuning/noise_tuning.hpp"
 

@@ -44,7 +44,7 @@
 #include "sf_filter/io/estimate_writer.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_diagnostics.hpp"
-#include "sf_filter/node/ros_parameters.hpp"
+#include "sf_filter/io/ros_parameters.hpp"
 
 namespace sf_filter {
 
