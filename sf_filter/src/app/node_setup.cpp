@@ -13,11 +13,11 @@
 
 #include "app/app_support.hpp"
 #include "sf_filter/definition/node_definition.hpp"
+#include "sf_filter/io/ros_parameters.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_node.hpp"
 #include "sf_filter/node/fusion_node_instance.hpp"
 #include "sf_filter/node/gps_parameters.hpp"
-#include "sf_filter/io/ros_parameters.hpp"
 
 namespace sf_filter::app {
 

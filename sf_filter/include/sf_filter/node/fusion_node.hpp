@@ -42,9 +42,9 @@
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/io/estimate_writer.hpp"
+#include "sf_filter/io/ros_parameters.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_diagnostics.hpp"
-#include "sf_filter/io/ros_parameters.hpp"
 
 namespace sf_filter {
 
