@@ -1,6 +1,6 @@
 // The offline replay's command line, parsed (replay_command_line.cpp), and the steps of the
-// replay that read it: the run (replay_main.cpp), the summary and --strict
-// (replay_summary.cpp), --tune (replay_tuning.cpp).
+// replay that read it: the run (replay_main.cpp, which also builds the filter and the core
+// from it), the summary and --strict (replay_summary.cpp), --tune (replay_tuning.cpp).
 #pragma once
 
 #include <map>
@@ -56,12 +56,6 @@ std::string replayUsage(const std::string& program);
 /// The command line parsed and checked against the node's definition. Throws
 /// std::invalid_argument (or another std::exception) naming the problem.
 ReplayCommand parseReplayCommand(int argc, char** argv, const NodeDefinition& def);
-
-/// The filter's parameters of the replay: the header's or the --params file's, scaled.
-FilterParameters replayParameters(const ReplayCommand& command, const NodeDefinition& def);
-
-/// The fusion core's options of the replay; with --tune without gates and with a NIS window.
-FusionCoreOptions replayCoreOptions(const ReplayCommand& command);
 
 /// What the replay's summary reads besides the engine.
 struct ReplayOutcome {

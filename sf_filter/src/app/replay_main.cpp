@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -23,6 +24,40 @@
 namespace sf_filter::app {
 
 namespace {
+
+/// The filter's parameters of the replay: the header's or the --params file's, scaled.
+FilterParameters replayParameters(const ReplayCommand& c, const NodeDefinition& def) {
+  FilterParameters parameters =
+      c.fileParameters ? *c.fileParameters : def.defaultParameters(c.periodMs);
+  parameters.process_noise_covariance *= c.scaleQ;
+  parameters.measurement_noise_covariance *= c.scaleR;
+  if (c.seed) parameters.random_seed = static_cast<unsigned>(*c.seed);
+  return parameters;
+}
+
+/// The fusion core's options of the replay; with --tune without gates and with a NIS window.
+FusionCoreOptions replayCoreOptions(const ReplayCommand& c) {
+  FusionCoreOptions options = coreOptions(c.periodMs, c.inputs, c.lagMs, c.maxFutureStampMs);
+  options.nisWindow = nisWindowPeriods(c.nis, c.periodMs);
+  options.nisTolerance = c.nis.nisTolerance;
+  if (!c.tune) return options;
+  // The cost sums over the values that reach the filter: a gate would let the optimiser lower
+  // it by gating values away, so the identification runs without gates; the NIS needs its
+  // window on.
+  std::size_t gates = 0;
+  for (InputOptions& in : options.inputs) {
+    gates += in.gated() ? 1 : 0;
+    in.gateThreshold = std::numeric_limits<double>::infinity();
+  }
+  if (gates > 0) {
+    std::cout << c.options.nodeName << ": --tune: the Mahalanobis gates of " << gates
+              << " inputs are off while identifying (a gate would remove values from "
+                 "the likelihood); the YAML file leaves them as configured"
+              << std::endl;
+  }
+  if (options.nisWindow == 0) options.nisWindow = nisWindowPeriods({}, c.periodMs);
+  return options;
+}
 
 /// FRAME_ALIGNED_INPUTS in the replay: the bag's transforms through ReplayFrameAligner.
 class ReplayAlignerRotation final : public ReplayRotation {

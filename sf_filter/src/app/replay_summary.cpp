@@ -1,49 +1,14 @@
-// The replay's filter and core from its command line, and what it prints after the run: the
-// totals line, each input's counters and NIS, the GPS inputs' and the alignment's losses; and
-// --strict's exit status.
+// What the replay prints after the run: the totals line, each input's counters and NIS, the
+// GPS inputs' and the alignment's losses; and --strict's exit status.
 #include <cstdlib>
 #include <iostream>
-#include <limits>
 
-#include "app/app_support.hpp"
 #include "app/replay_command.hpp"
 #include "sf_filter/core/health.hpp"
 #include "sf_filter/replay/nis_report.hpp"
 #include "sf_filter/replay/replay_frame_aligner.hpp"
 
 namespace sf_filter::app {
-
-FilterParameters replayParameters(const ReplayCommand& c, const NodeDefinition& def) {
-  FilterParameters parameters =
-      c.fileParameters ? *c.fileParameters : def.defaultParameters(c.periodMs);
-  parameters.process_noise_covariance *= c.scaleQ;
-  parameters.measurement_noise_covariance *= c.scaleR;
-  if (c.seed) parameters.random_seed = static_cast<unsigned>(*c.seed);
-  return parameters;
-}
-
-FusionCoreOptions replayCoreOptions(const ReplayCommand& c) {
-  FusionCoreOptions options = coreOptions(c.periodMs, c.inputs, c.lagMs, c.maxFutureStampMs);
-  options.nisWindow = nisWindowPeriods(c.nis, c.periodMs);
-  options.nisTolerance = c.nis.nisTolerance;
-  if (!c.tune) return options;
-  // The cost sums over the values that reach the filter: a gate would let the optimiser lower
-  // it by gating values away, so the identification runs without gates; the NIS needs its
-  // window on.
-  std::size_t gates = 0;
-  for (InputOptions& in : options.inputs) {
-    gates += in.gated() ? 1 : 0;
-    in.gateThreshold = std::numeric_limits<double>::infinity();
-  }
-  if (gates > 0) {
-    std::cout << c.options.nodeName << ": --tune: the Mahalanobis gates of " << gates
-              << " inputs are off while identifying (a gate would remove values from "
-                 "the likelihood); the YAML file leaves them as configured"
-              << std::endl;
-  }
-  if (options.nisWindow == 0) options.nisWindow = nisWindowPeriods({}, c.periodMs);
-  return options;
-}
 
 namespace {
 
