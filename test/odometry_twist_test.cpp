@@ -1,4 +1,4 @@
-// The nav_msgs/Odometry an estimate is published as (sf_filter/node/estimate_messages.hpp):
+// The nav_msgs/Odometry an estimate is published as (sf_filter/io/estimate_messages.hpp):
 // with TWIST_OUT the twist and its covariance block come from the state, every component the
 // state does not hold has the variance 1e6; without it the whole twist is unknown (1e6), never
 // a certain zero. Checked entry by entry against a hand-made state and covariance.
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sf_filter/node/estimate_messages.hpp"
+#include "sf_filter/io/estimate_messages.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // Spatial alignment (FRAME_ALIGNED_INPUTS) and POSE_OUT of a generated fusion node
 // (test/configs/imu_heading_ekf.h) under a ROS master, plus unit tests of the tf2 rotation
-// helper (sf_filter/node/vector_rotation.hpp) on a bare tf2::BufferCore.
+// helper (sf_filter/io/vector_rotation.hpp) on a bare tf2::BufferCore.
 //
 // The robot turns counter-clockwise (positive yaw rate about base_link's z axis). Its gyros:
 //   imu        sensor_msgs/Imu in imu_link, mounted upside down (180 deg about x): the raw
@@ -36,7 +36,7 @@
 #include <sf_estimation/extended_kalman_filter.hpp>
 #include <sf_msgs/StateEstimateStamped.h>
 
-#include "sf_filter/node/vector_rotation.hpp"
+#include "sf_filter/io/vector_rotation.hpp"
 
 namespace {
 

@@ -82,6 +82,34 @@ void takeControls(const Slot& slot, Eigen::VectorXd& control) {
     if (slot.controlSet(j)) control(j) = slot.control(j);
   }
 }
+
+/// FusionCoreBase::checked()'s checks of the per-input options and the inputs they name.
+void checkInputOptions(const FusionCoreOptions& o, Index inputs, bool canPredict) {
+  if (!o.inputs.empty() && static_cast<Index>(o.inputs.size()) != inputs) {
+    throw estimation::ParameterError("input options: expected " + std::to_string(inputs) +
+                                     " entries (one per input), found " +
+                                     std::to_string(o.inputs.size()));
+  }
+  for (const FusionCoreOptions::FirstReading& f : o.initialFromInputs) {
+    if (f.input < 0 || f.input >= inputs) {
+      throw estimation::ParameterError("initial state from inputs: input " +
+                                       std::to_string(f.input) + " is not one of the " +
+                                       std::to_string(inputs) + " inputs");
+    }
+  }
+  for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+    const std::string problem = inputOptionsProblem(o.inputs[i]);
+    if (!problem.empty()) {
+      throw estimation::ParameterError("input " + std::to_string(i) + ": " + problem);
+    }
+    if (!canPredict && (o.inputs[i].gated() || o.inputs[i].alignment.needsPrediction())) {
+      throw estimation::ParameterError(
+          "input " + std::to_string(i) + ": " +
+          (o.inputs[i].gated() ? "a Mahalanobis gate" : "FILL") +
+          " needs the filter's predicted measurement, which this method does not give");
+    }
+  }
+}
 }  // namespace
 
 FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, Index controls,
@@ -231,31 +259,8 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
   }
   if (stamp == 0.0) stamp = std::numeric_limits<double>::quiet_NaN();  // ROS: not set
   if (!std::isnan(stamp)) {
-    if (stamp < c.lastStamp) {
-      ++c.outOfOrder;
-      return Rejection::OutOfOrder;
-    }
-    if (stamp == c.lastStamp) {
-      ++c.duplicate;
-      return Rejection::DuplicateStamp;
-    }
-    if (tooFarAhead(input, stamp, now)) {
-      ++c.future;
-      return Rejection::FutureStamp;
-    }
-    c.lastStamp = stamp;
-    c.delays.add(now - stamp);
-    // A value is never sent before it is stamped: stamps of two inputs ahead of the clock's
-    // reading tell that the clock stands still while the values come (rosbag play catching up
-    // publishes them without /clock); one input alone may only have a clock running ahead.
-    // Only when stamps are checked against the clock (a finite maxFutureStamp): they are then
-    // on its time base.
-    if (stamp > reading_ && std::isfinite(options_.maxFutureStamp)) {
-      double& lead = leadStamps_[static_cast<std::size_t>(input)];
-      if (std::isinf(lead)) ++leaders_;
-      if (stamp > lead) lead = stamp;
-      if (stamp > leadStamp_) leadStamp_ = stamp;
-    }
+    const Rejection r = acceptStamp(input, c, stamp, now);
+    if (r != Rejection::None) return r;
   }
   const bool byStamp = o.alignByStamp && !std::isnan(stamp);
   const double arrival = arrivalTime(now, stamp);
@@ -270,6 +275,53 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
   ring_->slotOf(k).inputs[static_cast<std::size_t>(input)].add(value, variance, time, arrival);
   period = k;
   return Rejection::None;
+}
+
+Rejection FusionCoreBase::acceptStamp(Index input, InputCounters& c, double stamp, double now) {
+  if (stamp < c.lastStamp) {
+    ++c.outOfOrder;
+    return Rejection::OutOfOrder;
+  }
+  if (stamp == c.lastStamp) {
+    ++c.duplicate;
+    return Rejection::DuplicateStamp;
+  }
+  if (tooFarAhead(input, stamp, now)) {
+    ++c.future;
+    return Rejection::FutureStamp;
+  }
+  c.lastStamp = stamp;
+  c.delays.add(now - stamp);
+  // A value is never sent before it is stamped: stamps of two inputs ahead of the clock's
+  // reading tell that the clock stands still while the values come (rosbag play catching up
+  // publishes them without /clock); one input alone may only have a clock running ahead.
+  // Only when stamps are checked against the clock (a finite maxFutureStamp): they are then
+  // on its time base.
+  if (stamp > reading_ && std::isfinite(options_.maxFutureStamp)) {
+    double& lead = leadStamps_[static_cast<std::size_t>(input)];
+    if (std::isinf(lead)) ++leaders_;
+    if (stamp > lead) lead = stamp;
+    if (stamp > leadStamp_) leadStamp_ = stamp;
+  }
+  return Rejection::None;
+}
+
+void FusionCoreBase::fillStatistics(FusionStatistics& out) const {
+  out.inputs.assign(counters_.begin(), counters_.end());
+  out.sumInputs();
+  out.estimates = estimateCount_;
+  out.estimationFailures = estimationFailures_;
+  out.filterResets = filterResets_;
+  out.clockResets = clockResets_;
+  out.nisFailures = nisFailures_;
+  out.controlNonFinite = controlNonFinite_;
+  out.skippedGaps = skippedGaps_;
+  out.skippedPeriods = skippedPeriods_;
+  out.estimatorSeconds = estimatorSeconds_;
+  out.maxStepSeconds = maxStepSeconds_;
+  out.lastFailure = lastFailure_;
+  out.clock = clock_;
+  out.startTime = startTime_;
 }
 
 bool FusionCoreBase::tooFarAhead(Index input, double stamp, double now) const {
@@ -499,30 +551,7 @@ const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Ind
   if (o.maxMeasurementLag / o.period > 10000.0) {
     throw estimation::ParameterError("maximum measurement lag is more than 10000 periods");
   }
-  if (!o.inputs.empty() && static_cast<Index>(o.inputs.size()) != inputs) {
-    throw estimation::ParameterError("input options: expected " + std::to_string(inputs) +
-                                     " entries (one per input), found " +
-                                     std::to_string(o.inputs.size()));
-  }
-  for (const FusionCoreOptions::FirstReading& f : o.initialFromInputs) {
-    if (f.input < 0 || f.input >= inputs) {
-      throw estimation::ParameterError("initial state from inputs: input " +
-                                       std::to_string(f.input) + " is not one of the " +
-                                       std::to_string(inputs) + " inputs");
-    }
-  }
-  for (std::size_t i = 0; i < o.inputs.size(); ++i) {
-    const std::string problem = inputOptionsProblem(o.inputs[i]);
-    if (!problem.empty()) {
-      throw estimation::ParameterError("input " + std::to_string(i) + ": " + problem);
-    }
-    if (!canPredict && (o.inputs[i].gated() || o.inputs[i].alignment.needsPrediction())) {
-      throw estimation::ParameterError(
-          "input " + std::to_string(i) + ": " +
-          (o.inputs[i].gated() ? "a Mahalanobis gate" : "FILL") +
-          " needs the filter's predicted measurement, which this method does not give");
-    }
-  }
+  checkInputOptions(o, inputs, canPredict);
   return o;
 }
 

@@ -125,7 +125,8 @@ ReplayCost replayCost(const EventLog& events, const EngineMaker& makeEngine,
   auto ignore = [](const EstimateRef&) {};
   events.replay(*engine, ignore);
   const double cost = engine->innovations().predictionErrorCost();
-  if (engine->estimationFailures() > 0 || engine->nisFailures() > 0 || !std::isfinite(cost)) {
+  const FusionStatistics statistics = engine->statistics();
+  if (statistics.estimationFailures > 0 || statistics.nisFailures > 0 || !std::isfinite(cost)) {
     return {};
   }
   return {cost, engine->innovations().overall().periods()};

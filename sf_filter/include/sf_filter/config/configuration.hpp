@@ -135,6 +135,9 @@
 //                               covariance from the state (requires POSE_OUT;
 //                               twist_output.hpp).                          Default: unknown
 //                               twist (zero, variance 1e6).
+//   ACCEL_OUT                   (a index): the forward acceleration published on accel/filtered
+//                               (geometry_msgs/AccelWithCovarianceStamped; accel_output.hpp).
+//                                                                          Default: not published.
 //   INPUT_COVARIANCE            ((i)(covariance array member)(entry)) per TOPICS_IN entry taking
 //                               its variance from the message's covariance array; "unknown"
 //                               arrays (all zero, -1 first) fall back to R (input_covariance.hpp).
@@ -287,5 +290,6 @@
 #include "sf_filter/config/gps_inputs.hpp"
 #include "sf_filter/config/input_covariance_blocks.hpp"
 #include "sf_filter/config/twist_output.hpp"
+#include "sf_filter/config/accel_output.hpp"
 #include "sf_filter/config/initial_from_inputs.hpp"
 #endif

@@ -18,6 +18,7 @@
 
 #include "sf_filter/core/fusion_core_options.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/core/fusion_statistics.hpp"
 #include "sf_filter/core/innovation_record.hpp"
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
@@ -117,6 +118,9 @@ class FusionCoreBase {
   std::uint64_t estimateCount() const { return estimateCount_; }
   /// The longest estimator step so far [s].
   double maxStepSeconds() const { return maxStepSeconds_; }
+  /// The counters above copied into `out` (FusionStatistics), the inputs' totals summed; the
+  /// filter's numerical repairs are FusionCore's to add.
+  void fillStatistics(FusionStatistics& out) const;
 
  protected:
   /// `canPredict`: the filter gives its predicted measurement (gates and FILL possible).
@@ -239,6 +243,9 @@ class FusionCoreBase {
   /// Whether a stamp of input `input` is further ahead than maxFutureStamp of the clock reading
   /// `now` and of the newest stamp every other input sent while the clock stood still.
   bool tooFarAhead(Index input, double stamp, double now) const;
+  /// place()'s checks of a set stamp against the input's previous one and the clock; notes the
+  /// stamp (delay, lead stamps) when it is accepted.
+  Rejection acceptStamp(Index input, InputCounters& c, double stamp, double now);
   /// The open period of time t (ring.openPeriodOf), remembered as queued when it lies ahead.
   std::uint64_t placeValue(double t, bool& estimated, bool& beyond);
   /// The time a value aligned by arrival (or a control: `stamp` NaN) belongs to: its arrival,

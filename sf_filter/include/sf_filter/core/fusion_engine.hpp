@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <sf_estimation/numerical_repairs.hpp>
 
+#include "sf_filter/core/fusion_statistics.hpp"
 #include "sf_filter/core/innovation_record.hpp"
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
@@ -76,36 +77,31 @@ class FusionEngine {
                        const Eigen::Matrix3d& covariance) = 0;
 
   virtual EstimateRef lastEstimate() const = 0;
-  virtual const InputCounters& counters(Index input) const = 0;
+  /// Every counter of the core, copied into `out` (allocation-free once `out` has held as many
+  /// inputs): the node refreshes one snapshot per period.
+  virtual void fillStatistics(FusionStatistics& out) const = 0;
+  /// The same as a new snapshot.
+  FusionStatistics statistics() const {
+    FusionStatistics s;
+    fillStatistics(s);
+    return s;
+  }
   virtual const InputOptions& inputOptions(Index input) const = 0;
   virtual Index inputCount() const = 0;
   virtual bool timedOut(Index input) const = 0;
   virtual double clock() const = 0;
-  virtual double startTime() const = 0;
   virtual const NisWindow& nis() const = 0;
   /// The NIS of the run, overall and per input, and the prediction-error cost.
   virtual const InnovationRecord& innovations() const = 0;
-  virtual std::uint64_t nisFailures() const = 0;
-  virtual std::uint64_t clockResets() const = 0;
-  virtual std::uint64_t estimationFailures() const = 0;
-  virtual std::uint64_t filterResets() const = 0;
-  virtual std::uint64_t skippedGaps() const = 0;
-  virtual std::uint64_t skippedPeriods() const = 0;
   virtual std::uint64_t periodsDue(double now) const = 0;
   /// FusionCore::runTo: advanceTo for a clock that ran to `now`, every period estimated up to
   /// `maxPeriods`.
   virtual ClockEvent runTo(double now, std::uint64_t maxPeriods, EstimateCallback onEstimate) = 0;
   /// FusionCore::skipGap: crosses a forward gap to `now` with one estimate.
   virtual ClockEvent skipGap(double now, EstimateCallback onEstimate) = 0;
-  virtual const std::string& lastFailure() const = 0;
-  virtual std::uint64_t controlNonFinite() const = 0;
-  virtual estimation::NumericalRepairs numericalRepairs() const = 0;
   virtual double period() const = 0;
   virtual std::uint64_t maxCatchUpPeriods() const = 0;
   virtual double maxMeasurementLag() const = 0;
-  virtual double estimatorSeconds() const = 0;
-  virtual std::uint64_t estimateCount() const = 0;
-  virtual double maxStepSeconds() const = 0;
 
   /// An offline smoother of this core's run (period_smoother.hpp), which records the periods
   /// it is told to and keeps a reference to the core; null for a filter without one.

@@ -83,32 +83,20 @@ class FusionEngineOf final : public FusionEngine {
   }
 
   EstimateRef lastEstimate() const override { return view(core_.lastEstimate()); }
-  const InputCounters& counters(Index input) const override { return core_.counters(input); }
+  void fillStatistics(FusionStatistics& out) const override {
+    core_.fillStatistics(out);
+    out.repairs = core_.numericalRepairs();  // the filter's, known to its type only
+  }
   const InputOptions& inputOptions(Index input) const override { return core_.inputOptions(input); }
   Index inputCount() const override { return core_.inputCount(); }
   bool timedOut(Index input) const override { return core_.timedOut(input); }
   double clock() const override { return core_.clock(); }
-  double startTime() const override { return core_.startTime(); }
   const NisWindow& nis() const override { return core_.nis(); }
   const InnovationRecord& innovations() const override { return core_.innovations(); }
-  std::uint64_t nisFailures() const override { return core_.nisFailures(); }
-  std::uint64_t clockResets() const override { return core_.clockResets(); }
-  std::uint64_t estimationFailures() const override { return core_.estimationFailures(); }
-  std::uint64_t filterResets() const override { return core_.filterResets(); }
-  std::uint64_t skippedGaps() const override { return core_.skippedGaps(); }
-  std::uint64_t skippedPeriods() const override { return core_.skippedPeriods(); }
   std::uint64_t periodsDue(double now) const override { return core_.periodsDue(now); }
-  const std::string& lastFailure() const override { return core_.lastFailure(); }
-  std::uint64_t controlNonFinite() const override { return core_.controlNonFinite(); }
-  estimation::NumericalRepairs numericalRepairs() const override {
-    return core_.numericalRepairs();
-  }
   double period() const override { return core_.period(); }
   std::uint64_t maxCatchUpPeriods() const override { return core_.maxCatchUpPeriods(); }
   double maxMeasurementLag() const override { return core_.maxMeasurementLag(); }
-  double estimatorSeconds() const override { return core_.estimatorSeconds(); }
-  std::uint64_t estimateCount() const override { return core_.estimateCount(); }
-  double maxStepSeconds() const override { return core_.maxStepSeconds(); }
 
   std::unique_ptr<PeriodSmoother> makeSmoother() const override {
     if constexpr (HasSmoother<Filter>::value) {

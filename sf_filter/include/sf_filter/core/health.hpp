@@ -168,11 +168,13 @@ struct EstimationInterval {
   double clock = 0.0;         ///< ROS time at the report
 };
 
-inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindow& nis) {
+namespace health_detail {
+
+/// The problems of the interval, worst first: failed steps, a covariance not finite, clock
+/// jumps, numerical repairs, an inconsistent NIS, slow steps, a stopped clock.
+inline void raiseEstimationProblems(HealthStatus& s, const EstimationInterval& e,
+                                    const NisWindow& nis, std::uint64_t steps, double stepSeconds) {
   const EstimationTotals &c = e.now, &b = e.before;
-  HealthStatus s;
-  const std::uint64_t steps = c.estimates - b.estimates;
-  const double stepSeconds = steps ? (c.estimatorSeconds - b.estimatorSeconds) / steps : 0.0;
   if (c.failures > b.failures) {
     const std::uint64_t resets = c.filterResets - b.filterResets;
     s.raise(HealthLevel::Error,
@@ -194,42 +196,53 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
   if (nis.inconsistent()) {
     const NisBounds bounds = nis.bounds();
     s.raise(HealthLevel::Warn,
-            "filter inconsistent: NIS mean " + health_detail::format(nis.mean()) + " outside [" +
-                health_detail::format(bounds.lower) + ", " + health_detail::format(bounds.upper) +
-                "] and more than a factor " + health_detail::format(nis.tolerance()) +
-                " from its expected " + health_detail::format(nis.expectedMean()) + " (" +
-                nisAdvice(nis.mean() > bounds.upper) + ")");
+            "filter inconsistent: NIS mean " + format(nis.mean()) + " outside [" +
+                format(bounds.lower) + ", " + format(bounds.upper) + "] and more than a factor " +
+                format(nis.tolerance()) + " from its expected " + format(nis.expectedMean()) +
+                " (" + nisAdvice(nis.mean() > bounds.upper) + ")");
   }
   if (steps > 0 && stepSeconds > e.period) {
     s.raise(HealthLevel::Warn, "estimation step takes longer than the period");
   }
   if (e.clockStopped) {
-    s.raise(HealthLevel::Warn,
-            "clock stopped at " + health_detail::format(e.clock) + " s: no estimates");
+    s.raise(HealthLevel::Warn, "clock stopped at " + format(e.clock) + " s: no estimates");
   }
+}
+
+/// The NIS window's values (with the window on).
+inline void addNisValues(HealthStatus& s, const NisWindow& nis, std::uint64_t nisFailures) {
+  s.add("NIS window [periods]", static_cast<std::uint64_t>(nis.size()));
+  s.add("NIS degrees of freedom", static_cast<std::uint64_t>(nis.degreesOfFreedom()));
+  s.add("NIS mean", nis.mean());
+  if (nis.size() > 0) {
+    s.add("NIS lag-1 autocorrelation", nis.autocorrelation());
+    s.add("NIS effective periods", nis.effectivePeriods());
+    const NisBounds bounds = nis.bounds();
+    s.add("NIS lower bound (2.5 %)", bounds.lower);
+    s.add("NIS upper bound (97.5 %)", bounds.upper);
+    s.add("NIS expected mean", nis.expectedMean());
+    s.add("NIS tolerance factor", nis.tolerance());
+  }
+  s.add("NIS consistent", std::string(!nis.full()          ? "not judged (window not full)"
+                                      : nis.inconsistent() ? "false"
+                                                           : "true"));
+  s.add("NIS not computable", nisFailures);
+}
+
+}  // namespace health_detail
+
+inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindow& nis) {
+  const EstimationTotals &c = e.now, &b = e.before;
+  HealthStatus s;
+  const std::uint64_t steps = c.estimates - b.estimates;
+  const double stepSeconds = steps ? (c.estimatorSeconds - b.estimatorSeconds) / steps : 0.0;
+  health_detail::raiseEstimationProblems(s, e, nis, steps, stepSeconds);
   if (s.message.empty()) s.message = "ok";
   s.add("estimates", c.estimates);
   s.add("estimation time per step [us]", 1e6 * stepSeconds);
   s.add("longest step [us]", 1e6 * e.maxStepSeconds);
   s.add("covariance trace", e.covarianceTrace);
-  if (nis.enabled()) {
-    s.add("NIS window [periods]", static_cast<std::uint64_t>(nis.size()));
-    s.add("NIS degrees of freedom", static_cast<std::uint64_t>(nis.degreesOfFreedom()));
-    s.add("NIS mean", nis.mean());
-    if (nis.size() > 0) {
-      s.add("NIS lag-1 autocorrelation", nis.autocorrelation());
-      s.add("NIS effective periods", nis.effectivePeriods());
-      const NisBounds bounds = nis.bounds();
-      s.add("NIS lower bound (2.5 %)", bounds.lower);
-      s.add("NIS upper bound (97.5 %)", bounds.upper);
-      s.add("NIS expected mean", nis.expectedMean());
-      s.add("NIS tolerance factor", nis.tolerance());
-    }
-    s.add("NIS consistent", std::string(!nis.full()          ? "not judged (window not full)"
-                                        : nis.inconsistent() ? "false"
-                                                             : "true"));
-    s.add("NIS not computable", c.nisFailures);
-  }
+  if (nis.enabled()) health_detail::addNisValues(s, nis, c.nisFailures);
   s.add("clock resets", c.clockResets);
   s.add("estimation failures", c.failures);
   s.add("filter resets", c.filterResets);

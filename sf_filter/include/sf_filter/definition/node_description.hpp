@@ -17,6 +17,7 @@ struct NodeDescription {
   std::vector<std::pair<std::string, int>> outputs;  ///< topic and state index (TOPICS_OUT)
   std::optional<std::array<int, 3>> pose;            ///< state indices of x, y, heading (POSE_OUT)
   std::optional<std::array<int, 2>> twist;           ///< state indices of v, omega (TWIST_OUT)
+  std::optional<int> accel;                          ///< state index of a (ACCEL_OUT)
 };
 
 }  // namespace sf_filter

@@ -426,6 +426,7 @@ inline NodeDefinition nodeDefinition() {
                          BOOST_PP_SEQ_ELEM(2, POSE_OUT)};
 #endif
   if constexpr (sf_config::kHasTwistOut) description.twist = sf_config::kTwistOut;
+  if constexpr (sf_config::kHasAccelOut) description.accel = sf_config::kAccelOut;
   d.capabilities.canPredict = estimation::HasMeasurementPrediction<Filter>::value;
   d.capabilities.hasStamp.assign(sf_config::kInputHasStamp.begin(),
                                  sf_config::kInputHasStamp.end());

@@ -20,8 +20,8 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
-#include "sf_filter/node/ros_parameters.hpp"
-#include "sf_filter/node/vector_rotation.hpp"
+#include "sf_filter/io/ros_parameters.hpp"
+#include "sf_filter/io/vector_rotation.hpp"
 
 namespace sf_filter {
 

@@ -77,6 +77,7 @@ class FusionDiagnostics {
 
   /// Publishes one report now.
   void update() {
+    core_.fillStatistics(now_);  // one snapshot for every status of the report
     updater_.force_update();
     for (std::size_t j = 0; j < lossSources_.size(); ++j) {
       for (std::size_t i = 0; i < before_.size(); ++i) {
@@ -84,13 +85,11 @@ class FusionDiagnostics {
       }
     }
     // The intervals of the next report start here.
-    for (std::size_t i = 0; i < before_.size(); ++i) {
-      before_[i] = core_.counters(static_cast<Index>(i));
-    }
+    before_ = now_.inputs;
     beforeEstimation_ = totals();
-    previousClock_ = core_.clock();
+    previousClock_ = now_.clock;
     previousRosTime_ = ros::Time::now().toSec();
-    previousResets_ = core_.clockResets();
+    previousResets_ = now_.clockResets;
   }
 
  private:
@@ -105,18 +104,18 @@ class FusionDiagnostics {
   /// Clock time since the previous report; unknown (0) before the first and across a clock
   /// reset.
   double interval() const {
-    if (std::isnan(previousClock_) || core_.clockResets() != previousResets_) return 0.0;
-    return core_.clock() - previousClock_;
+    if (std::isnan(previousClock_) || now_.clockResets != previousResets_) return 0.0;
+    return now_.clock - previousClock_;
   }
 
   void reportInput(std::size_t i, diagnostic_updater::DiagnosticStatusWrapper& s) const {
     const auto input = static_cast<Index>(i);
     InputInterval in;
-    in.now = core_.counters(input);
+    in.now = now_.inputs[i];
     in.before = before_[i];
-    in.clock = core_.clock();
+    in.clock = now_.clock;
     in.interval = interval();
-    in.sinceStart = core_.clock() - core_.startTime();
+    in.sinceStart = now_.clock - now_.startTime;
     in.timedOut = core_.timedOut(input);
     in.maxMeasurementLag = core_.maxMeasurementLag();
     fill(inputHealth(core_.inputOptions(input), in), s);
@@ -141,14 +140,14 @@ class FusionDiagnostics {
 
   EstimationTotals totals() const {
     EstimationTotals t;
-    t.estimates = core_.estimateCount();
-    t.failures = core_.estimationFailures();
-    t.filterResets = core_.filterResets();
-    t.clockResets = core_.clockResets();
-    t.nisFailures = core_.nisFailures();
-    t.controlDropped = core_.controlNonFinite();
-    t.repairs = core_.numericalRepairs();
-    t.estimatorSeconds = core_.estimatorSeconds();
+    t.estimates = now_.estimates;
+    t.failures = now_.estimationFailures;
+    t.filterResets = now_.filterResets;
+    t.clockResets = now_.clockResets;
+    t.nisFailures = now_.nisFailures;
+    t.controlDropped = now_.controlNonFinite;
+    t.repairs = now_.repairs;
+    t.estimatorSeconds = now_.estimatorSeconds;
     return t;
   }
 
@@ -158,9 +157,9 @@ class FusionDiagnostics {
     e.before = beforeEstimation_;
     e.interval = interval();
     e.period = core_.period();
-    e.maxStepSeconds = core_.maxStepSeconds();
+    e.maxStepSeconds = now_.maxStepSeconds;
     e.covarianceTrace = core_.lastEstimate().covariance.trace();
-    e.lastFailure = core_.lastFailure();
+    e.lastFailure = now_.lastFailure;
     e.clock = ros::Time::now().toSec();
     e.clockStopped = !std::isnan(previousRosTime_) && e.clock == previousRosTime_;
     fill(estimationHealth(e, core_.nis()), s);
@@ -169,6 +168,7 @@ class FusionDiagnostics {
 
   const FusionEngine& core_;
   diagnostic_updater::Updater updater_;
+  FusionStatistics now_;  ///< the core's counters at this report (update())
   std::vector<InputCounters> before_;
   std::vector<InputLossSource> lossSources_;
   std::vector<std::vector<std::uint64_t>> lossBefore_;  ///< per source, per input

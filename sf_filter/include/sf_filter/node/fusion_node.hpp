@@ -19,6 +19,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -40,10 +41,10 @@
 #include "sf_filter/core/message_arrival.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
-#include "sf_filter/node/estimate_messages.hpp"
+#include "sf_filter/io/estimate_writer.hpp"
+#include "sf_filter/io/ros_parameters.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_diagnostics.hpp"
-#include "sf_filter/node/ros_parameters.hpp"
 
 namespace sf_filter {
 
@@ -67,67 +68,12 @@ class FusionNode final : public MessageSink {
         frameId_(settings.frameId),
         childFrameId_(settings.childFrameId),
         publishTf_(settings.publishTf),
-        queueSize_(settings.queueSize) {
-    for (const auto& out : description_.outputs) {
-      outputs_.push_back(nh_.advertise<sf_msgs::OutputEntityStamped>(out.first, queueSize_));
-    }
-    state_ = pnh_.advertise<sf_msgs::StateEstimateStamped>("state", queueSize_);
-    if (description_.pose) {
-      odometry_ = nh_.advertise<nav_msgs::Odometry>("odometry/filtered", queueSize_);
-      // robot_localization's set_pose topic and rviz's 2D Pose Estimate (/initialpose).
-      for (const char* topic : {"set_pose", "initialpose"}) {
-        setPoseSubscribers_.push_back(nh_.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
-            topic, 10, [this, topic](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
-              setPose(topic, *m);
-            }));
-      }
-      // robot_localization's ~set_pose service: the same reset, with its outcome returned.
-      setPoseService_ =
-          pnh_.advertiseService<sf_msgs::SetPose::Request, sf_msgs::SetPose::Response>(
-              "set_pose",
-              [this](sf_msgs::SetPose::Request& request, sf_msgs::SetPose::Response& response) {
-                response.message = setPose("~set_pose", request.pose);
-                response.success = response.message.empty();
-                return true;
-              });
-      diagnostics_.addEstimationValue("poses set", [this] { return std::to_string(setPoses_); });
-      diagnostics_.addEstimationValue("poses refused",
-                                      [this] { return std::to_string(refusedPoses_); });
-    }
-    // What is lost before the core sees it is in the input's diagnostics too: a message of
-    // another type on its topic, a value that cannot be rotated into the base frame.
-    InputLossSource wrongType;
-    wrongType.alwaysError = true;
-    wrongType.count = [this](std::size_t i) { return wrongTypeOf(i).count; };
-    wrongType.reason = [this](std::size_t i) {
-      const WrongType& w = wrongTypeOf(i);
-      return "topic " + w.topic + " receives " + w.received + ", the configuration reads " +
-             w.expected;
-    };
-    diagnostics_.addLossSource(wrongType);
-    // A GPS input's fixes without a valid status (gps::GpsInputs).
-    InputLossSource noFix;
-    noFix.count = [this](std::size_t i) { return gps().noFix(i); };
-    noFix.reason = [](std::size_t) { return std::string("GPS fix status below STATUS_FIX"); };
-    diagnostics_.addLossSource(noFix);
-    // A GPS input's fixes whose position is not on the Earth (gps::implausible).
-    InputLossSource implausibleFix;
-    implausibleFix.count = [this](std::size_t i) { return gps().implausibleFixes(i); };
-    implausibleFix.reason = [this](std::size_t i) {
-      return "GPS fix not on the Earth: " + gps().implausibleReason(i);
-    };
-    diagnostics_.addLossSource(implausibleFix);
-    // INPUT_COVARIANCE: messages whose covariance was unknown (all zero, -1 first) used R.
-    diagnostics_.addInputValue("covariance unknown, header R used", [this](std::size_t i) {
-      const std::uint64_t n = covarianceFallbacks(static_cast<Index>(i));
-      return n ? std::to_string(n) : std::string();
-    });
-    if (aligner_) {
-      InputLossSource unrotated;
-      unrotated.count = [this](std::size_t i) { return aligner_->dropped(i); };
-      unrotated.reason = [this](std::size_t i) { return aligner_->dropReason(i); };
-      diagnostics_.addLossSource(unrotated);
-    }
+        queueSize_(settings.queueSize),
+        writer_(description_, OutputFrames{settings.frameId, settings.childFrameId}) {
+    AdvertiseSink advertiser{*this};
+    writer_.declare(advertiser);
+    if (description_.pose) advertisePose();
+    addLossSources();
     logConfiguration();
   }
 
@@ -212,6 +158,66 @@ class FusionNode final : public MessageSink {
   const FusionEngine& core() const { return core_; }
 
  private:
+  /// POSE_OUT: robot_localization's set_pose topics and service.
+  void advertisePose() {
+    // robot_localization's set_pose topic and rviz's 2D Pose Estimate (/initialpose).
+    for (const char* topic : {"set_pose", "initialpose"}) {
+      setPoseSubscribers_.push_back(nh_.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+          topic, 10, [this, topic](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+            setPose(topic, *m);
+          }));
+    }
+    // robot_localization's ~set_pose service: the same reset, with its outcome returned.
+    setPoseService_ = pnh_.advertiseService<sf_msgs::SetPose::Request, sf_msgs::SetPose::Response>(
+        "set_pose",
+        [this](sf_msgs::SetPose::Request& request, sf_msgs::SetPose::Response& response) {
+          response.message = setPose("~set_pose", request.pose);
+          response.success = response.message.empty();
+          return true;
+        });
+    diagnostics_.addEstimationValue("poses set", [this] { return std::to_string(setPoses_); });
+    diagnostics_.addEstimationValue("poses refused",
+                                    [this] { return std::to_string(refusedPoses_); });
+  }
+
+  /// The values lost before the core sees them, in the inputs' diagnostics.
+  void addLossSources() {
+    // What is lost before the core sees it is in the input's diagnostics too: a message of
+    // another type on its topic, a value that cannot be rotated into the base frame.
+    InputLossSource wrongType;
+    wrongType.alwaysError = true;
+    wrongType.count = [this](std::size_t i) { return wrongTypeOf(i).count; };
+    wrongType.reason = [this](std::size_t i) {
+      const WrongType& w = wrongTypeOf(i);
+      return "topic " + w.topic + " receives " + w.received + ", the configuration reads " +
+             w.expected;
+    };
+    diagnostics_.addLossSource(wrongType);
+    // A GPS input's fixes without a valid status (gps::GpsInputs).
+    InputLossSource noFix;
+    noFix.count = [this](std::size_t i) { return gps().noFix(i); };
+    noFix.reason = [](std::size_t) { return std::string("GPS fix status below STATUS_FIX"); };
+    diagnostics_.addLossSource(noFix);
+    // A GPS input's fixes whose position is not on the Earth (gps::implausible).
+    InputLossSource implausibleFix;
+    implausibleFix.count = [this](std::size_t i) { return gps().implausibleFixes(i); };
+    implausibleFix.reason = [this](std::size_t i) {
+      return "GPS fix not on the Earth: " + gps().implausibleReason(i);
+    };
+    diagnostics_.addLossSource(implausibleFix);
+    // INPUT_COVARIANCE: messages whose covariance was unknown (all zero, -1 first) used R.
+    diagnostics_.addInputValue("covariance unknown, header R used", [this](std::size_t i) {
+      const std::uint64_t n = covarianceFallbacks(static_cast<Index>(i));
+      return n ? std::to_string(n) : std::string();
+    });
+    if (aligner_) {
+      InputLossSource unrotated;
+      unrotated.count = [this](std::size_t i) { return aligner_->dropped(i); };
+      unrotated.reason = [this](std::size_t i) { return aligner_->dropReason(i); };
+      diagnostics_.addLossSource(unrotated);
+    }
+  }
+
   using MessageEvent = ros::MessageEvent<topic_tools::ShapeShifter const>;
 
   /// A value of input `input` dropped for `r`. Late values are explained per input, with
@@ -224,7 +230,8 @@ class FusionNode final : public MessageSink {
       const ros::WallTime now = ros::WallTime::now();
       if (lateWarnings_[i].isZero() || (now - lateWarnings_[i]).toSec() >= kLateWarningPeriod) {
         lateWarnings_[i] = now;
-        ROS_WARN("%s", lateAdvice(i, description_.inputs[i], core_.counters(input),
+        core_.fillStatistics(statistics_);
+        ROS_WARN("%s", lateAdvice(i, description_.inputs[i], statistics_.inputs[i],
                                   core_.maxMeasurementLag())
                            .c_str());
       }
@@ -333,32 +340,31 @@ class FusionNode final : public MessageSink {
   }
 
   void advance(double now) {
-    const std::uint64_t failures = core_.estimationFailures();
     const ClockEvent event = core_.advanceTo(now, publishEstimate_);
+    core_.fillStatistics(statistics_);  // allocation-free after the first period
+    const FusionStatistics& s = statistics_;
     if (event == ClockEvent::JumpedBackwards) {
       measured_ = false;
       ROS_WARN_THROTTLE(5.0,
                         "time jumped backwards to %.3f s (bag restarted?): filter reset (%llu "
                         "times so far)",
-                        now, static_cast<unsigned long long>(core_.clockResets()));
+                        now, static_cast<unsigned long long>(s.clockResets));
     } else if (event == ClockEvent::SkippedGap) {
-      ++skippedGaps_;
       ROS_WARN_THROTTLE(5.0,
                         "time jumped forward to %.3f s: skipped the missed periods (%llu gaps "
                         "so far)",
-                        now, static_cast<unsigned long long>(skippedGaps_));
+                        now, static_cast<unsigned long long>(s.skippedGaps));
     }
-    if (core_.estimationFailures() != failures) {
+    if (s.estimationFailures != failuresReported_) {
       ROS_ERROR_THROTTLE(5.0,
                          "estimation step rejected (%llu so far, %llu filter resets): %s; the "
                          "last good estimate is kept",
-                         static_cast<unsigned long long>(core_.estimationFailures()),
-                         static_cast<unsigned long long>(core_.filterResets()),
-                         core_.lastFailure().c_str());
+                         static_cast<unsigned long long>(s.estimationFailures),
+                         static_cast<unsigned long long>(s.filterResets), s.lastFailure.c_str());
+      failuresReported_ = s.estimationFailures;
     }
     reportTimeouts();
-    std::uint64_t gated = 0;
-    for (Index i = 0; i < core_.inputCount(); ++i) gated += core_.counters(i).gated;
+    const std::uint64_t gated = s.totals.gated;
     if (gated != gatedReported_) {
       ROS_WARN_THROTTLE(10.0,
                         "%llu values failed their input's Mahalanobis gate so far (used as "
@@ -366,7 +372,7 @@ class FusionNode final : public MessageSink {
                         static_cast<unsigned long long>(gated));
       gatedReported_ = gated;
     }
-    const estimation::NumericalRepairs repairs = core_.numericalRepairs();
+    const estimation::NumericalRepairs& repairs = s.repairs;
     if (repairs.total() != repairsReported_) {
       ROS_WARN_THROTTLE(10.0,
                         "the filter repaired its numbers %llu times so far (covariance made "
@@ -495,27 +501,44 @@ class FusionNode final : public MessageSink {
     }
   }
 
+  /// EstimateWriter's sink online, advertising: a publisher per output, in the writer's order.
+  struct AdvertiseSink {
+    FusionNode& node;
+    template <class Message>
+    void declare(std::size_t, const std::string& topic, OutputScope scope) {
+      ros::NodeHandle& h = scope == OutputScope::Private ? node.pnh_ : node.nh_;
+      node.publishers_.push_back(h.advertise<Message>(topic, node.queueSize_));
+    }
+  };
+
+  /// EstimateWriter's sink online, publishing; the odometry's pose also goes to tf.
+  struct PublishSink {
+    FusionNode& node;
+    template <class Message>
+    void operator()(std::size_t k, const std::string&, OutputScope, const Message& m) const {
+      node.publishers_[k].publish(m);
+      if constexpr (std::is_same_v<Message, nav_msgs::Odometry>) node.broadcast(m);
+    }
+  };
+
   void publish(const EstimateRef& e) {
     // No pose before the first estimate from a real input: the filter's initial belief at
     // the origin is not a position of the robot (doc/filter_node.md).
     measured_ = measured_ || e.presentInputs > 0;
-    for (std::size_t k = 0; k < outputs_.size(); ++k) {
-      outputs_[k].publish(makeOutputEntity(e, description_.outputs[k].second, frameId_));
-    }
-    state_.publish(makeStateEstimate(e, description_.method, frameId_));
-    if (!description_.pose || !measured_) return;
-    const nav_msgs::Odometry odom =
-        makeOdometry(e, *description_.pose, frameId_, childFrameId_, description_.twist);
-    odometry_.publish(odom);
-    if (publishTf_) {
-      geometry_msgs::TransformStamped t;
-      t.header = odom.header;
-      t.child_frame_id = childFrameId_;
-      t.transform.translation.x = odom.pose.pose.position.x;
-      t.transform.translation.y = odom.pose.pose.position.y;
-      t.transform.rotation = odom.pose.pose.orientation;
-      broadcaster_.sendTransform(t);
-    }
+    PublishSink sink{*this};
+    writer_.write(e, measured_, sink);
+  }
+
+  /// The odometry's pose as the transform frame_id -> child_frame_id (unless ~publish_tf off).
+  void broadcast(const nav_msgs::Odometry& odom) {
+    if (!publishTf_) return;
+    geometry_msgs::TransformStamped t;
+    t.header = odom.header;
+    t.child_frame_id = childFrameId_;
+    t.transform.translation.x = odom.pose.pose.position.x;
+    t.transform.translation.y = odom.pose.pose.position.y;
+    t.transform.rotation = odom.pose.pose.orientation;
+    broadcaster_.sendTransform(t);
   }
 
   void logConfiguration() const {
@@ -555,17 +578,22 @@ class FusionNode final : public MessageSink {
     for (const auto& out : description_.outputs) {
       ROS_INFO("  output %s <- x[%d]", nh_.resolveName(out.first).c_str(), out.second);
     }
-    ROS_INFO("  state -> %s", state_.getTopic().c_str());
+    const std::size_t state = description_.outputs.size();  // writer_'s order
+    ROS_INFO("  state -> %s", publishers_.at(state).getTopic().c_str());
     if (core_.nis().enabled()) {
       ROS_INFO("  diagnostics -> /diagnostics, NIS over %zu periods", core_.nis().capacity());
     } else {
       ROS_INFO("  diagnostics -> /diagnostics");
     }
     if (description_.pose) {
-      ROS_INFO("  odometry -> %s, tf %s -> %s%s", odometry_.getTopic().c_str(), frameId_.c_str(),
-               childFrameId_.c_str(), publishTf_ ? "" : " (tf disabled)");
+      ROS_INFO("  odometry -> %s, tf %s -> %s%s", publishers_.at(state + 1).getTopic().c_str(),
+               frameId_.c_str(), childFrameId_.c_str(), publishTf_ ? "" : " (tf disabled)");
       ROS_INFO("  pose resets <- %s, %s, service %s", nh_.resolveName("set_pose").c_str(),
                nh_.resolveName("initialpose").c_str(), setPoseService_.getService().c_str());
+    }
+    if (description_.accel) {
+      ROS_INFO("  acceleration x[%d] -> %s", *description_.accel,
+               publishers_.back().getTopic().c_str());
     }
   }
 
@@ -619,10 +647,9 @@ class FusionNode final : public MessageSink {
   /// whose poses come in its own frame does not subscribe /tf).
   std::unique_ptr<tf2_ros::Buffer> poseTf_;
   std::unique_ptr<tf2_ros::TransformListener> poseTfListener_;
-  std::vector<ros::Publisher> outputs_;
-  ros::Publisher state_, odometry_;
-  ros::Timer timer_;       ///< the schedule on wall-clock time
-  ros::Subscriber clock_;  ///< the schedule on simulated time
+  std::vector<ros::Publisher> publishers_;  ///< per output of writer_, in its order
+  ros::Timer timer_;                        ///< the schedule on wall-clock time
+  ros::Subscriber clock_;                   ///< the schedule on simulated time
   /// The newest /clock message read (onClock); -infinity before the first.
   double lastClockMessage_ = -std::numeric_limits<double>::infinity();
   bool scheduled_ = false;  ///< the clock was valid: subscribed, timer running
@@ -637,9 +664,11 @@ class FusionNode final : public MessageSink {
   tf2_ros::TransformBroadcaster broadcaster_;
   std::string frameId_, childFrameId_;
   bool publishTf_ = true;
-  int queueSize_ = 1000;   ///< ~queue_size: of every subscription and publication
-  bool measured_ = false;  ///< an estimate used a measured value (since the last reset)
-  std::uint64_t skippedGaps_ = 0;
+  int queueSize_ = 1000;  ///< ~queue_size: of every subscription and publication
+  EstimateWriter writer_;
+  bool measured_ = false;        ///< an estimate used a measured value (since the last reset)
+  FusionStatistics statistics_;  ///< the core's counters after the last advance()
+  std::uint64_t failuresReported_ = 0;
   std::uint64_t gatedReported_ = 0;
   std::uint64_t repairsReported_ = 0;
   std::vector<bool> timedOut_;  ///< per input: its timeout was logged

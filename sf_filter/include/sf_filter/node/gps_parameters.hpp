@@ -13,7 +13,7 @@
 #include <string>
 
 #include "sf_filter/gps/gps_inputs.hpp"
-#include "sf_filter/node/ros_parameters.hpp"
+#include "sf_filter/io/ros_parameters.hpp"
 
 namespace sf_filter {
 

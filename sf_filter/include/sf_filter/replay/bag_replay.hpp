@@ -35,11 +35,11 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include "sf_filter/core/fusion_engine.hpp"
+#include "sf_filter/core/replay_clock.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
-#include "sf_filter/node/estimate_messages.hpp"
+#include "sf_filter/io/estimate_writer.hpp"
 #include "sf_filter/replay/atomic_output.hpp"
-#include "sf_filter/replay/replay_clock.hpp"
 #include "sf_filter/tuning/event_log.hpp"
 
 namespace sf_filter {
@@ -83,8 +83,6 @@ struct ReplaySummary {
   std::uint64_t messages = 0;
   std::uint64_t estimates = 0;
   std::uint64_t dropped = 0;
-  std::uint64_t skippedGaps = 0;  ///< gaps longer than ReplayClock::kMaxGapPeriods, skipped
-  double estimatorSeconds = 0.0;
   /// --smooth: the periods smoothed, in how many segments (period_smoother.hpp), the backward
   /// pass's time and the memory per period of the record and its result.
   std::uint64_t smoothedPeriods = 0;
@@ -113,7 +111,8 @@ class BagReplay final : public MessageSink {
       : engine_(std::move(engine)),
         core_(*engine_),
         description_(std::move(description)),
-        options_(std::move(options)) {}
+        options_(std::move(options)),
+        writer_(description_, OutputFrames{options_.frameId, options_.childFrameId}) {}
 
   /// Records what the bag's messages give the core into `events` (tuning/event_log.hpp), so
   /// that it can be replayed from memory without the bag.
@@ -174,18 +173,8 @@ class BagReplay final : public MessageSink {
                  {{"--csv", options_.csvPath}, {"--bag", options_.outputBag}});
     const std::unique_ptr<PeriodSmoother> smoother = makeSmoother();
     const std::vector<std::unique_ptr<rosbag::Bag>> inputs = openInputs();
-    const std::map<std::string, Recorded> recorded = readInput([&] { return connections(inputs); });
-    checkTypes(recorded);
-    std::vector<std::string> topics = recordedTopics(recorded);
-    const bool readTf = transformSink_ && recorded.count(kTf);
-    if (transformSink_) {
-      if (recorded.count(kTfStatic)) {
-        readInput([&] { readStaticTransforms(inputs, recorded.at(kTfStatic).names); });
-      }
-      if (readTf) {
-        topics.insert(topics.end(), recorded.at(kTf).names.begin(), recorded.at(kTf).names.end());
-      }
-    }
+    bool readTf = false;
+    const std::vector<std::string> topics = topicsToRead(inputs, readTf);
 
     AtomicOutput csvFile("--csv", options_.csvPath, inputFiles(options_));
     AtomicOutput bagFile("--bag", options_.outputBag, inputFiles(options_));
@@ -210,21 +199,7 @@ class BagReplay final : public MessageSink {
       }
       if (output) writeOutput(bagFile, [&] { writeBag(*output, e); });
     };
-    readInput([&] {
-      rosbag::View view;
-      for (const auto& input : inputs) view.addQuery(*input, rosbag::TopicQuery(topics));
-      for (const rosbag::MessageInstance& m : view) {
-        if (readTf && absolute(m.getTopic()) == kTf) {
-          transformSink_(*instantiate<tf2_msgs::TFMessage>(m, kTf), false);
-          continue;
-        }
-        const double now = m.getTime().toSec();
-        if (events_) events_->clock(now);
-        clock_.advance(core_, now, write);
-        for (const TopicReader& reader : readers_.at(absolute(m.getTopic()))) read(reader, m, now);
-        ++summary_.messages;
-      }
-    });
+    readInput([&] { readMessages(inputs, topics, readTf, write); });
     if (smoother) smoothRun(*smoother, csv, csvFile);
     if (csv.is_open()) {
       csv.close();
@@ -233,14 +208,51 @@ class BagReplay final : public MessageSink {
     if (output) writeOutput(bagFile, [&] { output.close(); });
     csvFile.commit();
     bagFile.commit();
-    summary_.estimatorSeconds = core_.estimatorSeconds();
-    summary_.skippedGaps = clock_.skippedGaps();
     return summary_;
   }
 
   const FusionEngine& core() const { return core_; }
 
  private:
+  /// The topics the replay reads, the bags' types checked: the configured ones and, with a
+  /// transform sink, /tf (`readTf`); /tf_static is read into the sink here, before the rest.
+  std::vector<std::string> topicsToRead(const std::vector<std::unique_ptr<rosbag::Bag>>& inputs,
+                                        bool& readTf) {
+    const std::map<std::string, Recorded> recorded = readInput([&] { return connections(inputs); });
+    checkTypes(recorded);
+    std::vector<std::string> topics = recordedTopics(recorded);
+    readTf = transformSink_ && recorded.count(kTf);
+    if (transformSink_) {
+      if (recorded.count(kTfStatic)) {
+        readInput([&] { readStaticTransforms(inputs, recorded.at(kTfStatic).names); });
+      }
+      if (readTf) {
+        topics.insert(topics.end(), recorded.at(kTf).names.begin(), recorded.at(kTf).names.end());
+      }
+    }
+    return topics;
+  }
+
+  /// The bags' messages on `topics` in recorded order: the clock advanced to each (estimates
+  /// to `write`), then the message read; /tf to the transform sink.
+  template <class Write>
+  void readMessages(const std::vector<std::unique_ptr<rosbag::Bag>>& inputs,
+                    const std::vector<std::string>& topics, bool readTf, Write& write) {
+    rosbag::View view;
+    for (const auto& input : inputs) view.addQuery(*input, rosbag::TopicQuery(topics));
+    for (const rosbag::MessageInstance& m : view) {
+      if (readTf && absolute(m.getTopic()) == kTf) {
+        transformSink_(*instantiate<tf2_msgs::TFMessage>(m, kTf), false);
+        continue;
+      }
+      const double now = m.getTime().toSec();
+      if (events_) events_->clock(now);
+      clock_.advance(core_, now, write);
+      for (const TopicReader& reader : readers_.at(absolute(m.getTopic()))) read(reader, m, now);
+      ++summary_.messages;
+    }
+  }
+
   /// Hands the serialized message to the topic's reader.
   void read(const TopicReader& reader, const rosbag::MessageInstance& m, double now) {
     buffer_.resize(m.size());
@@ -526,24 +538,32 @@ class BagReplay final : public MessageSink {
     }
   }
 
+  /// EstimateWriter's sink offline: each message into the output bag at the estimate's time,
+  /// the private ~state under the node's name (--name).
+  struct BagSink {
+    rosbag::Bag& bag;
+    const std::string& nodeName;
+    ros::Time stamp;
+    template <class Message>
+    void operator()(std::size_t, const std::string& topic, OutputScope scope,
+                    const Message& m) const {
+      bag.write(scope == OutputScope::Private ? "/" + nodeName + "/" + topic : absolute(topic),
+                stamp, m);
+    }
+  };
+
+  /// The estimate's messages as the node publishes them; the robot's motion from the first
+  /// period on (the bag is read afterwards, not driven).
   void writeBag(rosbag::Bag& bag, const EstimateRef& e) const {
-    const ros::Time stamp(e.time);
-    for (const auto& out : description_.outputs) {
-      bag.write(absolute(out.first), stamp, makeOutputEntity(e, out.second, options_.frameId));
-    }
-    bag.write("/" + options_.nodeName + "/state", stamp,
-              makeStateEstimate(e, description_.method, options_.frameId));
-    if (description_.pose) {
-      bag.write("/odometry/filtered", stamp,
-                makeOdometry(e, *description_.pose, options_.frameId, options_.childFrameId,
-                             description_.twist));
-    }
+    BagSink sink{bag, options_.nodeName, ros::Time(e.time)};
+    writer_.write(e, true, sink);
   }
 
   std::unique_ptr<FusionEngine> engine_;
   FusionEngine& core_;
   NodeDescription description_;
   ReplayOptions options_;
+  EstimateWriter writer_;
   /// By absolute topic name: one per configured topic that resolves onto it (remaps).
   std::map<std::string, std::vector<TopicReader>> readers_;
   ReplayRotation* rotation_ = nullptr;

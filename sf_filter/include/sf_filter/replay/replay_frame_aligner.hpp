@@ -20,7 +20,7 @@
 #include <tf2/exceptions.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include "sf_filter/node/vector_rotation.hpp"
+#include "sf_filter/io/vector_rotation.hpp"
 
 namespace sf_filter {
 

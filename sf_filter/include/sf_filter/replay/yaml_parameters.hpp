@@ -17,7 +17,7 @@
 #include <xmlrpcpp/XmlRpcValue.h>
 #include <yaml-cpp/yaml.h>
 
-#include "sf_filter/node/ros_parameters.hpp"
+#include "sf_filter/io/ros_parameters.hpp"
 
 namespace sf_filter {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "sf_filter/core/fusion_engine.hpp"
-#include "sf_filter/replay/replay_clock.hpp"
+#include "sf_filter/core/replay_clock.hpp"
 
 namespace sf_filter {
 

@@ -393,17 +393,11 @@ inline std::size_t nisWindowPeriods(const FaultSettings& settings, double period
       std::clamp(periods, static_cast<double>(kMinDefaultNisWindow), 1000000.0));
 }
 
-/// Applies the fault parameters (doc/filter_node.md, "Diagnostics"):
-///   ~input_timeout      one timeout per input in s, 0 for none
-///   ~input_range        one [minimum, maximum] per input, [] for none
-///   ~max_future_stamp   s, 0 .. 60, a stamp may be ahead of the clock (.inf: no check)
-///   ~nis_window         periods >= 0 the NIS is averaged over (0: not computed; default
-///                       30 s of periods)
-///   ~nis_tolerance      factor 1 .. 100 (nis_window.hpp), default 2
-///   ~diagnostic_period  s, 0.01 .. 3600, between diagnostic messages
-inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
-                                         std::vector<InputOptions>& inputs,
-                                         const InputCapabilities& can) {
+namespace detail {
+
+/// loadFaultParameters()'s per-input entries: ~input_timeout and ~input_range.
+inline void loadInputFaultParameters(const ParameterSource& pnh, std::vector<InputOptions>& inputs,
+                                     const InputCapabilities& can) {
   const std::size_t m = inputs.size();
   detail::forEachInputEntry(pnh, "input_timeout", m, can, [&](long k, XmlRpc::XmlRpcValue& v) {
     const double seconds = detail::numberEntry(v, "expected a number of s (0: no timeout)");
@@ -428,6 +422,22 @@ inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
     overrideRange(inputs, k, detail::numberEntry(v[0], expected),
                   detail::numberEntry(v[1], expected), can);
   });
+}
+
+}  // namespace detail
+
+/// Applies the fault parameters (doc/filter_node.md, "Diagnostics"):
+///   ~input_timeout      one timeout per input in s, 0 for none
+///   ~input_range        one [minimum, maximum] per input, [] for none
+///   ~max_future_stamp   s, 0 .. 60, a stamp may be ahead of the clock (.inf: no check)
+///   ~nis_window         periods >= 0 the NIS is averaged over (0: not computed; default
+///                       30 s of periods)
+///   ~nis_tolerance      factor 1 .. 100 (nis_window.hpp), default 2
+///   ~diagnostic_period  s, 0.01 .. 3600, between diagnostic messages
+inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
+                                         std::vector<InputOptions>& inputs,
+                                         const InputCapabilities& can) {
+  detail::loadInputFaultParameters(pnh, inputs, can);
   FaultSettings settings;
   const auto refuse = [](const std::string& name, const std::string& why) {
     throw ParameterOverrideError("parameter ~" + name + ": " + why);

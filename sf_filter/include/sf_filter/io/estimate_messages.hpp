@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include <geometry_msgs/AccelWithCovarianceStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <tf2/LinearMath/Quaternion.h>
 #include <Eigen/Core>
@@ -94,6 +95,22 @@ nav_msgs::Odometry makeOdometry(const Estimate& e, const std::array<int, 3>& pos
     }
   }
   return odom;
+}
+
+/// ACCEL_OUT (a state index) as geometry_msgs/AccelWithCovarianceStamped in the robot's frame
+/// `childFrame`, as robot_localization's accel/filtered: linear.x and its variance from the
+/// state; every other component is zero with the variance 1e6 (unknown, never a certain zero).
+template <class Estimate>
+geometry_msgs::AccelWithCovarianceStamped makeAccel(const Estimate& e, int a,
+                                                    const std::string& childFrame) {
+  geometry_msgs::AccelWithCovarianceStamped msg;
+  msg.header.stamp = ros::Time(e.time);
+  msg.header.frame_id = childFrame;
+  msg.accel.accel.linear.x = e.state(a);
+  for (int k = 0; k < 6; ++k)
+    msg.accel.covariance[static_cast<std::size_t>(k * 7)] = kUnknownVariance;
+  msg.accel.covariance[0] = e.covariance(a, a);
+  return msg;
 }
 
 }  // namespace sf_filter

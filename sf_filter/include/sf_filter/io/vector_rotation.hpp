@@ -20,9 +20,11 @@ namespace sf_filter {
 /// latest transform is used only if the frames are connected by static transforms alone (tf2
 /// reports stamp 0 for such a chain), which hold at every time. Otherwise nullopt, with the
 /// tf2 error of the lookup at `stamp` in *error: a transform is never guessed.
-inline std::optional<geometry_msgs::TransformStamped> lookupRotation(
-    const tf2::BufferCore& buffer, const std::string& target, const std::string& source,
-    const ros::Time& stamp, std::string* error = nullptr) {
+inline std::optional<geometry_msgs::TransformStamped> lookupRotation(const tf2::BufferCore& buffer,
+                                                                     const std::string& target,
+                                                                     const std::string& source,
+                                                                     const ros::Time& stamp,
+                                                                     std::string* error = nullptr) {
   try {
     return buffer.lookupTransform(target, source, stamp);
   } catch (const tf2::TransformException& atStamp) {
@@ -37,12 +39,9 @@ inline std::optional<geometry_msgs::TransformStamped> lookupRotation(
 }
 
 /// `vector`, given in frame `source`, expressed in frame `target` (see lookupRotation()).
-inline std::optional<geometry_msgs::Vector3> rotateVector(const tf2::BufferCore& buffer,
-                                                          const geometry_msgs::Vector3& vector,
-                                                          const std::string& source,
-                                                          const std::string& target,
-                                                          const ros::Time& stamp,
-                                                          std::string* error = nullptr) {
+inline std::optional<geometry_msgs::Vector3> rotateVector(
+    const tf2::BufferCore& buffer, const geometry_msgs::Vector3& vector, const std::string& source,
+    const std::string& target, const ros::Time& stamp, std::string* error = nullptr) {
   const auto transform = lookupRotation(buffer, target, source, stamp, error);
   if (!transform) return std::nullopt;
   geometry_msgs::Vector3 rotated;

@@ -26,20 +26,16 @@ class ReplayClock {
   template <class Write>
   void advance(FusionEngine& core, double now, Write& write) {
     if (core.runTo(now, kMaxGapPeriods, write) == ClockEvent::SkippedGap) {
-      if (skippedGaps_++ == 0 || skippedGaps_ % 1000 == 0) {
+      // The core counts the gaps (FusionStatistics::skippedGaps); read only on a gap.
+      const std::uint64_t skipped = core.statistics().skippedGaps;
+      if (skipped == 1 || skipped % 1000 == 0) {
         std::cerr << "warning: a gap of more than " << kMaxGapPeriods
                   << " periods in the bag before " << std::fixed << std::setprecision(3) << now
-                  << " s: skipped as the online node skips a clock jump (" << skippedGaps_
-                  << " so far)" << std::defaultfloat << std::endl;
+                  << " s: skipped as the online node skips a clock jump (" << skipped << " so far)"
+                  << std::defaultfloat << std::endl;
       }
     }
   }
-
-  /// Gaps crossed with one estimate.
-  std::uint64_t skippedGaps() const { return skippedGaps_; }
-
- private:
-  std::uint64_t skippedGaps_ = 0;
 };
 
 }  // namespace sf_filter

@@ -1,0 +1,84 @@
+// Every message an estimate is published as, built once from it, for the online node
+// (FusionNode::publish) and the offline replay's output bag (BagReplay::writeBag): the entities
+// of TOPICS_OUT, the ~state estimate, POSE_OUT's nav_msgs/Odometry (with TWIST_OUT's twist) and
+// ACCEL_OUT's acceleration. One writer, so that the node and the replay cannot drift apart;
+// an output kind is added here (declare and write) and in the header macro that enables it
+// (doc/design.md, "How to add an output kind").
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <utility>
+
+#include "sf_filter/definition/node_description.hpp"
+#include "sf_filter/io/estimate_messages.hpp"
+
+namespace sf_filter {
+
+/// Where an output's topic lives: the node's namespace, or its private one (~state).
+enum class OutputScope { Node, Private };
+
+/// The frames of the outputs (the node's ~frame_id and ~child_frame_id, the replay's
+/// --frame-id and --child-frame-id).
+struct OutputFrames {
+  std::string frameId = "odom";
+  std::string childFrameId = "base_link";
+};
+
+class EstimateWriter {
+ public:
+  EstimateWriter(NodeDescription description, OutputFrames frames)
+      : description_(std::move(description)), frames_(std::move(frames)) {}
+
+  /// Calls `sink.template declare<Message>(k, topic, scope)` for every output k in the order
+  /// write() numbers them (the node advertises its publishers here).
+  template <class Sink>
+  void declare(Sink& sink) const {
+    std::size_t k = 0;
+    for (const auto& out : description_.outputs) {
+      sink.template declare<sf_msgs::OutputEntityStamped>(k++, out.first, OutputScope::Node);
+    }
+    sink.template declare<sf_msgs::StateEstimateStamped>(k++, "state", OutputScope::Private);
+    if (description_.pose) {
+      sink.template declare<nav_msgs::Odometry>(k++, "odometry/filtered", OutputScope::Node);
+    }
+    if (description_.accel) {
+      sink.template declare<geometry_msgs::AccelWithCovarianceStamped>(k, "accel/filtered",
+                                                                       OutputScope::Node);
+    }
+  }
+
+  /// Calls `sink(k, topic, scope, message)` for every message of `e`, in declare()'s order.
+  /// The robot's motion (odometry, acceleration) only with `measured`: the node's initial belief
+  /// is no position of the robot before a real input (doc/filter_node.md).
+  template <class Estimate, class Sink>
+  void write(const Estimate& e, bool measured, Sink& sink) const {
+    std::size_t k = 0;
+    for (const auto& out : description_.outputs) {
+      sink(k++, out.first, OutputScope::Node, makeOutputEntity(e, out.second, frames_.frameId));
+    }
+    sink(k++, "state", OutputScope::Private,
+         makeStateEstimate(e, description_.method, frames_.frameId));
+    if (description_.pose) {
+      if (measured) {
+        sink(k, "odometry/filtered", OutputScope::Node,
+             makeOdometry(e, *description_.pose, frames_.frameId, frames_.childFrameId,
+                          description_.twist));
+      }
+      ++k;
+    }
+    if (description_.accel && measured) {
+      sink(k, "accel/filtered", OutputScope::Node,
+           makeAccel(e, *description_.accel, frames_.childFrameId));
+    }
+  }
+
+  const NodeDescription& description() const { return description_; }
+  const OutputFrames& frames() const { return frames_; }
+
+ private:
+  NodeDescription description_;
+  OutputFrames frames_;
+};
+
+}  // namespace sf_filter
