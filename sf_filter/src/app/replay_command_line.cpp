@@ -17,6 +17,7 @@ namespace sf_filter::app {
 std::string replayUsage(const std::string& program) {
   return "usage: " + program +
          " --replay INPUT.bag [INPUT.bag]... [--csv OUT.csv] [--bag OUT.bag] [--smooth]\n"
+         "       [--smooth-lag SECONDS]\n"
          "       [--name NODE]\n"
          "       [--estimation-period S | --estimation-period-ms MS] [--scale-q FACTOR]\n"
          "       [--scale-r FACTOR] [--seed N] [--strict]\n"
@@ -49,7 +50,10 @@ std::string replayUsage(const std::string& program) {
          "radians), for a bag without /tf_static.\n"
          "--smooth: after the replay, the Rauch-Tung-Striebel backward pass over every period\n"
          "(KF, EKF; the unscented one for a UKF); the CSV gets smoothed_* columns after the\n"
-         "filtered ones (doc/smoothing.md).\n"
+         "filtered ones (doc/smoothing.md). --smooth-lag: the fixed-lag smoother of that lag\n"
+         "(whole periods, as ~smoothing_lag online): each row gets lagged_* columns of its own\n"
+         "period smoothed with the readings up to the lag later (NaN for the last lag's rows);\n"
+         "the output bag gets odometry/smoothed and ~state/smoothed.\n"
          "POLICY: AVERAGE, LAST, SAMPLED, 'HOLD LAGRANGE|BEZIER|TAYLOR ORDER [VARIANCE]' or\n"
          "'FILL OMEGA N [VARIANCE]'; THRESHOLD 0 removes a gate (doc/alignment_policies.md).\n"
          "INPUT: the input's index, or its record name in a header with INPUTS records.\n"
@@ -146,6 +150,7 @@ void readParametersFile(ReplayCommand& c, int argc, char** argv, const NodeDefin
     const OutputSettings out = loadOutputParameters(*params);
     c.options.frameId = out.frameId;
     c.options.childFrameId = out.childFrameId;
+    c.options.smoothLag = out.smoothingLag;
     c.baseFrame = detail::frameParameter(*params, "base_frame", c.baseFrame);
     c.gpsOptions = loadGpsParameters(*params);
   }
@@ -222,6 +227,8 @@ bool readOutputOption(ReplayCommand& c, Arguments& a) {
     c.options.outputBag = a.value();
   } else if (arg == "--smooth") {
     c.options.smooth = true;
+  } else if (arg == "--smooth-lag") {
+    c.options.smoothLag = smoothingLagSeconds("--smooth-lag", std::stod(a.value()));
   } else if (arg == "--params") {
     a.value();  // read first (readParametersFile)
   } else if (arg == "--static-transform") {

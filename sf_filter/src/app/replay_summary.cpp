@@ -110,6 +110,10 @@ void printReplaySummary(const ReplayCommand& c, const NodeDefinition& def, const
               << " segments) in " << s.smoothingSeconds << " s, " << s.smoothingBytesPerPeriod
               << " bytes per period" << std::endl;
   }
+  if (c.options.smoothLag > 0.0) {
+    std::cout << name << ": fixed-lag smoother, lag " << s.lagPeriods << " periods ("
+              << c.options.smoothLag << " s asked), " << s.lagBytes << " bytes held" << std::endl;
+  }
   printInputCounters(name, o, def.description.inputs);
   printNis(name, o.core, def.description.inputs);
   printGpsCounters(name, o.sink, def.description.inputs);

@@ -10,13 +10,19 @@
 #include <cstdint>
 #include <optional>
 
+#include <sf_estimation/types.hpp>
+
 #include "sf_filter/core/period_smoother.hpp"
 
 namespace sf_filter {
 
-/// A smoothed belief and the end time of the period it estimates.
+using estimation::Index;
+
+/// A smoothed belief, the end time of the period it estimates and that period's inputs with a
+/// measured value.
 struct LaggedBelief {
   double time;
+  Index presentInputs;
   PeriodBelief belief;
 };
 

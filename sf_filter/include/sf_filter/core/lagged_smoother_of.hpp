@@ -30,7 +30,7 @@ class LaggedSmootherOf final : public LaggedSmoother {
   LaggedSmootherOf(const Core& core, std::size_t lag)
       : core_(core),
         smoother_(estimation::fixedLagSmootherFor(core.filter(), lag)),
-        times_(lag + 1, 0.0) {}
+        periods_(lag + 1) {}
 
   std::optional<LaggedBelief> add() override {
     Period period = recorder_.next(core_);
@@ -47,8 +47,8 @@ class LaggedSmootherOf final : public LaggedSmoother {
       smoothed = hold(period);
     }
     if (!smoothed) return std::nullopt;
-    const std::size_t lagged = (added_ - 1 - lag()) % times_.size();
-    return LaggedBelief{times_[lagged], viewOf(smoothed->x, smoothed->P)};
+    const PeriodStamp& lagged = periods_[(added_ - 1 - lag()) % periods_.size()];
+    return LaggedBelief{lagged.time, lagged.presentInputs, viewOf(smoothed->x, smoothed->P)};
   }
 
   std::size_t lag() const override { return smoother_.lag(); }
@@ -56,12 +56,13 @@ class LaggedSmootherOf final : public LaggedSmoother {
   std::size_t segments() const override { return recorder_.segments() + failures_; }
   std::uint64_t failures() const override { return failures_; }
   std::size_t bytes() const override {
-    return times_.size() * (Smoother::bytesPerSlot() + sizeof(double));
+    return periods_.size() * (Smoother::bytesPerSlot() + sizeof(PeriodStamp));
   }
 
  private:
   const estimation::SmoothedPeriod<N>* hold(const Period& period) {
-    times_[added_ % times_.size()] = core_.lastEstimate().time;
+    const auto& e = core_.lastEstimate();
+    periods_[added_ % periods_.size()] = PeriodStamp{e.time, e.presentInputs};
     const estimation::SmoothedPeriod<N>* smoothed = smoother_.add(period);
     ++added_;
     return smoothed;
@@ -69,7 +70,12 @@ class LaggedSmootherOf final : public LaggedSmoother {
 
   const Core& core_;
   Smoother smoother_;
-  std::vector<double> times_;  ///< end time of each held period, in the smoother's ring order
+  /// What the smoothed belief does not hold of each held period, in the smoother's ring order.
+  struct PeriodStamp {
+    double time = 0.0;
+    Index presentInputs = 0;
+  };
+  std::vector<PeriodStamp> periods_;
   std::size_t added_ = 0;
   std::uint64_t failures_ = 0;
   PeriodRecorder<Core, Period> recorder_;

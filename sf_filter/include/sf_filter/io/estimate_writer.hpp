@@ -73,6 +73,38 @@ class EstimateWriter {
     }
   }
 
+  /// How many outputs declare() declares (the smoothed ones are numbered after them).
+  std::size_t count() const {
+    return description_.outputs.size() + 1 + (description_.pose ? 1 : 0) +
+           (description_.accel ? 1 : 0);
+  }
+
+  /// The fixed-lag smoother's outputs (~smoothing_lag, the replay's --smooth-lag), numbered
+  /// from count(): its belief on ~state/smoothed and, with a pose, odometry/smoothed (no tf: the
+  /// smoothed pose is of a period in the past, the tf tree keeps the filtered one).
+  template <class Sink>
+  void declareSmoothed(Sink& sink) const {
+    sink.template declare<sf_msgs::StateEstimateStamped>(count(), "state/smoothed",
+                                                         OutputScope::Private);
+    if (description_.pose) {
+      sink.template declare<nav_msgs::Odometry>(count() + 1, "odometry/smoothed",
+                                                OutputScope::Node);
+    }
+  }
+
+  /// Calls `sink` for the smoothed belief `e` (of the period that ends at e.time), in
+  /// declareSmoothed()'s order; the pose only with `measured`, as write().
+  template <class Estimate, class Sink>
+  void writeSmoothed(const Estimate& e, bool measured, Sink& sink) const {
+    sink(count(), "state/smoothed", OutputScope::Private,
+         makeStateEstimate(e, description_.method, frames_.frameId));
+    if (description_.pose && measured) {
+      sink(count() + 1, "odometry/smoothed", OutputScope::Node,
+           makeOdometry(e, *description_.pose, frames_.frameId, frames_.childFrameId,
+                        description_.twist));
+    }
+  }
+
   const NodeDescription& description() const { return description_; }
   const OutputFrames& frames() const { return frames_; }
 

@@ -283,6 +283,13 @@ constexpr double kMinTimeoutSeconds = 0.0001, kMaxTimeoutSeconds = 60.0;
 constexpr double kMaxFutureStampSeconds = 60.0;
 constexpr double kMaxTransformTimeoutSeconds = 60.0;
 constexpr double kMinDiagnosticPeriodSeconds = 0.01, kMaxDiagnosticPeriodSeconds = 3600.0;
+constexpr double kMinSmoothingLagSeconds = 0.001, kMaxSmoothingLagSeconds = 60.0;
+
+/// ~smoothing_lag, --smooth-lag: 0 (off) or a lag within the plausible range, in seconds.
+inline double smoothingLagSeconds(const std::string& what, double seconds) {
+  return secondsToMs(what, seconds, kMinSmoothingLagSeconds, kMaxSmoothingLagSeconds, true) /
+         1000.0;
+}
 /// A gate of k standard deviations on a scalar input is the chi-square threshold k^2.
 constexpr double kMaxGateSigma = 1e6;
 
@@ -484,6 +491,9 @@ struct OutputSettings {
   /// thread: 1000 messages hold 1 s of a 1 kHz sensor (100 lost values in a 160 ms stall of
   /// the soak test on a loaded machine).
   int queueSize = 1000;
+  /// ~smoothing_lag [s]: the fixed-lag smoother's lag (0: off), rounded to whole periods; its
+  /// estimates go to odometry/smoothed and ~state/smoothed (doc/smoothing.md).
+  double smoothingLag = 0.0;
 };
 
 namespace detail {
@@ -514,7 +524,7 @@ inline std::string frameParameter(const ParameterSource& pnh, const std::string&
 
 }  // namespace detail
 
-/// ~frame_id, ~child_frame_id, ~publish_tf, ~queue_size.
+/// ~frame_id, ~child_frame_id, ~publish_tf, ~queue_size, ~smoothing_lag.
 inline OutputSettings loadOutputParameters(const ParameterSource& pnh) {
   OutputSettings s;
   s.frameId = detail::frameParameter(pnh, "frame_id", s.frameId);
@@ -527,6 +537,9 @@ inline OutputSettings loadOutputParameters(const ParameterSource& pnh) {
   if (s.queueSize < 1 || s.queueSize > 1000000) {
     throw ParameterOverrideError("parameter ~queue_size: expected 1 to 1000000 messages, found " +
                                  std::to_string(s.queueSize));
+  }
+  if (readScalarParameter(pnh, "smoothing_lag", s.smoothingLag)) {
+    s.smoothingLag = smoothingLagSeconds("parameter ~smoothing_lag", s.smoothingLag);
   }
   return s;
 }
@@ -563,6 +576,7 @@ inline const std::vector<std::string>& knownParameters() {
                                                  "child_frame_id",
                                                  "publish_tf",
                                                  "queue_size",
+                                                 "smoothing_lag",
                                                  "base_frame",
                                                  "transform_timeout",
                                                  "datum",

@@ -72,6 +72,7 @@ class FusionNode final : public MessageSink {
         writer_(description_, OutputFrames{settings.frameId, settings.childFrameId}) {
     AdvertiseSink advertiser{*this};
     writer_.declare(advertiser);
+    if (settings.smoothingLag > 0.0) setUpLaggedSmoother(settings.smoothingLag, advertiser);
     if (description_.pose) advertisePose();
     addLossSources();
     logConfiguration();
@@ -511,13 +512,16 @@ class FusionNode final : public MessageSink {
     }
   };
 
-  /// EstimateWriter's sink online, publishing; the odometry's pose also goes to tf.
+  /// EstimateWriter's sink online, publishing; the filtered odometry's pose also goes to tf.
   struct PublishSink {
     FusionNode& node;
+    bool tf;
     template <class Message>
     void operator()(std::size_t k, const std::string&, OutputScope, const Message& m) const {
       node.publishers_[k].publish(m);
-      if constexpr (std::is_same_v<Message, nav_msgs::Odometry>) node.broadcast(m);
+      if constexpr (std::is_same_v<Message, nav_msgs::Odometry>) {
+        if (tf) node.broadcast(m);
+      }
     }
   };
 
@@ -525,8 +529,32 @@ class FusionNode final : public MessageSink {
     // No pose before the first estimate from a real input: the filter's initial belief at
     // the origin is not a position of the robot (doc/filter_node.md).
     measured_ = measured_ || e.presentInputs > 0;
-    PublishSink sink{*this};
+    PublishSink sink{*this, true};
     writer_.write(e, measured_, sink);
+    if (lagged_) publishSmoothed();
+  }
+
+  /// ~smoothing_lag: the fixed-lag smoother of that lag in whole periods and its publishers;
+  /// refused (the node does not start) for a filter without a smoother.
+  void setUpLaggedSmoother(double lagSeconds, AdvertiseSink& advertiser) {
+    const auto periods = static_cast<std::size_t>(std::llround(lagSeconds / core_.period()));
+    lagged_ = core_.makeLaggedSmoother(std::max<std::size_t>(1, periods));
+    if (!lagged_) {
+      throw ParameterOverrideError("parameter ~smoothing_lag: the " + core_.filterDescription() +
+                                   " has no smoother (the Kalman, extended and unscented Kalman "
+                                   "filters have)");
+    }
+    writer_.declareSmoothed(advertiser);
+  }
+
+  /// The smoothed belief of the period the lag back, once the smoother holds the lag.
+  void publishSmoothed() {
+    const std::optional<LaggedBelief> s = lagged_->add();
+    if (!s) return;
+    const EstimateRef e{s->time, s->belief.state, s->belief.covariance, s->presentInputs, 0, false,
+                        false};
+    PublishSink sink{*this, false};
+    writer_.writeSmoothed(e, measured_, sink);
   }
 
   /// The odometry's pose as the transform frame_id -> child_frame_id (unless ~publish_tf off).
@@ -593,7 +621,12 @@ class FusionNode final : public MessageSink {
     }
     if (description_.accel) {
       ROS_INFO("  acceleration x[%d] -> %s", *description_.accel,
-               publishers_.back().getTopic().c_str());
+               publishers_.at(writer_.count() - 1).getTopic().c_str());
+    }
+    if (lagged_) {
+      ROS_INFO("  smoothed with a lag of %zu periods -> %s%s%s", lagged_->lag(),
+               publishers_.at(writer_.count()).getTopic().c_str(), description_.pose ? ", " : "",
+               description_.pose ? publishers_.at(writer_.count() + 1).getTopic().c_str() : "");
     }
   }
 
@@ -666,6 +699,7 @@ class FusionNode final : public MessageSink {
   bool publishTf_ = true;
   int queueSize_ = 1000;  ///< ~queue_size: of every subscription and publication
   EstimateWriter writer_;
+  std::unique_ptr<LaggedSmoother> lagged_;  ///< ~smoothing_lag (nullptr: off)
   bool measured_ = false;        ///< an estimate used a measured value (since the last reset)
   FusionStatistics statistics_;  ///< the core's counters after the last advance()
   std::uint64_t failuresReported_ = 0;

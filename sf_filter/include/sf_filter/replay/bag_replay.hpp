@@ -15,11 +15,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <exception>
 #include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <new>
@@ -62,6 +64,11 @@ struct ReplayOptions {
   /// unscented one for the UKF) over every period; the CSV gets the smoothed columns after the
   /// filtered ones (doc/smoothing.md). The output bag keeps the filtered estimates.
   bool smooth = false;
+  /// --smooth-lag SECONDS (0: off): the fixed-lag smoother of that lag, rounded to whole
+  /// periods; each CSV row gets the lagged_* columns of its own period, smoothed with the
+  /// readings up to the lag later (NaN for the last lag's periods), and the output bag the
+  /// smoothed estimates on odometry/smoothed and ~state/smoothed (doc/smoothing.md).
+  double smoothLag = 0.0;
 };
 
 /// The files a replay reads, which none of its outputs may be (atomic_output.hpp).
@@ -89,6 +96,9 @@ struct ReplaySummary {
   std::uint64_t smoothedSegments = 0;
   double smoothingSeconds = 0.0;
   std::size_t smoothingBytesPerPeriod = 0;
+  /// --smooth-lag: the lag in periods and the smoother's fixed memory.
+  std::size_t lagPeriods = 0;
+  std::size_t lagBytes = 0;
 };
 
 /// Rotates the vectors of FRAME_ALIGNED_INPUTS offline (replay_frame_aligner.hpp).
@@ -172,6 +182,7 @@ class BagReplay final : public MessageSink {
     checkOutputs(inputFiles(options_),
                  {{"--csv", options_.csvPath}, {"--bag", options_.outputBag}});
     const std::unique_ptr<PeriodSmoother> smoother = makeSmoother();
+    const std::unique_ptr<LaggedSmoother> lagged = makeLaggedSmoother();
     const std::vector<std::unique_ptr<rosbag::Bag>> inputs = openInputs();
     bool readTf = false;
     const std::vector<std::string> topics = topicsToRead(inputs, readTf);
@@ -193,6 +204,9 @@ class BagReplay final : public MessageSink {
       if (smoother) {
         smoother->record();
         rows_.push_back(CsvRow{e.time, e.presentInputs});
+      } else if (lagged) {
+        holdLagged(*lagged, e, csv, output, bagFile);
+        if (csv.is_open() && !csv) throw writeError(csvFile);
       } else if (csv.is_open()) {
         writeCsvRow(csv, e.time, e.state, e.covariance, e.presentInputs);
         if (!csv) throw writeError(csvFile);
@@ -201,6 +215,10 @@ class BagReplay final : public MessageSink {
     };
     readInput([&] { readMessages(inputs, topics, readTf, write); });
     if (smoother) smoothRun(*smoother, csv, csvFile);
+    if (lagged) {
+      while (!pending_.empty()) writePending(csv, nullptr);
+      if (csv.is_open() && !csv) throw writeError(csvFile);
+    }
     if (csv.is_open()) {
       csv.close();
       if (!csv) throw writeError(csvFile);
@@ -474,6 +492,7 @@ class BagReplay final : public MessageSink {
     writeCsvNames(csv, "");
     csv << ",present_inputs";
     if (options_.smooth) writeCsvNames(csv, "smoothed_");
+    if (options_.smoothLag > 0.0) writeCsvNames(csv, "lagged_");
     csv << '\n';
   }
 
@@ -517,6 +536,75 @@ class BagReplay final : public MessageSink {
           " has no smoother (the Kalman, extended and unscented Kalman filters have)");
     }
     return smoother;
+  }
+
+  /// --smooth-lag: the fixed-lag smoother of the lag in whole periods, refused for a filter
+  /// without a smoother and beside --smooth (the CSV has room for one smoothed track).
+  std::unique_ptr<LaggedSmoother> makeLaggedSmoother() {
+    if (!(options_.smoothLag > 0.0)) return nullptr;
+    if (options_.smooth) {
+      throw ReplayError(
+          "--smooth and --smooth-lag: give one (the CSV has room for one "
+          "smoothed track; --smooth is the best a recording allows)");
+    }
+    const auto periods =
+        static_cast<std::size_t>(std::llround(options_.smoothLag / core_.period()));
+    std::unique_ptr<LaggedSmoother> lagged =
+        core_.makeLaggedSmoother(std::max<std::size_t>(1, periods));
+    if (!lagged) {
+      throw ReplayError(
+          "--smooth-lag: the " + core_.filterDescription() +
+          " has no smoother (the Kalman, extended and unscented Kalman filters have)");
+    }
+    summary_.lagPeriods = lagged->lag();
+    summary_.lagBytes = lagged->bytes();
+    return lagged;
+  }
+
+  /// --smooth-lag: holds the period's filtered row until its smoothed belief comes, lag
+  /// periods later, and writes the row whose belief the smoother gives now.
+  void holdLagged(LaggedSmoother& lagged, const EstimateRef& e, std::ofstream& csv,
+                  OutputBag& output, const AtomicOutput& bagFile) {
+    pending_.push_back(PendingRow{e.time, e.state, e.covariance, e.presentInputs});
+    const std::optional<LaggedBelief> smoothed = lagged.add();
+    if (!smoothed) return;
+    // The smoother starts anew after a refused period: rows it will not smooth go out bare.
+    while (!pending_.empty() && pending_.front().time < smoothed->time) writePending(csv, nullptr);
+    if (pending_.empty()) return;
+    writePending(csv, &smoothed->belief);
+    if (output) {
+      const EstimateRef s{smoothed->time,
+                          smoothed->belief.state,
+                          smoothed->belief.covariance,
+                          smoothed->presentInputs,
+                          0,
+                          false,
+                          false};
+      BagSink sink{*output, options_.nodeName, ros::Time(s.time)};
+      writeOutput(bagFile, [&] { writer_.writeSmoothed(s, true, sink); });
+    }
+  }
+
+  /// Writes the oldest held row with the smoothed belief of its period (NaN without).
+  void writePending(std::ofstream& csv, const PeriodBelief* smoothed) {
+    const PendingRow& row = pending_.front();
+    if (csv.is_open()) {
+      const Eigen::Map<const Eigen::VectorXd> x(row.x.data(), row.x.size());
+      const Eigen::Map<const Eigen::MatrixXd> P(row.P.data(), row.P.rows(), row.P.cols());
+      if (smoothed) {
+        writeCsvRow(csv, row.time, x, P, row.presentInputs, smoothed);
+      } else {
+        const Eigen::VectorXd nan =
+            Eigen::VectorXd::Constant(row.x.size(), std::numeric_limits<double>::quiet_NaN());
+        const Eigen::MatrixXd nanP = Eigen::MatrixXd::Constant(
+            row.P.rows(), row.P.cols(), std::numeric_limits<double>::quiet_NaN());
+        const PeriodBelief none{
+            Eigen::Map<const Eigen::VectorXd>(nan.data(), nan.size()),
+            Eigen::Map<const Eigen::MatrixXd>(nanP.data(), nanP.rows(), nanP.cols())};
+        writeCsvRow(csv, row.time, x, P, row.presentInputs, &none);
+      }
+    }
+    pending_.pop_front();
   }
 
   /// After the forward run: the backward pass (timed), then the CSV's rows, filtered and
@@ -578,6 +666,14 @@ class BagReplay final : public MessageSink {
     double time;
     Index presentInputs;
   };
+  /// --smooth-lag: a filtered row waiting for its period's smoothed belief.
+  struct PendingRow {
+    double time;
+    Eigen::VectorXd x;
+    Eigen::MatrixXd P;
+    Index presentInputs;
+  };
+  std::deque<PendingRow> pending_;
   std::vector<CsvRow> rows_;
 };
 
