@@ -21,6 +21,7 @@
 #include <ros/ros.h>
 
 #include "sf_filter/definition/node_definition.hpp"
+#include "sf_filter/node/extractor_parameters.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_node.hpp"
 #include "sf_filter/node/fusion_node_instance.hpp"
@@ -286,6 +287,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
   std::optional<sf_filter::YamlParameterSource> params;
   std::string paramsPath;
   sf_filter::gps::GpsOptions gpsOptions;  // ~datum, ~gps_yaw_offset of --params
+  sf_config::extractors::ParameterValues extractorParameters;  // e.g. ~magnetic_declination
   std::optional<double> periodOverrideMs;
   std::optional<sf_filter::FilterParameters> fileParameters;
   double maxFutureStampMs = sf_filter::kDefaultMaxFutureStampMs;
@@ -304,7 +306,8 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       paramsPath = argv[i + 1];
       options.parametersFile = paramsPath;
       params.emplace(paramsPath);
-      for (const std::string& line : sf_filter::unknownParameterWarnings(*params)) {
+      for (const std::string& line : sf_filter::unknownParameterWarnings(
+               *params, sf_filter::extractorParameterNames(def.extractorParameters))) {
         std::cerr << program << ": warning: --params " << argv[i + 1] << ": " << line << std::endl;
       }
       periodMs = sf_filter::loadPeriodMs(*params, periodMs);
@@ -317,6 +320,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
       options.childFrameId = out.childFrameId;
       baseFrame = sf_filter::detail::frameParameter(*params, "base_frame", baseFrame);
       gpsOptions = sf_filter::loadGpsParameters(*params);
+      extractorParameters = sf_filter::loadExtractorParameters(*params, def.extractorParameters);
     }
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -547,6 +551,7 @@ int replayMain(int argc, char** argv, const NodeDefinition& def) {
         }
       }
       replay.gps().setOptions(gpsOptions);
+      replay.extractorParameters() = extractorParameters;
       for (sf_filter::TopicReader reader : def.topics) {
         const auto remapped = remaps.find(relativeName(reader.topic));
         if (remapped != remaps.end()) reader.topic = remapped->second;
@@ -657,7 +662,8 @@ class StartedFusionNode final : public sf_filter::FusionNodeInstance {
   StartedFusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, const NodeDefinition& def)
       : def_(def) {
     const sf_filter::RosParameterSource params(pnh);
-    for (const std::string& line : sf_filter::unknownParameterWarnings(params)) {
+    for (const std::string& line : sf_filter::unknownParameterWarnings(
+             params, sf_filter::extractorParameterNames(def.extractorParameters))) {
       ROS_WARN("%s", line.c_str());
     }
     if (def.frameAlignment) aligner_.emplace(params, def.baseFrame, def.description.inputs);
@@ -678,6 +684,8 @@ class StartedFusionNode final : public sf_filter::FusionNodeInstance {
                   aligner_ ? &*aligner_ : nullptr, faults.diagnosticPeriod,
                   sf_filter::loadOutputParameters(params));
     node_->gps().setOptions(sf_filter::loadGpsParameters(params));
+    node_->extractorParameters() =
+        sf_filter::loadExtractorParameters(params, def.extractorParameters);
     for (const sf_filter::TopicReader& reader : def.topics) node_->subscribe(reader);
     node_->start();
   }
