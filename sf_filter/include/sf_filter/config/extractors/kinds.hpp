@@ -2,7 +2,7 @@
 // quantity names become DERIVED_INPUTS quantities (and INPUTS (derived, quantity, mode)), its
 // angles ANGLE_INPUTS, its parameters private node parameters, and the node and the replay read
 // its inputs through it. Quantities are numbered across the kinds in this order (X = 0 ...
-// YAW = 5, EAST = 6 ... UP = 8): append new kinds at the end.
+// YAW = 5, EAST = 6 ... UP = 8, MAGNETIC_YAW = 9): append new kinds at the end.
 // ROS-free and header-only; read before the inputs are generated (detail/derived_inputs.hpp).
 #pragma once
 
@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "sf_filter/config/extractors/extractor.hpp"
+#include "sf_filter/config/extractors/magnetic_heading.hpp"
 #include "sf_filter/config/extractors/pose_difference.hpp"
 
 namespace sf_config {
@@ -36,7 +37,8 @@ struct GpsPosition : ExtractorState {
 // clang-format off
 using ExtractorKinds = std::tuple<
     PoseQuantities,
-    GpsPosition>;
+    GpsPosition,
+    MagneticHeading>;
 // clang-format on
 
 /// One DERIVED_INPUTS quantity: its name, its kind (index into ExtractorKinds) and its index
