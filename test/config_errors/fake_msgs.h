@@ -77,4 +77,9 @@ struct Imu {
   geometry_msgs::Vector3 linear_acceleration;
   double linear_acceleration_covariance[9] = {};
 };
+struct MagneticField {
+  std_msgs::Header header;
+  geometry_msgs::Vector3 magnetic_field;
+  double magnetic_field_covariance[9] = {};
+};
 }  // namespace sensor_msgs

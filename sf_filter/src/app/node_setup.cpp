@@ -17,6 +17,7 @@
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_node.hpp"
 #include "sf_filter/node/fusion_node_instance.hpp"
+#include "sf_filter/io/extractor_parameters.hpp"
 #include "sf_filter/node/gps_parameters.hpp"
 
 namespace sf_filter::app {
@@ -65,7 +66,8 @@ class StartedFusionNode final : public FusionNodeInstance {
   StartedFusionNode(ros::NodeHandle nh, ros::NodeHandle pnh, const NodeDefinition& def)
       : def_(def) {
     const RosParameterSource params(pnh);
-    for (const std::string& line : unknownParameterWarnings(params)) {
+    for (const std::string& line :
+         unknownParameterWarnings(params, extractorParameterNames(def.extractorParameters))) {
       ROS_WARN("%s", line.c_str());
     }
     if (def.frameAlignment) aligner_.emplace(params, def.baseFrame, def.description.inputs);
@@ -84,6 +86,7 @@ class StartedFusionNode final : public FusionNodeInstance {
                   aligner_ ? &*aligner_ : nullptr, faults.diagnosticPeriod,
                   loadOutputParameters(params));
     node_->gps().setOptions(loadGpsParameters(params));
+    node_->extractorParameters() = loadExtractorParameters(params, def.extractorParameters);
     for (const TopicReader& reader : def.topics) node_->subscribe(reader);
     node_->start();
   }

@@ -14,6 +14,7 @@
 #include "sf_filter/definition/node_definition.hpp"
 #include "sf_filter/gps/gps_inputs.hpp"
 #include "sf_filter/io/ros_parameters.hpp"
+#include "sf_filter/io/extractor_parameters.hpp"
 #include "sf_filter/replay/bag_replay.hpp"
 #include "sf_filter/tuning/noise_tuning.hpp"
 
@@ -38,6 +39,7 @@ struct ReplayCommand {
   std::vector<InputOptions> inputs;
   std::string paramsPath;
   gps::GpsOptions gpsOptions;  // ~datum, ~gps_yaw_offset of --params
+  sf_config::extractors::ParameterValues extractorParameters;  // e.g. ~magnetic_declination
   std::optional<double> periodOverrideMs;
   std::optional<FilterParameters> fileParameters;
   double maxFutureStampMs = kDefaultMaxFutureStampMs;

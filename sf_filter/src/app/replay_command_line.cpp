@@ -139,7 +139,8 @@ void readParametersFile(ReplayCommand& c, int argc, char** argv, const NodeDefin
     c.paramsPath = argv[i + 1];
     c.options.parametersFile = c.paramsPath;
     params.emplace(c.paramsPath);
-    for (const std::string& line : unknownParameterWarnings(*params)) {
+    for (const std::string& line :
+         unknownParameterWarnings(*params, extractorParameterNames(def.extractorParameters))) {
       std::cerr << c.program << ": warning: --params " << argv[i + 1] << ": " << line << std::endl;
     }
     c.periodMs = loadPeriodMs(*params, c.periodMs);
@@ -153,6 +154,7 @@ void readParametersFile(ReplayCommand& c, int argc, char** argv, const NodeDefin
     c.options.smoothLag = out.smoothingLag;
     c.baseFrame = detail::frameParameter(*params, "base_frame", c.baseFrame);
     c.gpsOptions = loadGpsParameters(*params);
+    c.extractorParameters = loadExtractorParameters(*params, def.extractorParameters);
   }
 }
 

@@ -116,6 +116,7 @@ int replayBag(const ReplayCommand& c, const NodeDefinition& def) {
     connectAligner(replay, *aligner, *rotation, c.staticTransforms);
   }
   replay.gps().setOptions(c.gpsOptions);
+  replay.extractorParameters() = c.extractorParameters;
   subscribeTopics(replay, c, def);
   const auto start = std::chrono::steady_clock::now();
   const ReplaySummary s = replay.run();

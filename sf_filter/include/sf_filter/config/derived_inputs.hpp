@@ -19,7 +19,8 @@
 //   template <int I> struct Derivation {            // how TOPICS_IN entry I is read
 //     static constexpr bool derived;                //   false: its field, as configured
 //     static constexpr extractors::PoseQuantity quantity; static constexpr bool differential;
-//     template <class Member> static extractors::Pose pose(const Member&); };
+//     using Kind;                                   //   its extractor kind (extractors/kinds.hpp)
+//     static constexpr int kind_quantity; };        //   the quantity's index in Kind
 //
 // Checked at compile time, each reported once and naming the macro: the entries' form, input
 // index 0 <= index < m and listed once, the quantity and the mode names, the member's type
@@ -28,6 +29,8 @@
 // configuration.hpp after the inputs.
 #pragma once
 
+#include <cstddef>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -37,62 +40,39 @@
 namespace sf_config {
 namespace derived_detail {
 
-template <class T, class = void>
-struct IsQuaternion : std::false_type {};
-template <class T>
-struct IsQuaternion<
-    T, std::void_t<decltype(std::declval<const T&>().x), decltype(std::declval<const T&>().y),
-                   decltype(std::declval<const T&>().z), decltype(std::declval<const T&>().w)>>
-    : std::bool_constant<std::is_convertible_v<decltype(std::declval<const T&>().x), double> &&
-                         std::is_convertible_v<decltype(std::declval<const T&>().y), double> &&
-                         std::is_convertible_v<decltype(std::declval<const T&>().z), double> &&
-                         std::is_convertible_v<decltype(std::declval<const T&>().w), double>> {};
-
-template <class T, class = void>
-struct IsPose : std::false_type {};
-template <class T>
-struct IsPose<T, std::void_t<decltype(std::declval<const T&>().position.x),
-                             decltype(std::declval<const T&>().position.y),
-                             decltype(std::declval<const T&>().position.z),
-                             decltype(std::declval<const T&>().orientation)>>
-    : std::bool_constant<
-          IsQuaternion<std::decay_t<decltype(std::declval<const T&>().orientation)>>::value &&
-          std::is_convertible_v<decltype(std::declval<const T&>().position.x), double> &&
-          std::is_convertible_v<decltype(std::declval<const T&>().position.y), double> &&
-          std::is_convertible_v<decltype(std::declval<const T&>().position.z), double>> {};
-
-template <class Q>
-extractors::Quaternion quaternionOf(const Q& q) {
-  return {static_cast<double>(q.x), static_cast<double>(q.y), static_cast<double>(q.z),
-          static_cast<double>(q.w)};
-}
-
-/// A pose member as a Pose; a quaternion member as a Pose at the origin.
-template <class Member>
-extractors::Pose poseOf(const Member& member) {
-  extractors::Pose pose;
-  if constexpr (IsPose<Member>::value) {
-    pose.position[0] = static_cast<double>(member.position.x);
-    pose.position[1] = static_cast<double>(member.position.y);
-    pose.position[2] = static_cast<double>(member.position.z);
-    pose.orientation = quaternionOf(member.orientation);
-  } else if constexpr (IsQuaternion<Member>::value) {
-    pose.orientation = quaternionOf(member);
-  }
-  return pose;
-}
-
 /// Whether the input's member can be read for the entry's quantity (unknown types pass: their
 /// mistake is reported elsewhere).
+/// Quantity `quantity` has no DIFFERENTIAL form (its kind's kAbsoluteOnly).
+template <std::size_t... K>
+constexpr bool absoluteOnlyOf(int quantity, std::index_sequence<K...>) {
+  const extractors::QuantityEntry e = extractors::quantityEntry(quantity);
+  return ((static_cast<int>(K) == e.kind &&
+           std::tuple_element_t<K, extractors::ExtractorKinds>::kAbsoluteOnly) ||
+          ...);
+}
+constexpr bool absoluteOnly(int quantity) {
+  return absoluteOnlyOf(quantity,
+                        std::make_index_sequence<std::tuple_size_v<extractors::ExtractorKinds>>{});
+}
+
+/// Whether `quantity`'s kind can read member type Field (an unknown quantity passes: its
+/// name is reported).
+template <class Field, std::size_t... K>
+constexpr bool kindFits(int quantity, std::index_sequence<K...>) {
+  const extractors::QuantityEntry e = extractors::quantityEntry(quantity);
+  return e.kind < 0 ||
+         ((static_cast<int>(K) == e.kind &&
+           std::tuple_element_t<K, extractors::ExtractorKinds>::template fits<Field>(e.local)) ||
+          ...);
+}
+
 template <class Field>
 constexpr bool memberFits(int quantity) {
   if constexpr (std::is_same_v<Field, detail::UnknownMessage>) {
     return true;
-  } else if (isGpsQuantity(quantity)) {
-    return true;  // any member of the fix: gps_inputs.hpp checks the message
   } else {
-    return isAngleQuantity(quantity) ? (IsQuaternion<Field>::value || IsPose<Field>::value)
-                                     : IsPose<Field>::value;
+    return kindFits<Field>(
+        quantity, std::make_index_sequence<std::tuple_size_v<extractors::ExtractorKinds>>{});
   }
 }
 
@@ -125,7 +105,8 @@ struct InputFieldOf<I, true> {
     static_assert(e.quantity != derived_detail::UnknownQuantity,                                   \
                   SF_DI_PREFIX(k, entry) ": quantity '" SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry))     \
                   "' is not one of X, Y, Z (of a pose's position), ROLL, PITCH, YAW (of a "        \
-                  "quaternion or a pose's orientation) or EAST, NORTH, UP (of a NavSatFix)");       \
+                  "quaternion or a pose's orientation) or EAST, NORTH, UP (of a NavSatFix), nor "  \
+                  "of the other extractor kinds of sf_filter/config/extractors/kinds.hpp");        \
     static_assert(e.mode != derived_detail::UnknownMode,                                           \
                   SF_DI_PREFIX(k, entry) ": mode '" SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry))         \
                   "' is not ABSOLUTE or DIFFERENTIAL (the change since the topic's previous "      \
@@ -136,12 +117,18 @@ struct InputFieldOf<I, true> {
                   SF_PP_STR(BOOST_PP_SEQ_ELEM(0, entry)) " is not a "                              \
                   "pose (members position and orientation) or, for ROLL, PITCH and YAW, a "        \
                   "quaternion (x, y, z, w); e.g. orientation of sensor_msgs::Imu, pose.pose of "   \
-                  "nav_msgs::Odometry");                                                           \
+                  "nav_msgs::Odometry; for another kind's quantity the member its fits() "         \
+                  "accepts (sf_filter/config/extractors/)");                                       \
     static_assert(!SF_CFG_IS_AVERAGING || !derived_detail::isAngleQuantity(e.quantity),           \
                   SF_DI_PREFIX(k, entry) ": ROLL, PITCH and YAW are angle inputs, used by "        \
                   "KALMAN_FILTER, EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER and "            \
                   "PARTICLE_FILTER_SIR only (MOVING_AVERAGE, MOVING_MEDIAN and "                   \
-                  "CONFIDENCE_WEIGHTED_AVERAGING average linearly)");                              \
+                  "CONFIDENCE_WEIGHTED_AVERAGING average linearly; so are the angles of the "      \
+                  "other extractor kinds)");                                                       \
+    static_assert(e.mode != derived_detail::Differential ||                                        \
+                      !derived_detail::absoluteOnly(e.quantity),                                   \
+                  SF_DI_PREFIX(k, entry) ": quantity '" SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry))     \
+                  "' is ABSOLUTE only (it has no change since the previous message to fuse)");     \
   };
 // clang-format on
 
@@ -160,16 +147,18 @@ struct Derivation {
   static constexpr bool valid =
       derived && I >= 0 && I < kMeasurementSize && quantity_index >= 0 &&
       derived_detail::kDerivedEntries[derived ? entry : 0].mode >= 0 &&
-      derived_detail::memberFits<typename derived_detail::InputFieldOf<I>::type>(quantity_index);
+      derived_detail::memberFits<typename derived_detail::InputFieldOf<I>::type>(quantity_index) &&
+      !(derived_detail::kDerivedEntries[derived ? entry : 0].mode == derived_detail::Differential &&
+        derived_detail::absoluteOnly(quantity_index));
   static constexpr extractors::PoseQuantity quantity =
       static_cast<extractors::PoseQuantity>(quantity_index < 0 ? 0 : quantity_index);
   static constexpr bool differential =
       derived &&
       derived_detail::kDerivedEntries[derived ? entry : 0].mode == derived_detail::Differential;
-  template <class Member>
-  static extractors::Pose pose(const Member& member) {
-    return derived_detail::poseOf(member);
-  }
+  /// The extractor kind that reads the input (extractors/kinds.hpp) and the quantity's index
+  /// in it.
+  using Kind = extractors::KindOf<quantity_index>;
+  static constexpr int kind_quantity = extractors::quantityEntry(quantity_index).local;
 };
 
 }  // namespace sf_config

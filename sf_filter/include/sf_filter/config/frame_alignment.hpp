@@ -39,6 +39,7 @@
 #include <boost/preprocessor/facilities/is_empty.hpp>
 
 #include "sf_filter/config/configuration.hpp"
+#include "sf_filter/config/detail/option_entries.hpp"
 
 // clang-format off
 #if SF_CONFIG_OK
@@ -186,11 +187,10 @@ inline constexpr int kAlignedIndices[] = {
 /// The first FRAME_ALIGNED_INPUTS entry that lists `input`, -1 if none does.
 constexpr int firstEntryOf([[maybe_unused]] int input) {
 #if SF_FA_OK
-  for (int k = 0; k < static_cast<int>(std::size(kAlignedIndices)); ++k) {
-    if (kAlignedIndices[k] == input) return k;
-  }
-#endif
+  return detail::entryNaming(kAlignedIndices, input);
+#else
   return -1;
+#endif
 }
 
 }  // namespace alignment_detail
@@ -218,20 +218,11 @@ using FrameAlignedInputs = std::tuple<BOOST_PP_SEQ_FOR_EACH_I(SF_FA_NAME_OP, ~, 
 using FrameAlignedInputs = std::tuple<>;
 #endif
 
-namespace alignment_detail {
-template <int K>
-struct EntryType {
-  using type = std::tuple_element_t<K, FrameAlignedInputs>;
-};
-template <>
-struct EntryType<-1> {
-  using type = NotFrameAligned;
-};
-}  // namespace alignment_detail
-
 /// How input I is read: NotFrameAligned, or its FRAME_ALIGNED_INPUTS descriptor.
 template <int I>
-using FrameAlignment = typename alignment_detail::EntryType<alignment_detail::firstEntryOf(I)>::type;
+using FrameAlignment =
+    typename detail::DescriptorAt<FrameAlignedInputs, alignment_detail::firstEntryOf(I),
+                                  NotFrameAligned>::type;
 
 }  // namespace sf_config
 

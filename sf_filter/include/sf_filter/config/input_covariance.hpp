@@ -26,6 +26,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "sf_filter/config/detail/option_entries.hpp"
 #include "sf_filter/config/extractors/message_covariance.hpp"
 
 // clang-format off
@@ -139,11 +140,10 @@ inline constexpr int kCovarianceIndices[] = {
 /// The first INPUT_COVARIANCE entry of `input`, -1 if none.
 constexpr int firstEntryOf([[maybe_unused]] int input) {
 #if SF_IC_OK
-  for (int k = 0; k < static_cast<int>(std::size(kCovarianceIndices)); ++k) {
-    if (kCovarianceIndices[k] == input) return k;
-  }
-#endif
+  return detail::entryNaming(kCovarianceIndices, input);
+#else
   return -1;
+#endif
 }
 
 template <std::size_t... I>
@@ -169,20 +169,10 @@ using CovarianceEntries = std::tuple<BOOST_PP_SEQ_FOR_EACH_I(SF_IC_NAME_OP, ~, I
 using CovarianceEntries = std::tuple<>;
 #endif
 
-namespace covariance_detail {
-template <int K>
-struct EntryType {
-  using type = std::tuple_element_t<K, CovarianceEntries>;
-};
-template <>
-struct EntryType<-1> {
-  using type = NoCovarianceSource;
-};
-}  // namespace covariance_detail
-
 /// The INPUT_COVARIANCE source of TOPICS_IN entry I, or NoCovarianceSource.
 template <int I>
 using CovarianceSource =
-    typename covariance_detail::EntryType<covariance_detail::firstEntryOf(I)>::type;
+    typename detail::DescriptorAt<CovarianceEntries, covariance_detail::firstEntryOf(I),
+                                  NoCovarianceSource>::type;
 
 }  // namespace sf_config

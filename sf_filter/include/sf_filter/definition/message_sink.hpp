@@ -6,14 +6,14 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
-
 #include <vector>
 
 #include <sf_estimation/types.hpp>
 
-#include "sf_filter/config/extractors/pose_difference.hpp"
+#include "sf_filter/config/extractors/extractor.hpp"
 #include "sf_filter/gps/gps_inputs.hpp"
 
 namespace sf_filter {
@@ -43,13 +43,19 @@ class MessageSink {
                                         std::uint32_t sec, std::uint32_t nsec,
                                         const std::array<double, 3>& vector, int axis) = 0;
 
-  /// The previous pose of DERIVED_INPUTS DIFFERENTIAL input `input` (kept by the sink, so
-  /// that every node and replay run starts the differences anew).
-  sf_config::extractors::PoseMemory& previousPose(estimation::Index input) {
+  /// The extractor of DERIVED_INPUTS input `input`, of kind Kind (config/extractors/kinds.hpp;
+  /// one per input, created on first use): kept by the sink, so that every node and replay run
+  /// starts anew (a differential input's previous pose).
+  template <class Kind>
+  Kind& extractor(estimation::Index input) {
     const auto i = static_cast<std::size_t>(input);
-    if (previousPoses_.size() <= i) previousPoses_.resize(i + 1);
-    return previousPoses_[i];
+    if (extractors_.size() <= i) extractors_.resize(i + 1);
+    if (!extractors_[i]) extractors_[i] = std::make_unique<Kind>();
+    return static_cast<Kind&>(*extractors_[i]);  // an input is read by one kind only
   }
+  /// The extractor kinds' private parameters given to the node or replay (defaults if not).
+  sf_config::extractors::ParameterValues& extractorParameters() { return parameters_; }
+  const sf_config::extractors::ParameterValues& extractorParameters() const { return parameters_; }
   /// Counts a message of `input` whose covariance was unknown (INPUT_COVARIANCE: all zero or
   /// -1 first), so that the header's R was used.
   void countCovarianceFallback(estimation::Index input) {
@@ -62,14 +68,16 @@ class MessageSink {
     const auto i = static_cast<std::size_t>(input);
     return i < covarianceFallbacks_.size() ? covarianceFallbacks_[i] : 0;
   }
-  /// Forgets the previous poses of the differential inputs (after a reset of the estimate).
-  void forgetPreviousPoses() { previousPoses_.clear(); }
+  /// Forgets the extractors' state, e.g. the previous poses of the differential inputs (after
+  /// a reset of the estimate).
+  void forgetExtractorState() { extractors_.clear(); }
   /// The GPS inputs' datum, yaw offset and counters (DERIVED_INPUTS EAST, NORTH, UP).
   gps::GpsInputs& gps() { return gps_; }
   const gps::GpsInputs& gps() const { return gps_; }
 
  private:
-  std::vector<sf_config::extractors::PoseMemory> previousPoses_;
+  std::vector<std::unique_ptr<sf_config::extractors::ExtractorState>> extractors_;
+  sf_config::extractors::ParameterValues parameters_;
   std::vector<std::uint64_t> covarianceFallbacks_;
   gps::GpsInputs gps_;
 };

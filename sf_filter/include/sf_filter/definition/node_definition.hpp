@@ -39,6 +39,9 @@ struct NodeDefinition {
   bool frameAlignment = false;
   std::string baseFrame;
   std::vector<TopicReader> topics;
+  /// The private parameters of the extractor kinds its inputs are read by (e.g.
+  /// ~magnetic_declination), loaded by the node and the replay into their sink.
+  std::vector<sf_config::extractors::ExtractorParameter> extractorParameters;
   /// The header's numeric parameters, evaluated for an estimation period (entries may use T).
   std::function<FilterParameters(double estimationPeriodMs)> defaultParameters;
   /// The header's filter made from (possibly overridden) parameters, in its fusion core.

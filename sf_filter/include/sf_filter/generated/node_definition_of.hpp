@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -162,9 +163,22 @@ inline void sendGps(const GpsValues& v, MessageSink& sink, double now, double st
   }
 }
 
-/// Reads input In (not a GPS input) from `msg` into the sink: a DERIVED_INPUTS quantity (a
-/// differential one from the change since the topic's previous message), or the field (or
-/// rotated vector).
+/// The sample of DERIVED_INPUTS input In (not a GPS input) from `msg`, by the input's extractor
+/// kind (config/extractors/kinds.hpp), whose object the sink keeps.
+template <class In, class Message>
+std::optional<sf_config::extractors::Sample> derivedSample(const Message& msg, MessageSink& sink,
+                                                           std::optional<double> variance,
+                                                           double stamp) {
+  using Derivation = sf_config::Derivation<In::index>;
+  using Kind = typename Derivation::Kind;
+  const sf_config::extractors::SampleContext context{variance, stamp, sink.extractorParameters()};
+  return sink.extractor<Kind>(In::index)
+      .template sample<Derivation::kind_quantity, Derivation::differential>(msg, In::member(msg),
+                                                                            context);
+}
+
+/// Reads input In (not a GPS input) from `msg` into the sink: a DERIVED_INPUTS quantity by its
+/// extractor, or the field (or rotated vector).
 template <class In, class Message>
 void readInput(const Message& msg, MessageSink& sink, double now) {
   using Derivation = sf_config::Derivation<In::index>;
@@ -175,17 +189,11 @@ void readInput(const Message& msg, MessageSink& sink, double now) {
   const double stamp = stampOf(msg);
   if constexpr (Derivation::derived) {
     if constexpr (Derivation::valid) {
-      const sf_config::extractors::Pose pose = Derivation::pose(In::member(msg));
-      if constexpr (Derivation::differential) {
-        const std::optional<sf_config::extractors::Sample> sample =
-            sf_config::extractors::differentialSample(Derivation::quantity, pose, variance, stamp,
-                                                      sink.previousPose(In::index));
-        if (sample) sink.measurement(In::index, now, sample->value, sample->variance, stamp);
-      } else {
-        sink.measurement(In::index, now,
-                         sf_config::extractors::absoluteValue(Derivation::quantity, pose), variance,
-                         stamp);
-      }
+      const std::optional<sf_config::extractors::Sample> s =
+          derivedSample<In>(msg, sink, variance, stamp);
+      if (!s) return;
+      if (s->covarianceUnknown) sink.countCovarianceFallback(In::index);
+      sink.measurement(In::index, now, s->value, s->variance, stamp);
     }
   } else {
     const std::optional<double> value = inputValue<In>(msg, sink);
@@ -204,15 +212,17 @@ struct BlockValues {
 /// Value of block input In: its field or an ABSOLUTE derived quantity (the configuration
 /// refuses DIFFERENTIAL ones and FRAME_ALIGNED_INPUTS in a block).
 template <class In, class Message>
-std::optional<double> blockInputValue(const Message& msg) {
+std::optional<double> blockInputValue(const Message& msg, MessageSink& sink) {
   static_assert(!sf_config::FrameAlignment<In::index>::aligned,
                 "INPUT_COVARIANCE_BLOCK and FRAME_ALIGNED_INPUTS: an input is listed in both; the "
                 "message's covariance is given in the sensor's frame, which is not rotated");
   using Derivation = sf_config::Derivation<In::index>;
   if constexpr (Derivation::derived) {
     if constexpr (Derivation::valid && !Derivation::differential) {
-      return sf_config::extractors::absoluteValue(Derivation::quantity,
-                                                  Derivation::pose(In::member(msg)));
+      // The block gives the variance: the sample's is not used.
+      const std::optional<sf_config::extractors::Sample> s =
+          derivedSample<In>(msg, sink, std::nullopt, stampOf(msg));
+      return s ? std::optional<double>(s->value) : std::nullopt;
     } else {
       return std::nullopt;  // not built: a static_assert of the configuration reported why
     }
@@ -300,7 +310,7 @@ inline std::vector<TopicReader> topicReaders() {
               readGpsInput<In>(msg, sink, gpsValues);
             } else if constexpr (block >= 0) {
               using Block = std::tuple_element_t<block, sf_config::CovarianceBlocks>;
-              const std::optional<double> value = blockInputValue<In>(msg);
+              const std::optional<double> value = blockInputValue<In>(msg, sink);
               const auto k = static_cast<std::size_t>(positionIn<Block>(In::index));
               if (value) {
                 blocks[static_cast<std::size_t>(block)].value[k] = *value;
@@ -392,10 +402,9 @@ inline std::vector<std::string> inputNames() {
     if constexpr (Align::aligned) {
       names.push_back(std::string(In::topic) + " " + std::string(Align::member));
     } else if constexpr (Derivation::derived) {
-      constexpr const char* kQuantities[] = {"x",   "y",    "z",     "roll", "pitch",
-                                             "yaw", "east", "north", "up"};
-      names.push_back(std::string(In::topic) + " " + std::string(In::field) + " " +
-                      kQuantities[static_cast<int>(Derivation::quantity)] +
+      std::string quantity(sf_config::extractors::quantityEntry(Derivation::quantity_index).name);
+      for (char& c : quantity) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      names.push_back(std::string(In::topic) + " " + std::string(In::field) + " " + quantity +
                       (Derivation::differential ? " differential" : ""));
     } else {
       names.push_back(std::string(In::topic) + " " + std::string(In::field));
@@ -405,6 +414,22 @@ inline std::vector<std::string> inputNames() {
     }
   });
   return names;
+}
+
+/// The private parameters of the extractor kinds the inputs are read by, each once.
+inline std::vector<sf_config::extractors::ExtractorParameter> extractorParameters() {
+  std::vector<sf_config::extractors::ExtractorParameter> all;
+  sf_config::forEachInput([&](auto in) {
+    using Derivation = sf_config::Derivation<decltype(in)::index>;
+    if constexpr (Derivation::derived) {
+      for (const sf_config::extractors::ExtractorParameter& p : Derivation::Kind::kParameters) {
+        bool known = false;
+        for (const auto& q : all) known = known || q.name == p.name;
+        if (!known) all.push_back(p);
+      }
+    }
+  });
+  return all;
 }
 
 inline NodeDefinition nodeDefinition() {
@@ -441,6 +466,7 @@ inline NodeDefinition nodeDefinition() {
     using Align = sf_config::FrameAlignment<In::index>;
     if constexpr (Align::aligned) d.alignedAxis[In::index] = std::string(Align::axis_name);
   });
+  d.extractorParameters = extractorParameters();
   d.frameAlignment = sf_config::kHasFrameAlignment;
   d.baseFrame = std::string(sf_config::kBaseFrame);
   d.topics = topicReaders();

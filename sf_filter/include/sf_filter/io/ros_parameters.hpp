@@ -585,8 +585,10 @@ inline const std::vector<std::string>& knownParameters() {
 }
 
 /// One warning line per private parameter the node does not read (a typo, or a name of
-/// robot_localization's), with a hint for robot_localization's names; empty if none.
-inline std::vector<std::string> unknownParameterWarnings(const ParameterSource& pnh) {
+/// robot_localization's), with a hint for robot_localization's names; empty if none. `extra`:
+/// the node's own further names (its extractor kinds' parameters, extractor_parameters.hpp).
+inline std::vector<std::string> unknownParameterWarnings(
+    const ParameterSource& pnh, const std::vector<std::string>& extra = {}) {
   static const std::vector<std::string> robotLocalization = {"two_d_mode",
                                                              "world_frame",
                                                              "map_frame",
@@ -619,11 +621,12 @@ inline std::vector<std::string> unknownParameterWarnings(const ParameterSource& 
     }
     return false;
   };
+  std::vector<std::string> k = knownParameters();
+  k.insert(k.end(), extra.begin(), extra.end());
   std::string known;
-  for (const std::string& k : knownParameters()) known += (known.empty() ? "" : ", ") + k;
+  for (const std::string& name : k) known += (known.empty() ? "" : ", ") + name;
   std::vector<std::string> lines;
   for (const std::string& n : pnh.names()) {
-    const auto& k = knownParameters();
     if (std::find(k.begin(), k.end(), n) != k.end()) continue;
     std::string line = "unknown private parameter ~" + n + " ignored";
     if (isRobotLocalization(n)) {

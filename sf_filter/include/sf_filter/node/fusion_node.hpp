@@ -37,6 +37,7 @@
 
 #include <sf_msgs/SetPose.h>
 
+#include "sf_filter/config/extractors/quaternion_angles.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/core/message_arrival.hpp"
 #include "sf_filter/definition/message_sink.hpp"

@@ -22,6 +22,7 @@
 
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/derived_inputs.hpp"
+#include "sf_filter/config/detail/option_entries.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
 
 // clang-format off
@@ -98,25 +99,16 @@ static_assert(false, "ANGLE_INPUTS: expected a sequence of TOPICS_IN indices, ea
 namespace sf_config {
 namespace angles_detail {
 
-/// Index of the first of `indices` equal to `value`, -1 if none is.
-template <std::size_t K>
-constexpr int firstIndexOf(const int (&indices)[K], int value) {
-  for (std::size_t k = 0; k < K; ++k) {
-    if (indices[k] == value) return static_cast<int>(k);
-  }
-  return -1;
-}
-
 #if SF_ANGLE_STATES_OK
 inline constexpr int kAngleStateIndices[] = {
     BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_INDEX_OP, ~, ANGLE_STATES)};
-constexpr int firstAngleState(int value) { return firstIndexOf(kAngleStateIndices, value); }
+constexpr int firstAngleState(int value) { return detail::entryNaming(kAngleStateIndices, value); }
 BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_STATE_ENTRY, ~, ANGLE_STATES)
 #endif
 #if SF_ANGLE_INPUTS_OK
 inline constexpr int kAngleInputIndices[] = {
     BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_INDEX_OP, ~, ANGLE_INPUTS)};
-constexpr int firstAngleInput(int value) { return firstIndexOf(kAngleInputIndices, value); }
+constexpr int firstAngleInput(int value) { return detail::entryNaming(kAngleInputIndices, value); }
 BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_INPUT_ENTRY, ~, ANGLE_INPUTS)
 #endif
 

@@ -9,6 +9,8 @@
 //                            X, Y, Z            of a pose member (position, orientation)
 //                            EAST, NORTH, UP    of a sensor_msgs/NavSatFix (any of its members:
 //                                               the whole fix is read; config/gps_inputs.hpp)
+//                            and the quantities of the other extractor kinds registered in
+//                            extractors/kinds.hpp (e.g. MAGNETIC_YAW of a MagneticField)
 //                   mode     ABSOLUTE           the value itself
 //                            DIFFERENTIAL       the change since the previous message of the
 //                                               topic, in the frame of the previous pose
@@ -17,6 +19,7 @@
 #include <string_view>
 
 #include "sf_filter/config/detail/preprocessor.hpp"
+#include "sf_filter/config/extractors/kinds.hpp"
 
 // clang-format off
 #define SF_DI_FORMAT "((input index)(quantity)(mode)), e.g. ((0)(YAW)(ABSOLUTE)) with quantity " \
@@ -53,22 +56,17 @@ enum Quantity : int {
 };
 enum Mode : int { Absolute = 0, Differential = 1, UnknownMode = -1 };
 
-constexpr int quantityOf(std::string_view s) {
-  return s == "X"       ? X
-         : s == "Y"     ? Y
-         : s == "Z"     ? Z
-         : s == "ROLL"  ? Roll
-         : s == "PITCH" ? Pitch
-         : s == "YAW"   ? Yaw
-         : s == "EAST"  ? East
-         : s == "NORTH" ? North
-         : s == "UP"    ? Up
-                        : UnknownQuantity;
-}
+/// The quantity named `s` (extractors/kinds.hpp numbers them across the extractor kinds).
+constexpr int quantityOf(std::string_view s) { return extractors::quantityNumber(s); }
+static_assert(extractors::quantityNumber("X") == X && extractors::quantityNumber("YAW") == Yaw &&
+                  extractors::quantityNumber("EAST") == East &&
+                  extractors::quantityNumber("UP") == Up,
+              "extractors/kinds.hpp: the pose and GPS quantities keep their numbers");
 constexpr int modeOf(std::string_view s) {
   return s == "ABSOLUTE" ? Absolute : s == "DIFFERENTIAL" ? Differential : UnknownMode;
 }
-constexpr bool isAngleQuantity(int q) { return q == Roll || q == Pitch || q == Yaw; }
+/// An angle quantity (ROLL, PITCH, YAW, MAGNETIC_YAW, ...): an angle input.
+constexpr bool isAngleQuantity(int q) { return extractors::quantityEntry(q).angle; }
 /// A GPS quantity: the position of a sensor_msgs/NavSatFix in the odom frame.
 constexpr bool isGpsQuantity(int q) { return q == East || q == North || q == Up; }
 

@@ -40,6 +40,7 @@
 #include <boost/preprocessor/tuple/elem.hpp>
 
 #include "sf_filter/config/detail/constants.hpp"
+#include "sf_filter/config/detail/option_entries.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
 #include "sf_filter/config/detail/support.hpp"
 #include "sf_filter/config/detail/topics.hpp"
@@ -263,28 +264,21 @@ static_assert(false, "ALIGN_BY_STAMP: expected a sequence of input indices, each
 namespace sf_config {
 namespace input_alignment_detail {
 
-/// Index of the first of `indices` equal to `input`, -1 if none is.
-template <std::size_t K>
-constexpr int firstIndexOf(const int (&indices)[K], int input) {
-  for (std::size_t k = 0; k < K; ++k) {
-    if (indices[k] == input) return static_cast<int>(k);
-  }
-  return -1;
-}
-
 #if SF_AL_OK
 inline constexpr int kAlignmentIndices[] = {
     BOOST_PP_SEQ_FOR_EACH_I(SF_AL_INDEX_OP, ~, INPUT_ALIGNMENT)};
-constexpr int firstAlignmentEntry(int input) { return firstIndexOf(kAlignmentIndices, input); }
+constexpr int firstAlignmentEntry(int input) {
+  return detail::entryNaming(kAlignmentIndices, input);
+}
 #endif
 #if SF_GATE_OK
 inline constexpr int kGateIndices[] = {BOOST_PP_SEQ_FOR_EACH_I(SF_AL_INDEX_OP, ~, INPUT_GATE)};
-constexpr int firstGateEntry(int input) { return firstIndexOf(kGateIndices, input); }
+constexpr int firstGateEntry(int input) { return detail::entryNaming(kGateIndices, input); }
 #endif
 #if SF_STAMP_OK
 inline constexpr int kStampIndices[] = {
     BOOST_PP_SEQ_FOR_EACH_I(SF_STAMP_INDEX_OP, ~, ALIGN_BY_STAMP)};
-constexpr int firstStampEntry(int input) { return firstIndexOf(kStampIndices, input); }
+constexpr int firstStampEntry(int input) { return detail::entryNaming(kStampIndices, input); }
 #endif
 
 /// What a malformed entry contributes: nothing (its mistake was reported).

@@ -102,11 +102,11 @@ struct InputRange {
 namespace input_alignment_detail {
 #if SF_TIMEOUT_OK
 inline constexpr int kTimeoutIndices[] = {BOOST_PP_SEQ_FOR_EACH_I(SF_AL_INDEX_OP, ~, INPUT_TIMEOUT)};
-constexpr int firstTimeoutEntry(int input) { return firstIndexOf(kTimeoutIndices, input); }
+constexpr int firstTimeoutEntry(int input) { return detail::entryNaming(kTimeoutIndices, input); }
 #endif
 #if SF_RANGE_OK
 inline constexpr int kRangeIndices[] = {BOOST_PP_SEQ_FOR_EACH_I(SF_AL_INDEX_OP, ~, INPUT_RANGE)};
-constexpr int firstRangeEntry(int input) { return firstIndexOf(kRangeIndices, input); }
+constexpr int firstRangeEntry(int input) { return detail::entryNaming(kRangeIndices, input); }
 #endif
 }  // namespace input_alignment_detail
 

@@ -13,12 +13,18 @@
 // no value, and so does a message whose stamp is not after the previous one's (a restarted
 // recording or a clock jump): it starts the differences anew. A pose that is not finite gives
 // a NaN value (dropped and counted by the fusion core) and keeps the previous pose.
+// The extractor kind PoseQuantities (extractor.hpp) reads them from a quaternion or pose member.
 // ROS-free and header-only; unit-tested in test_extractors.cpp.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <optional>
+#include <string_view>
+#include <type_traits>
+#include <utility>
 
+#include "sf_filter/config/extractors/extractor.hpp"
 #include "sf_filter/config/extractors/quaternion_angles.hpp"
 
 namespace sf_config {
@@ -30,12 +36,6 @@ enum class PoseQuantity : int { X = 0, Y = 1, Z = 2, Roll = 3, Pitch = 4, Yaw = 
 struct Pose {
   double position[3] = {0.0, 0.0, 0.0};
   Quaternion orientation;
-};
-
-/// A value and its variance (nullopt: the header's R).
-struct Sample {
-  double value;
-  std::optional<double> variance;
 };
 
 /// The previous pose of a differential input.
@@ -108,6 +108,83 @@ inline std::optional<Sample> differentialSample(PoseQuantity quantity, const Pos
   memory.stamp = stamp;
   return sample;
 }
+
+template <class T, class = void>
+struct IsQuaternion : std::false_type {};
+template <class T>
+struct IsQuaternion<
+    T, std::void_t<decltype(std::declval<const T&>().x), decltype(std::declval<const T&>().y),
+                   decltype(std::declval<const T&>().z), decltype(std::declval<const T&>().w)>>
+    : std::bool_constant<std::is_convertible_v<decltype(std::declval<const T&>().x), double> &&
+                         std::is_convertible_v<decltype(std::declval<const T&>().y), double> &&
+                         std::is_convertible_v<decltype(std::declval<const T&>().z), double> &&
+                         std::is_convertible_v<decltype(std::declval<const T&>().w), double>> {};
+
+template <class T, class = void>
+struct IsPose : std::false_type {};
+template <class T>
+struct IsPose<T, std::void_t<decltype(std::declval<const T&>().position.x),
+                             decltype(std::declval<const T&>().position.y),
+                             decltype(std::declval<const T&>().position.z),
+                             decltype(std::declval<const T&>().orientation)>>
+    : std::bool_constant<
+          IsQuaternion<std::decay_t<decltype(std::declval<const T&>().orientation)>>::value &&
+          std::is_convertible_v<decltype(std::declval<const T&>().position.x), double> &&
+          std::is_convertible_v<decltype(std::declval<const T&>().position.y), double> &&
+          std::is_convertible_v<decltype(std::declval<const T&>().position.z), double>> {};
+
+template <class Q>
+Quaternion quaternionOf(const Q& q) {
+  return {static_cast<double>(q.x), static_cast<double>(q.y), static_cast<double>(q.z),
+          static_cast<double>(q.w)};
+}
+
+/// A pose member as a Pose; a quaternion member as a Pose at the origin.
+template <class Member>
+Pose poseOf(const Member& member) {
+  Pose pose;
+  if constexpr (IsPose<Member>::value) {
+    pose.position[0] = static_cast<double>(member.position.x);
+    pose.position[1] = static_cast<double>(member.position.y);
+    pose.position[2] = static_cast<double>(member.position.z);
+    pose.orientation = quaternionOf(member.orientation);
+  } else if constexpr (IsQuaternion<Member>::value) {
+    pose.orientation = quaternionOf(member);
+  }
+  return pose;
+}
+
+/// Extractor kind X, Y, Z, ROLL, PITCH, YAW of a pose or quaternion member, ABSOLUTE or
+/// DIFFERENTIAL; its state is the previous pose of a differential input.
+class PoseQuantities : public ExtractorState {
+ public:
+  static constexpr std::array<std::string_view, 6> kQuantities{"X",    "Y",     "Z",
+                                                               "ROLL", "PITCH", "YAW"};
+  static constexpr std::array<bool, 6> kAngle{false, false, false, true, true, true};
+  static constexpr std::array<ExtractorParameter, 0> kParameters{};
+  static constexpr bool kAbsoluteOnly = false;
+
+  /// ROLL, PITCH, YAW of a quaternion or a pose; X, Y, Z of a pose only.
+  template <class Member>
+  static constexpr bool fits(int quantity) {
+    return kAngle[static_cast<std::size_t>(quantity)]
+               ? (IsQuaternion<Member>::value || IsPose<Member>::value)
+               : IsPose<Member>::value;
+  }
+
+  template <int Quantity, bool Differential, class Message, class Member>
+  std::optional<Sample> sample(const Message&, const Member& member, const SampleContext& c) {
+    constexpr auto quantity = static_cast<PoseQuantity>(Quantity);
+    if constexpr (Differential) {
+      return differentialSample(quantity, poseOf(member), c.variance, c.stamp, memory_);
+    } else {
+      return Sample{absoluteValue(quantity, poseOf(member)), c.variance};
+    }
+  }
+
+ private:
+  PoseMemory memory_;
+};
 
 }  // namespace extractors
 }  // namespace sf_config
