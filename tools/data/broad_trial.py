@@ -18,7 +18,7 @@ import numpy as np
 ARRAYS = ("imu_gyr", "imu_acc", "imu_mag", "opt_quat", "opt_pos", "movement")
 # The benchmark's trial groups: the first 23 trials are undisturbed, 24..39 disturbed.
 UNDISTURBED_LAST = 23
-TRIAL_NAME = re.compile(r"^(\d\d)_([a-z0-9_]+)\.(hdf5|mat)$")
+TRIAL_NAME = re.compile(r"^(\d\d)_([A-Za-z0-9_]+)\.(hdf5|mat)$")
 
 
 class Trial:

@@ -4,7 +4,8 @@
 //   sf_estimation_broad_attitude --rate 285.714 [--option value ...] < imu.csv > quaternions.csv
 //
 // Input: one sample a line, "gx,gy,gz,ax,ay,az,mx,my,mz" (rad/s, m/s^2, any field unit).
-// Output: one line per input line, "w,x,y,z", the sensor-to-ENU estimate after that sample.
+// Output: one line per input line, "w,x,y,z", the sensor-to-ENU estimate after that sample
+// (with --print-bias followed by the gyro bias estimate bx,by,bz [rad/s]).
 // The filter starts from the first sample's accelerometer and magnetometer.
 #include <cstdio>
 #include <cstdlib>
@@ -22,6 +23,7 @@ using estimation::AttitudeParameters;
 struct Options {
   double rate = 0.0;
   double tiltStd = 0.05, headingStd = 0.2, biasStd = 0.01;  // P0 [rad], [rad/s]
+  bool printBias = false;
   AttitudeParameters parameters;
 };
 
@@ -30,6 +32,7 @@ struct Options {
             << "usage: sf_estimation_broad_attitude --rate HZ [--gyro-noise D] [--bias-walk D]\n"
             << "  [--accelerometer-noise RAD] [--acceleration-inflation E] [--acceleration-gate E]\n"
             << "  [--magnetometer-noise RAD] [--field-norm-gate E] [--field-dip-gate RAD] [--no-magnetometer]\n"
+            << "  [--print-bias]\n"
             << "  [--tilt-std RAD] [--heading-std RAD] [--bias-std RAD/S] < imu.csv > quaternions.csv\n";
   std::exit(2);
 }
@@ -45,8 +48,8 @@ Options parse(int argc, char** argv) {
       {"--tilt-std", &o.tiltStd}, {"--heading-std", &o.headingStd}, {"--bias-std", &o.biasStd}};
   for (int i = 1; i < argc; ++i) {
     const std::string name = argv[i];
-    if (name == "--no-magnetometer") {
-      p.useMagnetometer = false;
+    if (name == "--no-magnetometer" || name == "--print-bias") {
+      (name == "--print-bias" ? o.printBias : p.useMagnetometer) = name == "--print-bias";
       continue;
     }
     const auto found = values.find(name);
@@ -87,7 +90,9 @@ int main(int argc, char** argv) {
     filter.correctGravity(s.segment<3>(3));
     filter.correctField(s.segment<3>(6));
     const Eigen::Quaterniond q = filter.orientation();
-    std::printf("%.9f,%.9f,%.9f,%.9f\n", q.w(), q.x(), q.y(), q.z());
+    std::printf("%.9f,%.9f,%.9f,%.9f", q.w(), q.x(), q.y(), q.z());
+    if (o.printBias) std::printf(",%.9f,%.9f,%.9f", filter.bias()(0), filter.bias()(1), filter.bias()(2));
+    std::printf("\n");
   } while (readSample(s));
   return 0;
 }

@@ -9,11 +9,12 @@
 //  - the accelerometer as the direction of gravity (d = up): it measures the specific force,
 //    which is up and of size g only while the sensor does not accelerate, so its noise is
 //    inflated by how far |a| departs from g and the sample is skipped past a gate;
-//  - optionally the magnetometer as the direction of the earth field d (taken from the first
-//    sample), skipped when its size or dip departs from the first sample's (a nearby magnet
+//  - optionally the magnetometer's horizontal direction as north (d = north): heading only,
+//    skipped when the field's size or dip departs from the first sample's (a nearby magnet
 //    or iron changes both).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -32,7 +33,7 @@ struct AttitudeParameters {
   double accelerationInflation = 0.02;  ///< |a|/g - 1 at which R has doubled (quadratic growth)
   double accelerationGate = 0.25;       ///< | |a|/g - 1 | above which the sample is skipped
   bool useMagnetometer = true;
-  double magnetometerNoise = 0.2;       ///< std of the measured field direction [rad]
+  double magnetometerNoise = 0.2;       ///< std of the measured horizontal field direction [rad]
   double fieldNormGate = 0.1;           ///< relative change of |m| above which m is skipped
   double fieldDipGate = 0.0873;         ///< change of the dip angle [rad] above which m is skipped
 };
@@ -66,6 +67,8 @@ struct AttitudeModel {
 class AttitudeFilter {
  public:
   using Ekf = ManifoldExtendedKalmanFilter<AttitudeModel>;
+  /// Variance [rad^2] of a direction component that a measurement does not inform.
+  static constexpr double kDiscardedVariance = 1e6;
 
   /// Starts at q0 (sensor to ENU) with zero bias; P0 over (rotation vector, bias).
   AttitudeFilter(const AttitudeParameters& parameters, const Eigen::Quaterniond& q0,
@@ -101,25 +104,33 @@ class AttitudeFilter {
     if (!(departure <= parameters_.accelerationGate)) return false;
     const double r = departure / parameters_.accelerationInflation;
     return correct(Eigen::Vector3d::UnitZ(), a.normalized(),
-                   parameters_.accelerometerNoise * std::sqrt(1.0 + r * r));
+                   directionNoise(parameters_.accelerometerNoise * std::sqrt(1.0 + r * r)));
   }
 
-  /// Corrects with one magnetometer sample (any unit); the first one defines the earth field.
+  /// Corrects the heading with one magnetometer sample (any unit): the field's part
+  /// perpendicular to the estimated up is compared with north, so that the field (whose
+  /// vertical part a disturbance often changes most) leaves the tilt to the accelerometer.
+  /// The first sample defines the undisturbed field (size and dip); false when skipped.
   bool correctField(const Eigen::Vector3d& m) {
     if (!parameters_.useMagnetometer || !(m.norm() > 0.0)) return false;
-    const Eigen::Vector3d direction = m.normalized();
-    const double dip = std::asin(std::clamp(direction.dot(gravityDirection()), -1.0, 1.0));
+    const Eigen::Vector3d up = gravityDirection();
+    const double dip = std::asin(std::clamp(m.normalized().dot(up), -1.0, 1.0));
     if (fieldNorm_ == 0.0) {
       fieldNorm_ = m.norm();
       fieldDip_ = dip;
-      field_ << 0.0, std::cos(dip), std::sin(dip);  // north and up in ENU
       return false;
     }
+    const Eigen::Vector3d horizontal = m - m.dot(up) * up;
     if (std::abs(m.norm() / fieldNorm_ - 1.0) > parameters_.fieldNormGate ||
-        std::abs(dip - fieldDip_) > parameters_.fieldDipGate) {
+        std::abs(dip - fieldDip_) > parameters_.fieldDipGate || !(horizontal.norm() > 0.0)) {
       return false;
     }
-    return correct(field_, direction, parameters_.magnetometerNoise);
+    // The measured direction is horizontal by construction: its vertical component carries no
+    // information, and is given a variance that discards it (otherwise the filter would read
+    // the tilt about east as measured, at its own current value).
+    const double s2 = parameters_.magnetometerNoise * parameters_.magnetometerNoise;
+    const Matrix<3, 3> R = s2 * Matrix<3, 3>::Identity() + (kDiscardedVariance - s2) * up * up.transpose();
+    return correct(Eigen::Vector3d::UnitY(), horizontal.normalized(), R);
   }
 
   Eigen::Quaterniond orientation() const {
@@ -150,9 +161,9 @@ class AttitudeFilter {
     return manifold::so3RotateInverse<double>(orientation(), Eigen::Vector3d::UnitZ());
   }
 
-  bool correct(const Eigen::Vector3d& reference, const Eigen::Vector3d& measured, double sigma) {
+  bool correct(const Eigen::Vector3d& reference, const Eigen::Vector3d& measured, const Matrix<3, 3>& R) {
     ekf_.model().reference = reference;
-    ekf_.setMeasurementNoise(directionNoise(sigma));
+    ekf_.setMeasurementNoise(R);
     ekf_.update(measured);
     return true;
   }
@@ -161,7 +172,6 @@ class AttitudeFilter {
   Ekf ekf_;
   double dt_ = 1.0;
   double fieldNorm_ = 0.0, fieldDip_ = 0.0;
-  Eigen::Vector3d field_ = Eigen::Vector3d::UnitY();
 };
 
 }  // namespace estimation
