@@ -1,8 +1,10 @@
 // The IMU attitude filter (attitude_filter.hpp) on analytic cases: a constant rotation is
 // integrated exactly; a static tilt is recovered from the accelerometer, the heading from the
 // magnetometer; a constant gyro bias of a level sensor is estimated on its horizontal axes;
-// a sample past the acceleration gate leaves the belief untouched; and the manifold filters'
-// noise setters refuse what is not a covariance.
+// the earth-frame low-pass of the accelerometer holds the tilt of a shaken sensor; a sample
+// past the acceleration gate leaves the belief untouched; and the manifold filters' noise
+// setters refuse what is not a covariance.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -20,6 +22,7 @@ using V3 = Eigen::Vector3d;
 
 constexpr double kG = 9.81;
 constexpr double kDt = 0.01;
+constexpr double kPi = 3.14159265358979323846;
 
 Matrix<6, 6> initialCovariance(double angle, double bias) {
   Matrix<6, 6> P0 = Matrix<6, 6>::Zero();
@@ -90,6 +93,32 @@ TEST(AttitudeFilter, EstimatesTheHorizontalGyroBiasOfALevelSensor) {
   // Gravity observes the rotation about the horizontal axes only: x and y of the bias.
   EXPECT_NEAR(filter.bias().x(), 0.01, 1e-4);
   EXPECT_NEAR(filter.bias().y(), -0.02, 1e-4);
+}
+
+// A level sensor shaken along x: a = (A sin(w t), 0, g). The low-pass of time constant tau
+// passes A / sqrt(1 + (w tau)^2) < A / (w tau) of the shaking, so the measured direction, and
+// with it the tilt, stays within A / (g w tau); the raw samples swing by A / g.
+double largestTiltWhenShaken(double timeConstant) {
+  AttitudeParameters parameters;
+  parameters.useMagnetometer = false;
+  parameters.accelerationGate = 1.0;
+  parameters.accelerationTimeConstant = timeConstant;
+  AttitudeFilter filter(parameters, Quat::Identity(), initialCovariance(0.01, 1e-6));
+  const double amplitude = 2.0, omega = 2.0 * kPi;
+  double largest = 0.0;
+  for (int k = 0; k < 6000; ++k) {
+    filter.predict(V3::Zero(), kDt);
+    filter.correctGravity(V3(amplitude * std::sin(omega * k * kDt), 0.0, kG), kDt);
+    const V3 up = filter.orientation() * V3::UnitZ();
+    if (k >= 1000) largest = std::max(largest, std::acos(std::min(1.0, up.z())));
+  }
+  return largest;
+}
+
+TEST(AttitudeFilter, TheEarthFrameLowPassHoldsTheTiltOfAShakenSensor) {
+  const double bound = 2.0 / (kG * 2.0 * kPi * 3.0);  // A / (g w tau), 0.0108 rad
+  EXPECT_LT(largestTiltWhenShaken(3.0), bound);
+  EXPECT_GT(largestTiltWhenShaken(0.0), bound);  // the raw samples do not stay within it
 }
 
 TEST(AttitudeFilter, SkipsAnAccelerationPastTheGateAndKeepsTheBelief) {

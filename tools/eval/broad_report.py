@@ -29,6 +29,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "data"))
 import attitude_baselines  # noqa: E402
 import broad_attitude_run  # noqa: E402
 import broad_trial  # noqa: E402
+import broad_tune  # noqa: E402
 import doc_section  # noqa: E402
 
 # The attitude filter's options on BROAD, found by tools/eval/broad_tune.py on its subset.
@@ -105,6 +106,18 @@ def machine():
     return "%s, %s, Python %s" % (cpu, platform.platform(), platform.python_version())
 
 
+def reproduction(results, names):
+    """How closely the runs made as the benchmark's evaluation made them give its figures."""
+    lines = []
+    for ours, theirs, title in (("madgwick9_benchmark", "pub_madgwick", "Madgwick"), ("mahony9_benchmark", "pub_mahony", "Mahony")):
+        pairs = [(results[n][ours], results[n][theirs]) for n in names if theirs in results[n]]
+        if pairs:
+            worst = max(abs(a - b) for a, b in pairs)
+            lines += ["", "%s as published against the published figure: largest difference %.4f deg over %d trials."
+                      % (title, worst, len(pairs))]
+    return lines
+
+
 def body(results, args):
     names = sorted(results)
     undisturbed = [n for n in names if int(n[:2]) <= broad_trial.UNDISTURBED_LAST]
@@ -113,8 +126,13 @@ def body(results, args):
              "", "RMSE [deg] over each trial's movement phase; EKF = this package's attitude filter.", ""]
     lines += table([(n, results[n]) for n in names], columns)
     lines += ["", "Means over the trials found (the benchmark's group figure: the mean of its trials' RMSE):", ""]
-    groups = [("all %d trials found" % len(names), names), ("%d undisturbed trials found" % len(undisturbed), undisturbed)]
+    tuning = [n for n in names if n[:2] in broad_tune.SUBSET]
+    held_out = [n for n in names if n not in tuning]
+    groups = [("all %d trials found" % len(names), names), ("%d undisturbed trials found" % len(undisturbed), undisturbed),
+              ("%d disturbed trials found" % (len(names) - len(undisturbed)), [n for n in names if n not in undisturbed]),
+              ("%d trials of the EKF's tuning" % len(tuning), tuning), ("%d trials held out" % len(held_out), held_out)]
     lines += table([(label, group_means(results, members)) for label, members in groups], columns)
+    lines += reproduction(results, names)
     lines += ["", "The paper's published Madgwick (beta 0.12) over all 39 trials: %.2f deg; over the 23 undisturbed: %.2f deg."
               % PUBLISHED_GROUPS["madgwick"], "",
               "Command: `%s`" % " ".join(["tools/eval/broad_report.py"] + args.shown_argv), "",

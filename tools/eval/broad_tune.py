@@ -21,9 +21,9 @@ import broad_attitude_run  # noqa: E402
 
 SUBSET = ("02", "07", "11", "15", "16", "25", "27", "30", "33")
 # The options searched and where the search starts.
-START = {"--gyro-noise": 0.005, "--bias-walk": 1e-4, "--accelerometer-noise": 1.0,
-         "--acceleration-inflation": 0.1, "--magnetometer-noise": 1.0, "--field-norm-gate": 0.1,
-         "--field-dip-gate": 0.0873, "--acceleration-gate": 2.0}
+START = {"--gyro-noise": 0.005, "--bias-walk": 1e-5, "--accelerometer-noise": 0.2,
+         "--acceleration-inflation": 100.0, "--acceleration-gate": 100.0, "--acceleration-time-constant": 3.0,
+         "--magnetometer-noise": 1.0, "--field-norm-gate": 0.4, "--field-dip-gate": 0.0873}
 
 
 def options_of(values):

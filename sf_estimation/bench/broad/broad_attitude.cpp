@@ -31,6 +31,7 @@ struct Options {
   std::cerr << "sf_estimation_broad_attitude: " << problem << "\n"
             << "usage: sf_estimation_broad_attitude --rate HZ [--gyro-noise D] [--bias-walk D]\n"
             << "  [--accelerometer-noise RAD] [--acceleration-inflation E] [--acceleration-gate E]\n"
+            << "  [--acceleration-time-constant S]\n"
             << "  [--magnetometer-noise RAD] [--field-norm-gate E] [--field-dip-gate RAD] [--no-magnetometer]\n"
             << "  [--print-bias]\n"
             << "  [--tilt-std RAD] [--heading-std RAD] [--bias-std RAD/S] < imu.csv > quaternions.csv\n";
@@ -43,7 +44,7 @@ Options parse(int argc, char** argv) {
   const std::map<std::string, double*> values = {
       {"--rate", &o.rate}, {"--gyro-noise", &p.gyroNoise}, {"--bias-walk", &p.biasWalk},
       {"--accelerometer-noise", &p.accelerometerNoise}, {"--acceleration-inflation", &p.accelerationInflation},
-      {"--acceleration-gate", &p.accelerationGate}, {"--magnetometer-noise", &p.magnetometerNoise},
+      {"--acceleration-gate", &p.accelerationGate}, {"--acceleration-time-constant", &p.accelerationTimeConstant}, {"--magnetometer-noise", &p.magnetometerNoise},
       {"--field-norm-gate", &p.fieldNormGate}, {"--field-dip-gate", &p.fieldDipGate},
       {"--tilt-std", &o.tiltStd}, {"--heading-std", &o.headingStd}, {"--bias-std", &o.biasStd}};
   for (int i = 1; i < argc; ++i) {
@@ -87,7 +88,7 @@ int main(int argc, char** argv) {
   const double dt = 1.0 / o.rate;
   do {
     filter.predict(s.head<3>(), dt);
-    filter.correctGravity(s.segment<3>(3));
+    filter.correctGravity(s.segment<3>(3), dt);
     filter.correctField(s.segment<3>(6));
     const Eigen::Quaterniond q = filter.orientation();
     std::printf("%.9f,%.9f,%.9f,%.9f", q.w(), q.x(), q.y(), q.z());

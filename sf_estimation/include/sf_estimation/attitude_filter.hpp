@@ -32,6 +32,10 @@ struct AttitudeParameters {
   double accelerometerNoise = 0.05;     ///< std of the measured gravity direction [rad]
   double accelerationInflation = 0.02;  ///< |a|/g - 1 at which R has doubled (quadratic growth)
   double accelerationGate = 0.25;       ///< | |a|/g - 1 | above which the sample is skipped
+  /// Time constant [s] of a low-pass of the specific force in the earth frame, whose direction
+  /// is then measured instead of the raw sample's (0: the raw sample). A hand-held or vehicle
+  /// sensor's linear acceleration averages out over a few seconds, gravity does not.
+  double accelerationTimeConstant = 0.0;
   bool useMagnetometer = true;
   double magnetometerNoise = 0.2;       ///< std of the measured horizontal field direction [rad]
   double fieldNormGate = 0.1;           ///< relative change of |m| above which m is skipped
@@ -98,12 +102,21 @@ class AttitudeFilter {
     ekf_.predict(u);
   }
 
-  /// Corrects the tilt with one accelerometer sample [m/s^2]; false when it was skipped.
-  bool correctGravity(const Eigen::Vector3d& a) {
+  /// Corrects the tilt with one accelerometer sample [m/s^2]; false when it was skipped. With
+  /// accelerationTimeConstant, the sample first enters the earth-frame low-pass; dt is the
+  /// time since the previous sample.
+  bool correctGravity(const Eigen::Vector3d& a, double dt = 0.0) {
     const double departure = std::abs(a.norm() / parameters_.gravity - 1.0);
-    if (!(departure <= parameters_.accelerationGate)) return false;
+    Eigen::Vector3d measured = a;
+    if (parameters_.accelerationTimeConstant > 0.0) {
+      const Eigen::Vector3d earth = manifold::so3Rotate<double>(orientation(), a);
+      const bool first = smoothedForce_.isZero();
+      smoothedForce_ += first ? earth : (earth - smoothedForce_) * std::min(1.0, dt / parameters_.accelerationTimeConstant);
+      measured = manifold::so3RotateInverse<double>(orientation(), smoothedForce_);
+    }
+    if (!(departure <= parameters_.accelerationGate) || !(measured.norm() > 0.0)) return false;
     const double r = departure / parameters_.accelerationInflation;
-    return correct(Eigen::Vector3d::UnitZ(), a.normalized(),
+    return correct(Eigen::Vector3d::UnitZ(), measured.normalized(),
                    directionNoise(parameters_.accelerometerNoise * std::sqrt(1.0 + r * r)));
   }
 
@@ -172,6 +185,7 @@ class AttitudeFilter {
   Ekf ekf_;
   double dt_ = 1.0;
   double fieldNorm_ = 0.0, fieldDip_ = 0.0;
+  Eigen::Vector3d smoothedForce_ = Eigen::Vector3d::Zero();  ///< earth frame [m/s^2]
 };
 
 }  // namespace estimation
