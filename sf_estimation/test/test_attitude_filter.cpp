@@ -52,7 +52,8 @@ TEST(AttitudeFilter, RecoversAStaticTiltFromTheAccelerometer) {
   AttitudeParameters parameters;
   parameters.useMagnetometer = false;
   // Roll 0.3, pitch -0.2 rad; the filter starts level.
-  const Quat truth = Quat(Eigen::AngleAxisd(-0.2, V3::UnitY())) * Quat(Eigen::AngleAxisd(0.3, V3::UnitX()));
+  const Quat truth =
+      Quat(Eigen::AngleAxisd(-0.2, V3::UnitY())) * Quat(Eigen::AngleAxisd(0.3, V3::UnitX()));
   AttitudeFilter filter(parameters, Quat::Identity(), initialCovariance(0.5, 1e-6));
   for (int k = 0; k < 2000; ++k) {
     filter.predict(V3::Zero(), kDt);
@@ -67,9 +68,11 @@ TEST(AttitudeFilter, RecoversAStaticTiltFromTheAccelerometer) {
 }
 
 TEST(AttitudeFilter, RecoversTheHeadingFromTheMagnetometer) {
-  const Quat truth = Quat(Eigen::AngleAxisd(1.2, V3::UnitZ())) * Quat(Eigen::AngleAxisd(0.25, V3::UnitX()));
+  const Quat truth =
+      Quat(Eigen::AngleAxisd(1.2, V3::UnitZ())) * Quat(Eigen::AngleAxisd(0.25, V3::UnitX()));
   // The first field sample defines the field; start 0.5 rad off in heading.
-  const Quat start = Quat(Eigen::AngleAxisd(0.7, V3::UnitZ())) * Quat(Eigen::AngleAxisd(0.25, V3::UnitX()));
+  const Quat start =
+      Quat(Eigen::AngleAxisd(0.7, V3::UnitZ())) * Quat(Eigen::AngleAxisd(0.25, V3::UnitX()));
   AttitudeFilter filter(AttitudeParameters(), start, initialCovariance(0.5, 1e-6));
   EXPECT_FALSE(filter.correctField(fieldAt(start)));
   for (int k = 0; k < 3000; ++k) {
@@ -141,7 +144,8 @@ TEST(AttitudeFilter, NoiseSettersRefuseANonCovarianceAndKeepTheOldOne) {
   const auto R = ekf.measurementNoise();
   const auto Q = ekf.processNoise();
   EXPECT_THROW(ekf.setMeasurementNoise(-R), estimation::ParameterError);
-  EXPECT_THROW(ekf.setMeasurementNoise(Matrix<3, 3>::Zero()), estimation::ParameterError);  // not definite
+  EXPECT_THROW(ekf.setMeasurementNoise(Matrix<3, 3>::Zero()),
+               estimation::ParameterError);  // not definite
   EXPECT_EQ(ekf.measurementNoise(), R);
   Matrix<6, 6> asymmetric = Q;
   asymmetric(0, 1) = 1.0;

@@ -15,6 +15,7 @@ Example (the page's own run):
     tools/eval/broad_report.py /path/to/broad --published /path/to/broad/example_code/out \\
         --binary build/sf_estimation_broad_attitude"""
 
+import json
 import os
 import platform
 import subprocess
@@ -43,13 +44,14 @@ PUBLISHED_GROUPS = {"madgwick": (4.96, 4.29)}  # the paper's Madgwick beta 0.12:
 
 
 def evaluate(job):
-    """{column: RMSE [deg]} of one trial."""
-    path, binary = job
+    """{column: RMSE [deg]} of one trial; the baselines' figures are taken from `cached`
+    ({baseline: RMSE}) where present."""
+    path, binary, cached = job
     trial = broad_trial.load(path)
     out = {name: broad_trial.rmse_deg(trial, broad_attitude_run.run(trial, binary, options))
            for name, options in OURS.items()}
     for name in BASELINES:
-        out[name] = broad_trial.rmse_deg(trial, attitude_baselines.run_baseline(trial, name))
+        out[name] = cached[name] if name in cached else broad_trial.rmse_deg(trial, attitude_baselines.run_baseline(trial, name))
     print("  %s done" % trial.name, file=sys.stderr, flush=True)
     return trial.name, out
 
@@ -146,14 +148,24 @@ def main():
     parser.add_argument("--published", help="the benchmark's example_code/out directory")
     parser.add_argument("--binary", default=broad_attitude_run.DEFAULT_BINARY, help="sf_estimation_broad_attitude")
     parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--baseline-cache", help="JSON file of the baselines' figures, read if present and "
+                        "written: the baselines (the slow part) are then run once; delete it after changing them")
     args = parser.parse_args()
     args.shown_argv = ["BROAD"] + (["--published", "BROAD/example_code/out"] if args.published else []) + [
         "--binary", "BUILD/sf_estimation_broad_attitude"]
     paths = broad_trial.find_trials(args.data)
     if not paths:
         parser.error("no BROAD trial in %s" % args.data)
+    cache = {}
+    if args.baseline_cache and os.path.exists(args.baseline_cache):
+        with open(args.baseline_cache) as f:
+            cache = json.load(f)
     with Pool(args.jobs) as pool:
-        results = dict(pool.map(evaluate, [(p, args.binary) for p in paths]))
+        jobs = [(p, args.binary, cache.get(os.path.splitext(os.path.basename(p))[0], {})) for p in paths]
+        results = dict(pool.map(evaluate, jobs))
+    if args.baseline_cache:
+        with open(args.baseline_cache, "w") as f:
+            json.dump({n: {k: v for k, v in r.items() if k in BASELINES} for n, r in results.items()}, f, indent=1)
     if args.published:
         for name, values in published(args.published).items():
             if name in results:

@@ -28,13 +28,15 @@ struct Options {
 };
 
 [[noreturn]] void usage(const std::string& problem) {
-  std::cerr << "sf_estimation_broad_attitude: " << problem << "\n"
-            << "usage: sf_estimation_broad_attitude --rate HZ [--gyro-noise D] [--bias-walk D]\n"
-            << "  [--accelerometer-noise RAD] [--acceleration-inflation E] [--acceleration-gate E]\n"
-            << "  [--acceleration-time-constant S]\n"
-            << "  [--magnetometer-noise RAD] [--field-norm-gate E] [--field-dip-gate RAD] [--no-magnetometer]\n"
-            << "  [--print-bias]\n"
-            << "  [--tilt-std RAD] [--heading-std RAD] [--bias-std RAD/S] < imu.csv > quaternions.csv\n";
+  std::cerr
+      << "sf_estimation_broad_attitude: " << problem << "\n"
+      << "usage: sf_estimation_broad_attitude --rate HZ [--gyro-noise D] [--bias-walk D]\n"
+      << "  [--accelerometer-noise RAD] [--acceleration-inflation E] [--acceleration-gate E]\n"
+      << "  [--acceleration-time-constant S]\n"
+      << "  [--magnetometer-noise RAD] [--field-norm-gate E] [--field-dip-gate RAD] "
+         "[--no-magnetometer]\n"
+      << "  [--print-bias]\n"
+      << "  [--tilt-std RAD] [--heading-std RAD] [--bias-std RAD/S] < imu.csv > quaternions.csv\n";
   std::exit(2);
 }
 
@@ -42,11 +44,19 @@ Options parse(int argc, char** argv) {
   Options o;
   AttitudeParameters& p = o.parameters;
   const std::map<std::string, double*> values = {
-      {"--rate", &o.rate}, {"--gyro-noise", &p.gyroNoise}, {"--bias-walk", &p.biasWalk},
-      {"--accelerometer-noise", &p.accelerometerNoise}, {"--acceleration-inflation", &p.accelerationInflation},
-      {"--acceleration-gate", &p.accelerationGate}, {"--acceleration-time-constant", &p.accelerationTimeConstant}, {"--magnetometer-noise", &p.magnetometerNoise},
-      {"--field-norm-gate", &p.fieldNormGate}, {"--field-dip-gate", &p.fieldDipGate},
-      {"--tilt-std", &o.tiltStd}, {"--heading-std", &o.headingStd}, {"--bias-std", &o.biasStd}};
+      {"--rate", &o.rate},
+      {"--gyro-noise", &p.gyroNoise},
+      {"--bias-walk", &p.biasWalk},
+      {"--accelerometer-noise", &p.accelerometerNoise},
+      {"--acceleration-inflation", &p.accelerationInflation},
+      {"--acceleration-gate", &p.accelerationGate},
+      {"--acceleration-time-constant", &p.accelerationTimeConstant},
+      {"--magnetometer-noise", &p.magnetometerNoise},
+      {"--field-norm-gate", &p.fieldNormGate},
+      {"--field-dip-gate", &p.fieldDipGate},
+      {"--tilt-std", &o.tiltStd},
+      {"--heading-std", &o.headingStd},
+      {"--bias-std", &o.biasStd}};
   for (int i = 1; i < argc; ++i) {
     const std::string name = argv[i];
     if (name == "--no-magnetometer" || name == "--print-bias") {
@@ -58,7 +68,8 @@ Options parse(int argc, char** argv) {
     if (i + 1 >= argc) usage(name + " needs a value");
     char* end = nullptr;
     *found->second = std::strtod(argv[++i], &end);
-    if (*end != '\0' || !(*found->second > 0.0)) usage(name + " needs a positive number, not " + argv[i]);
+    if (*end != '\0' || !(*found->second > 0.0))
+      usage(name + " needs a positive number, not " + argv[i]);
   }
   if (!(o.rate > 0.0)) usage("--rate is required");
   return o;
@@ -67,8 +78,8 @@ Options parse(int argc, char** argv) {
 bool readSample(Eigen::Matrix<double, 9, 1>& s) {
   char line[1024];
   if (!std::fgets(line, sizeof line, stdin)) return false;
-  const int n = std::sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &s(0), &s(1), &s(2), &s(3), &s(4),
-                            &s(5), &s(6), &s(7), &s(8));
+  const int n = std::sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &s(0), &s(1), &s(2), &s(3),
+                            &s(4), &s(5), &s(6), &s(7), &s(8));
   if (n != 9) usage(std::string("an input line is not 9 comma-separated numbers: ") + line);
   return true;
 }
@@ -92,7 +103,8 @@ int main(int argc, char** argv) {
     filter.correctField(s.segment<3>(6));
     const Eigen::Quaterniond q = filter.orientation();
     std::printf("%.9f,%.9f,%.9f,%.9f", q.w(), q.x(), q.y(), q.z());
-    if (o.printBias) std::printf(",%.9f,%.9f,%.9f", filter.bias()(0), filter.bias()(1), filter.bias()(2));
+    if (o.printBias)
+      std::printf(",%.9f,%.9f,%.9f", filter.bias()(0), filter.bias()(1), filter.bias()(2));
     std::printf("\n");
   } while (readSample(s));
   return 0;

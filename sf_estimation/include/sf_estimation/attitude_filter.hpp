@@ -7,8 +7,10 @@
 // density gyroNoise [rad/s/sqrt(Hz)] and a bias random walk of biasWalk [rad/s/sqrt(s)].
 // Measurements, both as unit directions in the sensor frame, z = q^-1 d q + v:
 //  - the accelerometer as the direction of gravity (d = up): it measures the specific force,
-//    which is up and of size g only while the sensor does not accelerate, so its noise is
-//    inflated by how far |a| departs from g and the sample is skipped past a gate;
+//    which is up and of size g only while the sensor does not accelerate. Optionally the
+//    force is first low-passed in the earth frame (a moving sensor's linear acceleration
+//    averages out over seconds, gravity does not: the idea of Laidig and Seel's VQF); its
+//    noise is inflated by how far |a| departs from g and the sample is skipped past a gate;
 //  - optionally the magnetometer's horizontal direction as north (d = north): heading only,
 //    skipped when the field's size or dip departs from the first sample's (a nearby magnet
 //    or iron changes both).
@@ -37,9 +39,9 @@ struct AttitudeParameters {
   /// sensor's linear acceleration averages out over a few seconds, gravity does not.
   double accelerationTimeConstant = 0.0;
   bool useMagnetometer = true;
-  double magnetometerNoise = 0.2;       ///< std of the measured horizontal field direction [rad]
-  double fieldNormGate = 0.1;           ///< relative change of |m| above which m is skipped
-  double fieldDipGate = 0.0873;         ///< change of the dip angle [rad] above which m is skipped
+  double magnetometerNoise = 0.2;  ///< std of the measured horizontal field direction [rad]
+  double fieldNormGate = 0.1;      ///< relative change of |m| above which m is skipped
+  double fieldDipGate = 0.0873;    ///< change of the dip angle [rad] above which m is skipped
 };
 
 /// The transition and the direction measurement of the attitude filter (see the top).
@@ -54,7 +56,8 @@ struct AttitudeModel {
   void transition(const Eigen::Matrix<S, 7, 1>& x, const Vector<4>& u,
                   const Eigen::Matrix<S, 6, 1>& w, Eigen::Matrix<S, 7, 1>& next) const {
     const double dt = u(3);
-    const manifold::Vector3<S> rate = u.head<3>().cast<S>() - x.template tail<3>() + w.template head<3>();
+    const manifold::Vector3<S> rate =
+        u.head<3>().cast<S>() - x.template tail<3>() + w.template head<3>();
     const manifold::Quaternion<S> q = manifold::storedQuaternion(x.template head<4>());
     auto head = next.template head<4>();
     manifold::storeQuaternion<S>(manifold::so3Plus<S>(q, manifold::Vector3<S>(rate * dt)), head);
@@ -77,11 +80,13 @@ class AttitudeFilter {
   /// Starts at q0 (sensor to ENU) with zero bias; P0 over (rotation vector, bias).
   AttitudeFilter(const AttitudeParameters& parameters, const Eigen::Quaterniond& q0,
                  const Matrix<6, 6>& P0)
-      : parameters_(parameters), ekf_(AttitudeModel(), processNoise(1.0), directionNoise(1.0), initial(q0), P0) {}
+      : parameters_(parameters),
+        ekf_(AttitudeModel(), processNoise(1.0), directionNoise(1.0), initial(q0), P0) {}
 
   /// The orientation of one accelerometer and one magnetometer sample (up along a, the
   /// horizontal field north); east along m x a.
-  static Eigen::Quaterniond fromAccelerometerAndField(const Eigen::Vector3d& a, const Eigen::Vector3d& m) {
+  static Eigen::Quaterniond fromAccelerometerAndField(const Eigen::Vector3d& a,
+                                                      const Eigen::Vector3d& m) {
     const Eigen::Vector3d up = a.normalized();
     const Eigen::Vector3d east = m.cross(up).normalized();
     Eigen::Matrix3d toEarth;
@@ -111,7 +116,9 @@ class AttitudeFilter {
     if (parameters_.accelerationTimeConstant > 0.0) {
       const Eigen::Vector3d earth = manifold::so3Rotate<double>(orientation(), a);
       const bool first = smoothedForce_.isZero();
-      smoothedForce_ += first ? earth : (earth - smoothedForce_) * std::min(1.0, dt / parameters_.accelerationTimeConstant);
+      smoothedForce_ += first ? earth
+                              : (earth - smoothedForce_) *
+                                    std::min(1.0, dt / parameters_.accelerationTimeConstant);
       measured = manifold::so3RotateInverse<double>(orientation(), smoothedForce_);
     }
     if (!(departure <= parameters_.accelerationGate) || !(measured.norm() > 0.0)) return false;
@@ -142,7 +149,8 @@ class AttitudeFilter {
     // information, and is given a variance that discards it (otherwise the filter would read
     // the tilt about east as measured, at its own current value).
     const double s2 = parameters_.magnetometerNoise * parameters_.magnetometerNoise;
-    const Matrix<3, 3> R = s2 * Matrix<3, 3>::Identity() + (kDiscardedVariance - s2) * up * up.transpose();
+    const Matrix<3, 3> R =
+        s2 * Matrix<3, 3>::Identity() + (kDiscardedVariance - s2) * up * up.transpose();
     return correct(Eigen::Vector3d::UnitY(), horizontal.normalized(), R);
   }
 
@@ -162,19 +170,24 @@ class AttitudeFilter {
   Matrix<6, 6> processNoise(double dt) const {
     Matrix<6, 6> Q = Matrix<6, 6>::Zero();
     // Densities to the variances of one step's w: the angle error of a step is w_g dt.
-    Q.topLeftCorner<3, 3>().diagonal().setConstant(parameters_.gyroNoise * parameters_.gyroNoise / dt);
-    Q.bottomRightCorner<3, 3>().diagonal().setConstant(parameters_.biasWalk * parameters_.biasWalk / dt);
+    Q.topLeftCorner<3, 3>().diagonal().setConstant(parameters_.gyroNoise * parameters_.gyroNoise /
+                                                   dt);
+    Q.bottomRightCorner<3, 3>().diagonal().setConstant(parameters_.biasWalk * parameters_.biasWalk /
+                                                       dt);
     return Q;
   }
 
-  static Matrix<3, 3> directionNoise(double sigma) { return Matrix<3, 3>::Identity() * (sigma * sigma); }
+  static Matrix<3, 3> directionNoise(double sigma) {
+    return Matrix<3, 3>::Identity() * (sigma * sigma);
+  }
 
   /// The estimated up direction in the sensor frame.
   Eigen::Vector3d gravityDirection() const {
     return manifold::so3RotateInverse<double>(orientation(), Eigen::Vector3d::UnitZ());
   }
 
-  bool correct(const Eigen::Vector3d& reference, const Eigen::Vector3d& measured, const Matrix<3, 3>& R) {
+  bool correct(const Eigen::Vector3d& reference, const Eigen::Vector3d& measured,
+               const Matrix<3, 3>& R) {
     ekf_.model().reference = reference;
     ekf_.setMeasurementNoise(R);
     ekf_.update(measured);
