@@ -141,5 +141,24 @@ class BagConversion(unittest.TestCase):
         self.assertAlmostEqual(vision[0][0].pose.covariance[35], 1e-4)
 
 
+    def test_shipped_bag(self):
+        # bags/broad_21_fast_combined.bag (doc/bags.md): the documented counts, and vision
+        # frames that lie 5 mm (std) from the reference at the same stamp.
+        path = os.path.join(REPO, "bags", "broad_21_fast_combined.bag")
+        with rosbag.Bag(path) as bag:
+            counts = {t: info.message_count for t, info in bag.get_type_and_topic_info().topics.items()}
+            truth, offsets = {}, []
+            for topic, msg, _ in bag.read_messages(topics=["ground_truth/pose", "vision/pose"]):
+                stamp = msg.header.stamp.to_nsec()
+                if topic == "ground_truth/pose":
+                    truth[stamp] = msg.pose.position
+                else:
+                    p = truth[stamp]
+                    offsets.append([msg.pose.pose.position.x - p.x, msg.pose.pose.position.y - p.y,
+                                    msg.pose.pose.position.z - p.z])
+        self.assertEqual(counts, {"imu/data": 53612, "imu/mag": 53612, "ground_truth/pose": 51386, "vision/pose": 2249})
+        self.assertAlmostEqual(float(np.std(offsets)), 0.005, delta=0.0003)
+
+
 if __name__ == "__main__":
     unittest.main()
