@@ -34,9 +34,9 @@ import broad_tune  # noqa: E402
 import doc_section  # noqa: E402
 
 # The attitude filter's options on BROAD, found by tools/eval/broad_tune.py on its subset.
-TUNED = ["--acceleration-time-constant", "3", "--accelerometer-noise", "0.2", "--acceleration-inflation", "100",
-         "--acceleration-gate", "100", "--gyro-noise", "0.00125", "--bias-walk", "1e-05", "--magnetometer-noise", "4",
-         "--field-norm-gate", "1.6", "--field-dip-gate", "1.3968"]
+TUNED = ["--acceleration-time-constant", "3", "--accelerometer-noise", "0.2", "--acceleration-inflation", "1.5625",
+         "--acceleration-gate", "100", "--gyro-noise", "0.005", "--bias-walk", "2.5e-06", "--magnetometer-noise", "1",
+         "--field-norm-gate", "0.4", "--field-dip-gate", "1.3968"]
 OURS = {"ekf9": TUNED, "ekf6": TUNED + ["--no-magnetometer"]}
 BASELINES = ("madgwick9_benchmark", "madgwick9", "madgwick6", "mahony9_benchmark", "mahony9", "mahony6")
 PUBLISHED_TRIALS = 39
