@@ -125,7 +125,8 @@ def body(results, args):
     undisturbed = [n for n in names if int(n[:2]) <= broad_trial.UNDISTURBED_LAST]
     columns = [c for c in COLUMNS if args.published or not c[0].startswith("pub_")]
     lines = ["Trials found: %d of the benchmark's %d (%s)." % (len(names), PUBLISHED_TRIALS, ", ".join(n[:2] for n in names)),
-             "", "RMSE [deg] over each trial's movement phase; EKF = this package's attitude filter.", ""]
+             "", "RMSE [deg] over each trial's movement phase; EKF = this package's attitude filter, options `%s`"
+             " (6D: and `--no-magnetometer`)." % " ".join(TUNED), ""]
     lines += table([(n, results[n]) for n in names], columns)
     lines += ["", "Means over the trials found (the benchmark's group figure: the mean of its trials' RMSE):", ""]
     tuning = [n for n in names if n[:2] in broad_tune.SUBSET]
