@@ -43,6 +43,7 @@ SF_DEB_PACKAGES=(
   libnlopt-dev libnlopt-cxx-dev
   libceres-dev
   python3-rosbag python3-nav-msgs python3-sensor-msgs python3-tf2-msgs python3-tf2 python3-matplotlib
+  python3-h5py python3-scipy
   python3-diagnostic-msgs tf2-tools python3-rosservice python3-rostopic
   libgeographiclib-dev
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools pluginlib-dev

@@ -72,6 +72,20 @@ class ManifoldFilterBase {
     P_ = P;
   }
 
+  /// Replaces Q (for a step length that changes, or a sensor whose noise does). Throws
+  /// ParameterError for a Q that is not a covariance; Q is then kept.
+  void setProcessNoise(const ProcessNoise& Q) {
+    requireCovariance(method_, "Q", Q, NoiseSize, false);
+    Q_ = Q;
+  }
+
+  /// Replaces R (e.g. inflated for one measurement that is less trustworthy). Throws
+  /// ParameterError for an R that is not a positive definite covariance; R is then kept.
+  void setMeasurementNoise(const MeasurementNoise& R) {
+    requireCovariance(method_, "R", R, MeasurementTangentSize, true);
+    R_ = R;
+  }
+
  protected:
   ManifoldFilterBase(std::string method, Model model, const ProcessNoise& Q,
                      const MeasurementNoise& R, const State& x0, const Covariance& P0)
