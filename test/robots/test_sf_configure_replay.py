@@ -78,7 +78,7 @@ class SimulatedSkidSteerTest(unittest.TestCase):
         self.assertAlmostEqual(figure(r"wheels report ([\d.]+) times", self.text), 2.0, delta=0.02)
         median = figure(r"IMU `imu/data`: [\d.]+ Hz, median ([\d.]+) ms", self.text)
         self.assertAlmostEqual(median, 25 + 2 * math.log(2), delta=0.5)
-        self.assertEqual(self.params["max_measurement_lag"], "0.04")
+        self.assertEqual(self.params["max_measurement_lag"], "0.055")
         self.assertEqual(self.params["estimation_period"], "0.02")
         self.assertIn("its yaw axis +y", self.text)
         self.assertIn("base_link -> imu_link yaw 1.5708 pitch 0.0000 roll 1.5708", self.text)
