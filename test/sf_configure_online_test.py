@@ -105,7 +105,8 @@ class SfConfigureOnlineTest(unittest.TestCase):
         cls.out = cls.tmp.name
         # the built nodes: the workspace's lib/sf_pkg (CMAKE_PREFIX_PATH, as rosrun finds them)
         lib_dir = os.path.dirname(find_executable("sf_diff_drive_odom_imu"))
-        proc = subprocess.run([sys.executable, TOOL, cls.bag, "--out", cls.out, "--lib-dir", lib_dir],
+        proc = subprocess.run([sys.executable, TOOL, cls.bag, "--out", cls.out,
+                               "--lib-dir", lib_dir],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                               universal_newlines=True, timeout=300)
         print(proc.stdout)
