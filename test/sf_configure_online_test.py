@@ -57,8 +57,7 @@ TOOL = os.path.join(PKG_DIR, "tools", "sf_configure")
 sys.path.insert(0, os.path.join(PKG_DIR, "tools", "eval"))
 sys.dont_write_bytecode = True
 import evaluate  # noqa: E402
-from nav3ctrl_online_test import (CLOCK_STEP, find_executable,  # noqa: E402
-                                  wait_until_nodes_connected)
+from nav3ctrl_online_test import find_executable, wait_until_nodes_connected  # noqa: E402
 
 AGREEMENT = 0.05  # m, the issue's "online and offline agree to 0.05 m"
 WALL_TIMEOUT = 150.0
@@ -162,11 +161,12 @@ class SfConfigureOnlineTest(unittest.TestCase):
         rospy.Subscriber("ground_truth/pose", PoseStamped, lambda m: None)
 
         # The last estimate: the node estimates a period once its clock passed the period's
-        # end + L; its last clock reading is at least the last message - CLOCK_STEP, and its
+        # end + L; its last clock reading is at least the last message - the clock's step, and its
         # periods' phase is that of its first /clock, so the last estimated period ends less
         # than T before that reading - L.
         period, lag = self.params["estimation_period"], self.params["max_measurement_lag"]
-        end = truth.t[-1] - CLOCK_STEP - lag - period
+        # rosbag play publishes /clock every ~clock_step s of bag time (rate / its --hz)
+        end = truth.t[-1] - rospy.get_param("~clock_step") - lag - period
         start = time.monotonic()
         while not rospy.is_shutdown() and time.monotonic() - start < WALL_TIMEOUT:
             if received and received[-1][0] >= end and all(
