@@ -115,21 +115,23 @@ def player_inputs():
     return topics or None
 
 
-class Nav3ctrlOnlineTest(unittest.TestCase):
-    def wait_until_nodes_connected(self, nodes):
-        """Until the player is connected to every node on every input (rosbag play's
-        --wait-for-subscribers waits for one subscriber per topic only)."""
-        start = time.monotonic()
-        while not rospy.is_shutdown():
-            inputs, connections = player_inputs(), player_connections()
-            if inputs and connections is not None and all(
-                    set(nodes) <= connections.get(t, set()) for t in inputs):
-                return
-            self.assertLess(time.monotonic() - start, WALL_TIMEOUT,
-                            "the nodes %s did not connect to the player's inputs %s (%s)" %
-                            (nodes, inputs, connections))
-            time.sleep(0.05)
+def wait_until_nodes_connected(test, nodes, timeout=WALL_TIMEOUT):
+    """Until the player is connected to every node on every input (rosbag play's
+    --wait-for-subscribers waits for one subscriber per topic only); fails `test` (a
+    TestCase) after `timeout` s of wall time. Also test/sf_configure_online_test.py's."""
+    start = time.monotonic()
+    while not rospy.is_shutdown():
+        inputs, connections = player_inputs(), player_connections()
+        if inputs and connections is not None and all(
+                set(nodes) <= connections.get(t, set()) for t in inputs):
+            return
+        test.assertLess(time.monotonic() - start, timeout,
+                        "the nodes %s did not connect to the player's inputs %s (%s)" %
+                        (nodes, inputs, connections))
+        time.sleep(0.05)
 
+
+class Nav3ctrlOnlineTest(unittest.TestCase):
     def test_online_matches_offline_and_truth(self):
         runs = configured_runs()
         received = {}
@@ -141,7 +143,7 @@ class Nav3ctrlOnlineTest(unittest.TestCase):
         # a loaded machine the node needs while the bag plays.
         bag = rospy.get_param("~bag")
         truth = evaluate.load_truth(bag)
-        self.wait_until_nodes_connected([node for node, _, _ in runs])
+        wait_until_nodes_connected(self, [node for node, _, _ in runs])
         # The player starts once every topic it plays has a subscriber (--wait-for-subscribers):
         # the nodes' inputs, and ground_truth/pose, which only this test reads - so no estimate
         # is published before the test listens.

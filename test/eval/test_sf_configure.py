@@ -48,13 +48,15 @@ class DecisionsTest(unittest.TestCase):
         with self.assertRaisesRegex(sfc.ConfigureError, "0.50 times the gyro's turn"):
             sfc.robot_class(0.5)
 
-    def test_lag_is_the_worst_p99_plus_2_ms_rounded_up_to_5_ms(self):
-        # 9.5 ms + 2 = 11.5 -> 15; 34.5 + 2 = 36.5 -> 40; exactly 18 + 2 = 20 stays 20.
-        self.assertAlmostEqual(sfc.measurement_lag([0.004, 0.0095]), 0.015, delta=1e-12)
-        self.assertAlmostEqual(sfc.measurement_lag([0.0, 0.0345]), 0.040, delta=1e-12)
-        self.assertAlmostEqual(sfc.measurement_lag([0.018]), 0.020, delta=1e-12)
-        self.assertAlmostEqual(sfc.measurement_lag([]), 0.005, delta=1e-12)
-        self.assertAlmostEqual(sfc.measurement_lag([None, 0.001]), 0.005, delta=1e-12)
+    def test_lag_is_the_worst_p99_plus_20_ms_delivery_rounded_up_to_5_ms(self):
+        # 9.5 ms + 20 = 29.5 -> 30; 34.2 + 20 = 54.2 -> 55; exactly 15 + 20 = 35 stays 35;
+        # delays of 0 (a recording stamped at arrival) -> the delivery's 20 alone.
+        self.assertAlmostEqual(sfc.measurement_lag([0.004, 0.0095]), 0.030, delta=1e-12)
+        self.assertAlmostEqual(sfc.measurement_lag([0.0, 0.0342]), 0.055, delta=1e-12)
+        self.assertAlmostEqual(sfc.measurement_lag([0.015]), 0.035, delta=1e-12)
+        self.assertAlmostEqual(sfc.measurement_lag([0.0, 0.0]), 0.020, delta=1e-12)
+        self.assertAlmostEqual(sfc.measurement_lag([]), 0.020, delta=1e-12)
+        self.assertAlmostEqual(sfc.measurement_lag([None, 0.001]), 0.025, delta=1e-12)
 
     def test_period_is_one_over_the_rate_in_milliseconds(self):
         self.assertAlmostEqual(sfc.estimation_period(10.0), 0.1, delta=1e-12)

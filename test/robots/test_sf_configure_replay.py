@@ -4,14 +4,14 @@
   chi = 2 times the body, the IMU delivered 25 ms + an exponential jitter of mean 2 ms after
   its stamp, mounted with roll and yaw of 90 degrees in tf_static): the class (skid steer,
   wheel scale 2), the IMU's delay (median 25 + 2 ln 2 = 26.39 ms), the lag that keeps every
-  value (p99 25 + 2 ln 100 = 34.2 ms, + 2 ms, up to 40 ms), the mount from tf and the gyro's
-  +y as its yaw axis; its replay drops no value as late (the header's 20 ms dropped 1153) and
-  tracks the simulated truth better than the header's defaults (measured 0.0276 against
-  0.0289 m RMSE);
+  value online as offline (p99 25 + 2 ln 100 = 34.2 ms, + 20 ms for the delivery to the node,
+  up to 55 ms), the mount from tf and the gyro's +y as its yaw axis; its replay drops no value
+  as late (the header's 20 ms dropped 1153) and tracks the simulated truth better than the
+  header's defaults (measured 0.0285 against 0.0289 m RMSE);
 - the shipped simulated differential-drive recording: a differential drive, no remap;
 - the real Husky recording: /encoder and /imu/data, skid steer (wheels 2.06 times the gyro),
   the odometry's 10 Hz as the period, the identity mount from its tf; the track against GPS
-  within 5 % of the hand-made config/husky_skid_steer_ekf.h's (measured 0.912 against 0.876 m).
+  within 5 % of the hand-made config/husky_skid_steer_ekf.h's (measured 0.889 against 0.876 m).
 """
 
 import math
@@ -78,7 +78,7 @@ class SimulatedSkidSteerTest(unittest.TestCase):
         self.assertAlmostEqual(figure(r"wheels report ([\d.]+) times", self.text), 2.0, delta=0.02)
         median = figure(r"IMU `imu/data`: [\d.]+ Hz, median ([\d.]+) ms", self.text)
         self.assertAlmostEqual(median, 25 + 2 * math.log(2), delta=0.5)
-        self.assertEqual(self.params["max_measurement_lag"], "0.04")
+        self.assertEqual(self.params["max_measurement_lag"], "0.055")
         self.assertEqual(self.params["estimation_period"], "0.02")
         self.assertIn("its yaw axis +y", self.text)
         self.assertIn("base_link -> imu_link yaw 1.5708 pitch 0.0000 roll 1.5708", self.text)
