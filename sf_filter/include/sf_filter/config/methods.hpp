@@ -43,6 +43,9 @@
 // per run-time parameter of every method, whatever METHOD (sf_config::Parameters,
 // FilterParameters, ros_parameters.hpp and the conversions between them expand it).
 #define SF_METHOD_PART_PARAMETERS 6
+// Not a pass either: SF_METHOD_TUNING(name, refusal) of the methods that declare one, read by
+// tuningRefusal (noise_tuning.cpp); a method without one is refused as having no innovation.
+#define SF_METHOD_PART_TUNING 7
 
 // The names, for the messages of the METHOD checks (an #error cannot expand a macro, so the
 // #error lines below spell them too).

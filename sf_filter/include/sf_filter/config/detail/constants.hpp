@@ -39,13 +39,6 @@ constexpr bool kHasWeightingCoefficients = SF_CFG_HAS_WEIGHTING_COEFFICIENTS;
 
 /// Defaults of the scalar parameters (the macro's value, or the documented default).
 constexpr double kEstimationPeriodMs = static_cast<double>(SF_CFG_ESTIMATION_PERIOD);
-constexpr int kNumberOfParticles = static_cast<int>(SF_CFG_NUMBER_OF_PARTICLES);
-constexpr unsigned kRandomSeed = static_cast<unsigned>(SF_CFG_RANDOM_SEED);
-constexpr double kResamplingThreshold = static_cast<double>(SF_CFG_RESAMPLING_THRESHOLD);
-constexpr double kUkfAlpha = static_cast<double>(SF_CFG_UKF_ALPHA);
-constexpr double kUkfBeta = static_cast<double>(SF_CFG_UKF_BETA);
-constexpr double kUkfKappa = static_cast<double>(SF_CFG_UKF_KAPPA);
-constexpr bool kUkfPropagatedMean = (SF_CFG_UKF_PROPAGATED_MEAN) != 0;
 constexpr int kWindowSize = static_cast<int>(SF_CFG_WINDOW_SIZE);
 
 }  // namespace sf_config

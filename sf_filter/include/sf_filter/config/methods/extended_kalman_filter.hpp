@@ -9,6 +9,10 @@
 #define SF_CFG_METHOD_KIND SF_METHOD_KIND_MODEL
 #define SF_CFG_METHOD_TAKES_JACOBIANS 1
 
+#elif SF_METHOD_PART == SF_METHOD_PART_TUNING
+// The noise identification (tuning/noise_tuning.hpp) can tune it: no refusal.
+SF_METHOD_TUNING(EXTENDED_KALMAN_FILTER, "")
+
 #elif SF_METHOD_PART == SF_METHOD_PART_UNUSED && METHOD != EXTENDED_KALMAN_FILTER
 #if defined(STATE_TRANSITION_JACOBIAN)
 #pragma GCC warning "STATE_TRANSITION_JACOBIAN is not used by the chosen METHOD and is ignored"

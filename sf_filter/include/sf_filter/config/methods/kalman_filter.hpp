@@ -7,6 +7,10 @@
 #define SF_CFG_METHOD_NAME "KALMAN_FILTER"
 #define SF_CFG_METHOD_KIND SF_METHOD_KIND_LINEAR
 
+#elif SF_METHOD_PART == SF_METHOD_PART_TUNING
+// The noise identification (tuning/noise_tuning.hpp) can tune it: no refusal.
+SF_METHOD_TUNING(KALMAN_FILTER, "")
+
 #elif SF_METHOD_PART == SF_METHOD_PART_MACROS && METHOD == KALMAN_FILTER
 #if !defined(STATE_TRANSITION_MATRIX)
 #if defined(STATE_TRANSITION_MODEL)

@@ -34,6 +34,14 @@ SF_METHOD_PARAMETER(int, number_of_particles, 1000, SF_CFG_NUMBER_OF_PARTICLES)
 SF_METHOD_PARAMETER(unsigned, random_seed, 42, SF_CFG_RANDOM_SEED)
 SF_METHOD_PARAMETER(double, resampling_threshold, 0.5, SF_CFG_RESAMPLING_THRESHOLD)
 
+#elif SF_METHOD_PART == SF_METHOD_PART_TUNING
+// Why the noise identification (tuning/noise_tuning.hpp) refuses it.
+SF_METHOD_TUNING(PARTICLE_FILTER_SIR,
+                 "the noise identification needs the innovation covariance S of a Kalman filter "
+                 "(KF, EKF, UKF); the particle filter's likelihood is a Monte Carlo estimate that "
+                 "changes with every draw: identify Q and R with the header's EKF or UKF and use "
+                 "them here")
+
 #elif SF_METHOD_PART == SF_METHOD_PART_UNUSED && METHOD != PARTICLE_FILTER_SIR
 #if defined(NUMBER_OF_PARTICLES)
 #pragma GCC warning "NUMBER_OF_PARTICLES is not used by the chosen METHOD and is ignored"

@@ -45,6 +45,10 @@ SF_METHOD_PARAMETER(double, ukf_beta, 2.0, SF_CFG_UKF_BETA)
 SF_METHOD_PARAMETER(double, ukf_kappa, 0.0, SF_CFG_UKF_KAPPA)
 SF_METHOD_PARAMETER(bool, ukf_propagated_mean, false, (SF_CFG_UKF_PROPAGATED_MEAN) != 0)
 
+#elif SF_METHOD_PART == SF_METHOD_PART_TUNING
+// The noise identification (tuning/noise_tuning.hpp) can tune it: no refusal.
+SF_METHOD_TUNING(UNSCENTED_KALMAN_FILTER, "")
+
 #elif SF_METHOD_PART == SF_METHOD_PART_UNUSED && METHOD != UNSCENTED_KALMAN_FILTER
 #if defined(UKF_ALPHA)
 #pragma GCC warning "UKF_ALPHA is not used by the chosen METHOD and is ignored"
