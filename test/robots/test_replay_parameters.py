@@ -42,9 +42,9 @@ class ReplayParametersTest(unittest.TestCase):
     def path(self, name):
         return os.path.join(self.tmp.name, name)
 
-    def replay(self, bag, *extra):
+    def replay(self, bag, *extra, exe=None):
         csv = self.path("out_%d.csv" % len(os.listdir(self.tmp.name)))
-        proc = subprocess.run([self.exe, "--replay", bag, "--csv", csv] + list(extra),
+        proc = subprocess.run([exe or self.exe, "--replay", bag, "--csv", csv] + list(extra),
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                               universal_newlines=True, timeout=120)
         text = None
@@ -102,6 +102,31 @@ class ReplayParametersTest(unittest.TestCase):
         self.assertEqual(proc.returncode, 0, proc.stderr)
         self.assertIn("unknown private parameter ~two_d_mode ignored (a robot_localization",
                       proc.stderr)
+
+    def test_a_methods_own_parameter_from_the_file(self):
+        """random_seed is the particle filter's own parameter, declared in its traits header
+        (config/methods/particle_filter_sir.hpp) and read from there: the header's seed (1,
+        config/pioneer/common.h) in the file gives the header's replay, another seed another
+        one, a seed of the wrong type is refused by name. ukf_alpha, the UKF's, is known to a
+        particle-filter node too (no unknown-parameter warning)."""
+        exe = os.path.join(os.path.dirname(self.exe), "sf_nav1_pf")
+        bag = os.path.join(HERE, "..", "..", "bags", "pioneer_seed1.bag")
+        if not os.access(exe, os.X_OK):
+            self.skipTest("sf_nav1_pf not built")
+        plain, header = self.replay(bag, exe=exe)
+        self.assertEqual(plain.returncode, 0, plain.stderr)
+        same, got = self.replay(bag, "--params", self.yaml("random_seed: 1\nukf_alpha: 0.5\n"),
+                                exe=exe)
+        self.assertEqual(same.returncode, 0, same.stderr)
+        self.assertNotIn("unknown private parameter", same.stderr)
+        self.assertTrue(got == header, "random_seed 1 (the header's) changed the replay")
+        other, moved = self.replay(bag, "--params", self.yaml("random_seed: 2\n"), exe=exe)
+        self.assertEqual(other.returncode, 0, other.stderr)
+        self.assertTrue(moved != header, "random_seed 2 did not change the replay")
+        bad, out = self.replay(bag, "--params", self.yaml("random_seed: one\n"), exe=exe)
+        self.assertEqual(bad.returncode, 2, bad.stderr)
+        self.assertIn("parameter ~random_seed: expected an integer, found", bad.stderr)
+        self.assertIsNone(out)
 
     def rewrite(self, name, rename=None, drop=()):
         """A copy of the input bag with topics renamed and some left out."""

@@ -9,6 +9,8 @@
 
 #include <nlopt.hpp>
 
+#include "sf_filter/config/methods.hpp"
+
 namespace sf_filter {
 
 namespace {
@@ -30,16 +32,13 @@ constexpr double kFailedRunCost = 1e100;
 }  // namespace
 
 std::string tuningRefusal(const std::string& method) {
-  if (method == "KALMAN_FILTER" || method == "EXTENDED_KALMAN_FILTER" ||
-      method == "UNSCENTED_KALMAN_FILTER") {
-    return "";
-  }
-  if (method == "PARTICLE_FILTER_SIR") {
-    return "the noise identification needs the innovation covariance S of a Kalman filter "
-           "(KF, EKF, UKF); the particle filter's likelihood is a Monte Carlo estimate that "
-           "changes with every draw: identify Q and R with the header's EKF or UKF and use "
-           "them here";
-  }
+  // The methods that can be tuned ("") or why not, from their traits headers.
+#define SF_METHOD_TUNING(name, refusal) \
+  if (method == #name) return refusal;
+#define SF_METHOD_PART SF_METHOD_PART_TUNING
+#include "sf_filter/config/methods.hpp"
+#undef SF_METHOD_PART
+#undef SF_METHOD_TUNING
   return "the noise identification needs a model with a predicted measurement and its "
          "covariance (KF, EKF, UKF); method " +
          method + " has none";

@@ -154,13 +154,14 @@
 //   constexpr bool kHasControls, kHasTransitionJacobian, kHasObservationJacobian,
 //                  kHasInitialState, kHasInitialErrorCovariance,
 //                  kHasMeasurementNoiseCovariance, kHasWeightingCoefficients;
-//   constexpr double kEstimationPeriodMs, kResamplingThreshold, kUkfAlpha, kUkfBeta, kUkfKappa;
-//   constexpr int kNumberOfParticles, kWindowSize; constexpr unsigned kRandomSeed;
+//   constexpr double kEstimationPeriodMs; constexpr int kWindowSize;
 //
 //   struct Parameters { estimation_period_ms, process_noise_covariance (Q, n x n),
 //     measurement_noise_covariance (R, m x m), initial_state (x0), initial_error_covariance (P0),
+//     each method's own parameters (SF_METHOD_PARAMETER in config/methods/<method>.hpp:
 //     number_of_particles, random_seed, resampling_threshold, ukf_alpha, ukf_beta, ukf_kappa,
-//     window_size, weighting_coefficients (Eigen::VectorXd, empty = equal weights) };
+//     ukf_propagated_mean), window_size, weighting_coefficients (Eigen::VectorXd, empty =
+//     equal weights) };
 //   Parameters defaultParameters(double estimation_period_ms = kEstimationPeriodMs);
 //     (entries using T are evaluated with T = estimation_period_ms / 1000)
 //

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <set>
@@ -26,6 +27,7 @@
 #include "sf_filter/core/fusion_core_options.hpp"
 #include "sf_filter/core/input_options.hpp"
 #include "sf_filter/core/input_overrides.hpp"
+#include "sf_filter/definition/filter_parameters.hpp"
 
 namespace sf_filter {
 
@@ -546,41 +548,38 @@ inline OutputSettings loadOutputParameters(const ParameterSource& pnh) {
 
 /// Every private parameter the node reads (doc/filter_node.md, "Private parameters").
 inline const std::vector<std::string>& knownParameters() {
-  static const std::vector<std::string> names = {"estimation_period",
-                                                 "frequency",
-                                                 "process_noise_covariance",
-                                                 "measurement_noise_covariance",
-                                                 "initial_state",
-                                                 "initial_error_covariance",
-                                                 "number_of_particles",
-                                                 "random_seed",
-                                                 "resampling_threshold",
-                                                 "ukf_alpha",
-                                                 "ukf_beta",
-                                                 "ukf_kappa",
-                                                 "ukf_propagated_mean",
-                                                 "window_size",
-                                                 "weighting_coefficients",
-                                                 "input_alignment",
-                                                 "input_gate",
-                                                 "input_gate_sigma",
-                                                 "align_by_stamp",
-                                                 "max_measurement_lag",
-                                                 "input_timeout",
-                                                 "input_range",
-                                                 "max_future_stamp",
-                                                 "nis_window",
-                                                 "nis_tolerance",
-                                                 "diagnostic_period",
-                                                 "frame_id",
-                                                 "child_frame_id",
-                                                 "publish_tf",
-                                                 "queue_size",
-                                                 "smoothing_lag",
-                                                 "base_frame",
-                                                 "transform_timeout",
-                                                 "datum",
-                                                 "gps_yaw_offset"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n = {"estimation_period",
+                                  "frequency",
+                                  "process_noise_covariance",
+                                  "measurement_noise_covariance",
+                                  "initial_state",
+                                  "initial_error_covariance"};
+    n.insert(n.end(), std::begin(kMethodParameterNames), std::end(kMethodParameterNames));
+    n.insert(n.end(), {"window_size",
+                       "weighting_coefficients",
+                       "input_alignment",
+                       "input_gate",
+                       "input_gate_sigma",
+                       "align_by_stamp",
+                       "max_measurement_lag",
+                       "input_timeout",
+                       "input_range",
+                       "max_future_stamp",
+                       "nis_window",
+                       "nis_tolerance",
+                       "diagnostic_period",
+                       "frame_id",
+                       "child_frame_id",
+                       "publish_tf",
+                       "queue_size",
+                       "smoothing_lag",
+                       "base_frame",
+                       "transform_timeout",
+                       "datum",
+                       "gps_yaw_offset"});
+    return n;
+  }();
   return names;
 }
 
@@ -652,13 +651,8 @@ Parameters loadParameters(const ParameterSource& pnh, MakeDefaults makeDefaults,
   readMatrixParameter(pnh, "measurement_noise_covariance", p.measurement_noise_covariance);
   readMatrixParameter(pnh, "initial_state", p.initial_state);
   readMatrixParameter(pnh, "initial_error_covariance", p.initial_error_covariance);
-  readScalarParameter(pnh, "number_of_particles", p.number_of_particles);
-  readScalarParameter(pnh, "random_seed", p.random_seed);
-  readScalarParameter(pnh, "resampling_threshold", p.resampling_threshold);
-  readScalarParameter(pnh, "ukf_alpha", p.ukf_alpha);
-  readScalarParameter(pnh, "ukf_beta", p.ukf_beta);
-  readScalarParameter(pnh, "ukf_kappa", p.ukf_kappa);
-  readScalarParameter(pnh, "ukf_propagated_mean", p.ukf_propagated_mean);
+  forEachMethodParameter(
+      p, [&](const char* name, auto& value) { readScalarParameter(pnh, name, value); });
   readScalarParameter(pnh, "window_size", p.window_size);
   XmlRpc::XmlRpcValue value;
   if (pnh.get("weighting_coefficients", value)) {

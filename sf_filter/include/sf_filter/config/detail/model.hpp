@@ -147,7 +147,7 @@ struct Model {
 #endif  // SF_CFG_IS_MODEL_BASED
 
 // ------------------------------------------------------------------------ KF: LinearModel
-#if METHOD == KALMAN_FILTER
+#if SF_CFG_IS_LINEAR
 
 /// The linear model x(k) = A x(k-1) + B u(k), z(k) = H x(k) of STATE_TRANSITION_MATRIX,
 /// CONTROL_INPUT_MATRIX and OBSERVATION_MATRIX. The entries may use T. Besides the matrices it
@@ -234,6 +234,6 @@ struct LinearModel {
 /// A KALMAN_FILTER configuration also provides the Model interface.
 using Model = LinearModel;
 
-#endif  // KALMAN_FILTER
+#endif  // SF_CFG_IS_LINEAR
 
 }  // namespace sf_config

@@ -23,15 +23,17 @@ struct Parameters {
   MeasurementMatrix measurement_noise_covariance;  ///< R, MEASUREMENT_NOISE_COVARIANCE (default I)
   StateVector initial_state;                       ///< x0, INITIAL_STATE (default 0)
   StateMatrix initial_error_covariance;            ///< P0, INITIAL_ERROR_COVARIANCE (default I)
-  int number_of_particles = kNumberOfParticles;    ///< NUMBER_OF_PARTICLES (default 1000)
-  unsigned random_seed = kRandomSeed;              ///< RANDOM_SEED (default 42)
-  double resampling_threshold = kResamplingThreshold;  ///< RESAMPLING_THRESHOLD (default 0.5)
-  double ukf_alpha = kUkfAlpha;                        ///< UKF_ALPHA (default 1e-3)
-  double ukf_beta = kUkfBeta;                          ///< UKF_BETA (default 2)
-  double ukf_kappa = kUkfKappa;                        ///< UKF_KAPPA (default 0)
-  bool ukf_propagated_mean = kUkfPropagatedMean;  ///< UKF_PROPAGATED_MEAN (default: ANGLE_STATES)
-  int window_size = kWindowSize;                  ///< WINDOW_SIZE (default 1, CWA only)
-  Eigen::VectorXd weighting_coefficients;         ///< WEIGHTING_COEFFICIENTS (default empty)
+  // Each method's own parameters (SF_METHOD_PARAMETER in its traits header, config/methods/),
+  // with the header's values: number_of_particles, random_seed, resampling_threshold,
+  // ukf_alpha, ukf_beta, ukf_kappa, ukf_propagated_mean.
+#define SF_METHOD_PARAMETER(type, name, fallback, header_default) \
+  type name = static_cast<type>(header_default);
+#define SF_METHOD_PART SF_METHOD_PART_PARAMETERS
+#include "sf_filter/config/methods.hpp"
+#undef SF_METHOD_PART
+#undef SF_METHOD_PARAMETER
+  int window_size = kWindowSize;           ///< WINDOW_SIZE (default 1, CWA only)
+  Eigen::VectorXd weighting_coefficients;  ///< WEIGHTING_COEFFICIENTS (default empty)
 };
 
 /// The parameters of the configuration header. Matrix and vector entries may use T, which is

@@ -3,6 +3,7 @@
 //  - METHOD is defined and names a method of methods.hpp           (#error / static_assert)
 //  - the macros required by the chosen method are defined           (#error)
 //  - macros that cannot be combined with the method are absent      (#error)
+//    (the method's own ones in its traits header, config/methods/<method>.hpp)
 //  - TOPICS_IN, TOPICS_IN_CTRL, TOPICS_OUT and the macro defining the state size are
 //    well-formed sequences                                          (static_assert)
 //
@@ -31,49 +32,26 @@
 #define SF_CFG_TOPICS_OUT_FORMAT "((topic)(state_index))"
 
 // ---------------------------------------------------------------------------------------------
-// METHOD
+// METHOD: defined and not empty (methods.hpp), then named by one traits header (methods/*.hpp)
 // ---------------------------------------------------------------------------------------------
-#if !defined(METHOD)
-#error METHOD is not defined: add e.g. #define METHOD EXTENDED_KALMAN_FILTER to the configuration header (one of KALMAN_FILTER, EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR, MOVING_AVERAGE, MOVING_MEDIAN, CONFIDENCE_WEIGHTED_AVERAGING)
+#define SF_METHOD_CHECK_DEFINED
+#include "sf_filter/config/methods.hpp"
+
+#if !defined(SF_CFG_FATAL)
+#define SF_METHOD_PART SF_METHOD_PART_DECLARE
+#include "sf_filter/config/methods.hpp"
+#undef SF_METHOD_PART
+#if !defined(SF_CFG_METHOD_NAME) /* METHOD must be one identifier */
+static_assert(false, "METHOD: expected one of " SF_METHOD_NAMES "; found '" SF_PP_STR(METHOD) "'");
 #define SF_CFG_FATAL
-#define SF_CFG_STOP
-#elif BOOST_PP_IS_EMPTY(METHOD)
-#error METHOD is defined but empty: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR, MOVING_AVERAGE, MOVING_MEDIAN, CONFIDENCE_WEIGHTED_AVERAGING
-#define SF_CFG_FATAL
-#define SF_CFG_STOP
-#elif !(METHOD == KALMAN_FILTER || METHOD == EXTENDED_KALMAN_FILTER ||                             \
-        METHOD == UNSCENTED_KALMAN_FILTER || METHOD == PARTICLE_FILTER_SIR ||                      \
-        METHOD == MOVING_AVERAGE || METHOD == MOVING_MEDIAN ||                                     \
-        METHOD == CONFIDENCE_WEIGHTED_AVERAGING) /* METHOD must be one identifier */
-static_assert(false, "METHOD: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FILTER, "
-              "UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR, MOVING_AVERAGE, MOVING_MEDIAN, "
-              "CONFIDENCE_WEIGHTED_AVERAGING; found '" SF_PP_STR(METHOD) "'");
-#define SF_CFG_FATAL
+#endif
 #endif
 
 #if !defined(SF_CFG_FATAL)
 
-#define SF_CFG_IS_MODEL_BASED                                                                      \
-  (METHOD == EXTENDED_KALMAN_FILTER || METHOD == UNSCENTED_KALMAN_FILTER ||                        \
-   METHOD == PARTICLE_FILTER_SIR)
-#define SF_CFG_IS_AVERAGING                                                                        \
-  (METHOD == MOVING_AVERAGE || METHOD == MOVING_MEDIAN || METHOD == CONFIDENCE_WEIGHTED_AVERAGING)
-
-#if METHOD == KALMAN_FILTER
-#define SF_CFG_METHOD_NAME "KALMAN_FILTER"
-#elif METHOD == EXTENDED_KALMAN_FILTER
-#define SF_CFG_METHOD_NAME "EXTENDED_KALMAN_FILTER"
-#elif METHOD == UNSCENTED_KALMAN_FILTER
-#define SF_CFG_METHOD_NAME "UNSCENTED_KALMAN_FILTER"
-#elif METHOD == PARTICLE_FILTER_SIR
-#define SF_CFG_METHOD_NAME "PARTICLE_FILTER_SIR"
-#elif METHOD == MOVING_AVERAGE
-#define SF_CFG_METHOD_NAME "MOVING_AVERAGE"
-#elif METHOD == MOVING_MEDIAN
-#define SF_CFG_METHOD_NAME "MOVING_MEDIAN"
-#else
-#define SF_CFG_METHOD_NAME "CONFIDENCE_WEIGHTED_AVERAGING"
-#endif
+#define SF_CFG_IS_LINEAR (SF_CFG_METHOD_KIND == SF_METHOD_KIND_LINEAR)
+#define SF_CFG_IS_MODEL_BASED (SF_CFG_METHOD_KIND == SF_METHOD_KIND_MODEL)
+#define SF_CFG_IS_AVERAGING (SF_CFG_METHOD_KIND == SF_METHOD_KIND_WINDOW)
 
 // ---------------------------------------------------------------------------------------------
 // Names used by the expressions must not be macros
@@ -104,38 +82,11 @@ static_assert(false, "METHOD: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FIL
 #endif
 
 // ---------------------------------------------------------------------------------------------
-// KALMAN_FILTER
+// The macros the chosen method needs or refuses (its traits header, SF_METHOD_PART_MACROS)
 // ---------------------------------------------------------------------------------------------
-#if METHOD == KALMAN_FILTER
-#if !defined(STATE_TRANSITION_MATRIX)
-#if defined(STATE_TRANSITION_MODEL)
-#error KALMAN_FILTER requires STATE_TRANSITION_MATRIX (n x n) but found STATE_TRANSITION_MODEL: a KALMAN_FILTER is linear, use EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER or PARTICLE_FILTER_SIR for a model given as expressions
-#else
-#error KALMAN_FILTER requires STATE_TRANSITION_MATRIX: the n x n matrix A of x(k) = A x(k-1) + B u(k), as a sequence of rows, e.g. ((1)(T))((0)(1))
-#endif
-#define SF_CFG_FATAL
-#define SF_CFG_STOP
-#endif
-#if !defined(OBSERVATION_MATRIX)
-#if defined(OBSERVATION_MODEL)
-#error KALMAN_FILTER requires OBSERVATION_MATRIX (m x n) but found OBSERVATION_MODEL: a KALMAN_FILTER is linear, use EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER or PARTICLE_FILTER_SIR for a model given as expressions
-#else
-#error KALMAN_FILTER requires OBSERVATION_MATRIX: the m x n matrix H of z(k) = H x(k) with one row per TOPICS_IN entry, e.g. ((1)(0))((0)(1))
-#endif
-#define SF_CFG_FATAL
-#define SF_CFG_STOP
-#endif
-#if defined(TOPICS_IN_CTRL) && !defined(CONTROL_INPUT_MATRIX)
-#error KALMAN_FILTER with TOPICS_IN_CTRL requires CONTROL_INPUT_MATRIX: the n x l matrix B of x(k) = A x(k-1) + B u(k) with one column per TOPICS_IN_CTRL entry
-#define SF_CFG_FATAL
-#define SF_CFG_STOP
-#endif
-#if defined(CONTROL_INPUT_MATRIX) && !defined(TOPICS_IN_CTRL)
-#error CONTROL_INPUT_MATRIX is defined but TOPICS_IN_CTRL is not: define one ((topic)(type)(field)) entry of TOPICS_IN_CTRL per column of CONTROL_INPUT_MATRIX, or remove CONTROL_INPUT_MATRIX
-#define SF_CFG_FATAL
-#define SF_CFG_STOP
-#endif
-#endif  // KALMAN_FILTER
+#define SF_METHOD_PART SF_METHOD_PART_MACROS
+#include "sf_filter/config/methods.hpp"
+#undef SF_METHOD_PART
 
 // ---------------------------------------------------------------------------------------------
 // EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER, PARTICLE_FILTER_SIR
@@ -166,7 +117,7 @@ static_assert(false, "METHOD: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FIL
 #endif
 #endif  // model based
 
-#if METHOD == KALMAN_FILTER || SF_CFG_IS_MODEL_BASED
+#if !SF_CFG_IS_AVERAGING
 #if !defined(PROCESS_NOISE_COVARIANCE)
 #error KALMAN_FILTER, EXTENDED_KALMAN_FILTER, UNSCENTED_KALMAN_FILTER and PARTICLE_FILTER_SIR require PROCESS_NOISE_COVARIANCE: the n x n matrix Q, as a sequence of rows, e.g. ((0.1)(0))((0)(0.1))
 #define SF_CFG_FATAL
@@ -182,18 +133,13 @@ static_assert(false, "METHOD: expected one of KALMAN_FILTER, EXTENDED_KALMAN_FIL
 // ---------------------------------------------------------------------------------------------
 // MOVING_AVERAGE, MOVING_MEDIAN, CONFIDENCE_WEIGHTED_AVERAGING
 // ---------------------------------------------------------------------------------------------
-#if (METHOD == MOVING_AVERAGE || METHOD == MOVING_MEDIAN) && !defined(WINDOW_SIZE)
+#if defined(SF_CFG_METHOD_NEEDS_WINDOW_SIZE) && !defined(WINDOW_SIZE)
 #error MOVING_AVERAGE and MOVING_MEDIAN require WINDOW_SIZE: the number of measurements per input that are averaged, a positive integer, e.g. #define WINDOW_SIZE 5
 #define SF_CFG_FATAL
 #define SF_CFG_STOP
 #endif
 #if SF_CFG_IS_AVERAGING && defined(TOPICS_IN_CTRL)
 #error TOPICS_IN_CTRL is defined but MOVING_AVERAGE, MOVING_MEDIAN and CONFIDENCE_WEIGHTED_AVERAGING take no control inputs: remove TOPICS_IN_CTRL or choose a state estimator as METHOD
-#define SF_CFG_FATAL
-#define SF_CFG_STOP
-#endif
-#if defined(WEIGHTING_COEFFICIENTS) && METHOD != MOVING_AVERAGE
-#error WEIGHTING_COEFFICIENTS is only used by MOVING_AVERAGE: remove it or change METHOD
 #define SF_CFG_FATAL
 #define SF_CFG_STOP
 #endif
@@ -220,7 +166,7 @@ SF_PP_CHECK_LIST("TOPICS_OUT", 2, 2, SF_CFG_TOPICS_OUT_FORMAT, TOPICS_OUT)
 #define SF_CFG_FATAL
 #endif
 
-#if METHOD == KALMAN_FILTER
+#if SF_CFG_IS_LINEAR
 #if !SF_PP_IS_MATRIX(STATE_TRANSITION_MATRIX)
 SF_PP_MATRIX_FORM_ERROR("STATE_TRANSITION_MATRIX", n, n, "", STATE_TRANSITION_MATRIX)
 #define SF_CFG_FATAL
@@ -252,16 +198,16 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 #define SF_CFG_L_WHY "l = 0 because TOPICS_IN_CTRL is not defined"
 #endif
 
-#if METHOD == KALMAN_FILTER
+#if SF_CFG_IS_LINEAR
 #define SF_CFG_N BOOST_PP_SEQ_SIZE(STATE_TRANSITION_MATRIX)
 #define SF_CFG_N_WHY "n = " SF_PP_STR(SF_CFG_N) " is the number of rows of STATE_TRANSITION_MATRIX"
 #elif SF_CFG_IS_MODEL_BASED
 #define SF_CFG_N BOOST_PP_SEQ_SIZE(STATE_TRANSITION_MODEL)
 #define SF_CFG_N_WHY                                                                               \
   "n = " SF_PP_STR(SF_CFG_N) " is the number of expressions in STATE_TRANSITION_MODEL"
-#elif METHOD == CONFIDENCE_WEIGHTED_AVERAGING
-#define SF_CFG_N 1
-#define SF_CFG_N_WHY "n = 1 for CONFIDENCE_WEIGHTED_AVERAGING"
+#elif defined(SF_CFG_METHOD_STATE_SIZE)
+#define SF_CFG_N SF_CFG_METHOD_STATE_SIZE
+#define SF_CFG_N_WHY SF_CFG_METHOD_STATE_SIZE_WHY
 #else
 #define SF_CFG_N SF_CFG_M
 #define SF_CFG_N_WHY "n = m = " SF_PP_STR(SF_CFG_M) " (the number of TOPICS_IN entries) for "      \
@@ -269,18 +215,18 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 #endif
 
 // Optional parts (1 when given; a malformed value is reported by checks.hpp, not generated).
-#if METHOD == KALMAN_FILTER && defined(CONTROL_INPUT_MATRIX) && SF_PP_IS_MATRIX(CONTROL_INPUT_MATRIX)
+#if SF_CFG_IS_LINEAR && defined(CONTROL_INPUT_MATRIX) && SF_PP_IS_MATRIX(CONTROL_INPUT_MATRIX)
 #define SF_CFG_HAS_CONTROL_INPUT_MATRIX 1
 #else
 #define SF_CFG_HAS_CONTROL_INPUT_MATRIX 0
 #endif
-#if METHOD == EXTENDED_KALMAN_FILTER && defined(STATE_TRANSITION_JACOBIAN) &&                      \
+#if defined(SF_CFG_METHOD_TAKES_JACOBIANS) && defined(STATE_TRANSITION_JACOBIAN) &&                      \
     SF_PP_IS_MATRIX(STATE_TRANSITION_JACOBIAN)
 #define SF_CFG_HAS_STATE_TRANSITION_JACOBIAN 1
 #else
 #define SF_CFG_HAS_STATE_TRANSITION_JACOBIAN 0
 #endif
-#if METHOD == EXTENDED_KALMAN_FILTER && defined(OBSERVATION_JACOBIAN) &&                           \
+#if defined(SF_CFG_METHOD_TAKES_JACOBIANS) && defined(OBSERVATION_JACOBIAN) &&                           \
     SF_PP_IS_MATRIX(OBSERVATION_JACOBIAN)
 #define SF_CFG_HAS_OBSERVATION_JACOBIAN 1
 #else
@@ -316,7 +262,7 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 #else
 #define SF_CFG_HAS_OBSERVATION_MODEL 0
 #endif
-#if METHOD == KALMAN_FILTER && SF_PP_IS_MATRIX(OBSERVATION_MATRIX)
+#if SF_CFG_IS_LINEAR && SF_PP_IS_MATRIX(OBSERVATION_MATRIX)
 #define SF_CFG_HAS_OBSERVATION_MATRIX 1
 #else
 #define SF_CFG_HAS_OBSERVATION_MATRIX 0
@@ -325,7 +271,7 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 // ---------------------------------------------------------------------------------------------
 // Macros that the chosen method does not use: warn instead of silently ignoring them.
 // ---------------------------------------------------------------------------------------------
-#if METHOD == KALMAN_FILTER || SF_CFG_IS_AVERAGING
+#if !SF_CFG_IS_MODEL_BASED
 #if defined(STATE_TRANSITION_MODEL)
 #pragma GCC warning "STATE_TRANSITION_MODEL is not used by the chosen METHOD and is ignored"
 #endif
@@ -333,47 +279,10 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 #pragma GCC warning "OBSERVATION_MODEL is not used by the chosen METHOD and is ignored"
 #endif
 #endif
-#if METHOD != EXTENDED_KALMAN_FILTER
-#if defined(STATE_TRANSITION_JACOBIAN)
-#pragma GCC warning "STATE_TRANSITION_JACOBIAN is not used by the chosen METHOD and is ignored"
-#endif
-#if defined(OBSERVATION_JACOBIAN)
-#pragma GCC warning "OBSERVATION_JACOBIAN is not used by the chosen METHOD and is ignored"
-#endif
-#endif
-#if METHOD != KALMAN_FILTER
-#if defined(STATE_TRANSITION_MATRIX)
-#pragma GCC warning "STATE_TRANSITION_MATRIX is not used by the chosen METHOD and is ignored"
-#endif
-#if defined(OBSERVATION_MATRIX)
-#pragma GCC warning "OBSERVATION_MATRIX is not used by the chosen METHOD and is ignored"
-#endif
-#endif
-#if METHOD != PARTICLE_FILTER_SIR
-#if defined(NUMBER_OF_PARTICLES)
-#pragma GCC warning "NUMBER_OF_PARTICLES is not used by the chosen METHOD and is ignored"
-#endif
-#if defined(RANDOM_SEED)
-#pragma GCC warning "RANDOM_SEED is not used by the chosen METHOD and is ignored"
-#endif
-#if defined(RESAMPLING_THRESHOLD)
-#pragma GCC warning "RESAMPLING_THRESHOLD is not used by the chosen METHOD and is ignored"
-#endif
-#endif
-#if METHOD != UNSCENTED_KALMAN_FILTER
-#if defined(UKF_ALPHA)
-#pragma GCC warning "UKF_ALPHA is not used by the chosen METHOD and is ignored"
-#endif
-#if defined(UKF_BETA)
-#pragma GCC warning "UKF_BETA is not used by the chosen METHOD and is ignored"
-#endif
-#if defined(UKF_KAPPA)
-#pragma GCC warning "UKF_KAPPA is not used by the chosen METHOD and is ignored"
-#endif
-#if defined(UKF_PROPAGATED_MEAN)
-#pragma GCC warning "UKF_PROPAGATED_MEAN is not used by the chosen METHOD and is ignored"
-#endif
-#endif
+// Each method's own macros, when another method is chosen.
+#define SF_METHOD_PART SF_METHOD_PART_UNUSED
+#include "sf_filter/config/methods.hpp"
+#undef SF_METHOD_PART
 #if !SF_CFG_IS_AVERAGING && defined(WINDOW_SIZE)
 #pragma GCC warning "WINDOW_SIZE is not used by the chosen METHOD and is ignored"
 #endif
@@ -390,7 +299,7 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 #if defined(INITIAL_ERROR_COVARIANCE)
 #pragma GCC warning "INITIAL_ERROR_COVARIANCE is not used by the chosen METHOD and is ignored"
 #endif
-#if METHOD != CONFIDENCE_WEIGHTED_AVERAGING && defined(MEASUREMENT_NOISE_COVARIANCE)
+#if !defined(SF_CFG_METHOD_TAKES_R) && defined(MEASUREMENT_NOISE_COVARIANCE)
 #pragma GCC warning "MEASUREMENT_NOISE_COVARIANCE is not used by the chosen METHOD and is ignored"
 #endif
 #endif
