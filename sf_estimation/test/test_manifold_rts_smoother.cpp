@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "manifold_test_models.hpp"
 #include "sf_estimation/extended_kalman_filter.hpp"
 #include "sf_estimation/kalman_filter.hpp"
 #include "sf_estimation/manifold/state_layout.hpp"
@@ -22,34 +23,11 @@ namespace mf = estimation::manifold;
 using estimation::Matrix;
 using estimation::Measurement;
 using estimation::Vector;
+using sftest::AttitudeModel;
+using sftest::HeadingModel;
+using sftest::LinearModel;
 using Quat = Eigen::Quaterniond;
 using V3 = Eigen::Vector3d;
-
-// x' = A x + B u + G w, z = H x.
-struct LinearModel {
-  using StateSpace = mf::FlatLayout<3>;
-  using MeasurementSpace = mf::FlatLayout<2>;
-  static constexpr int NoiseSize = 2, ControlSize = 1;
-  Matrix<3, 3> A;
-  Matrix<3, 1> B;
-  Matrix<3, 2> G;
-  Matrix<2, 3> H;
-  LinearModel() {
-    A << 1.0, 0.1, 0.005, 0.0, 1.0, 0.1, 0.0, 0.0, 0.9;
-    B << 0.0, 0.0, 0.1;
-    G << 0.0, 0.0, 1.0, 0.0, 0.0, 1.0;
-    H << 1.0, 0.0, 0.0, 0.0, 0.0, 1.0;
-  }
-  template <class S>
-  void transition(const Eigen::Matrix<S, 3, 1>& x, const Vector<1>& u,
-                  const Eigen::Matrix<S, 2, 1>& w, Eigen::Matrix<S, 3, 1>& next) const {
-    next = A.cast<S>() * x + (B * u).cast<S>() + G.cast<S>() * w;
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 3, 1>& x, Eigen::Matrix<S, 2, 1>& z) const {
-    z = H.cast<S>() * x;
-  }
-};
 
 TEST(ManifoldRtsSmoother, FlatLayoutIsTheKalmanSmoother) {
   const LinearModel model;
@@ -94,22 +72,8 @@ TEST(ManifoldRtsSmoother, FlatLayoutIsTheKalmanSmoother) {
   EXPECT_GT((smoothed[30].x - record[30].x).norm(), 1e-3);  // the pass moved something
 }
 
-// A heading driven by a rate and measured directly (a compass), on SO(2) and flat with the
-// heading as an angle state: the same smoother across the wrap at pi.
-struct HeadingModel {
-  using StateSpace = mf::StateLayout<mf::So2Block>;
-  using MeasurementSpace = mf::StateLayout<mf::So2Block>;
-  static constexpr int NoiseSize = 1, ControlSize = 1;
-  template <class S>
-  void transition(const Eigen::Matrix<S, 1, 1>& x, const Vector<1>& u,
-                  const Eigen::Matrix<S, 1, 1>& w, Eigen::Matrix<S, 1, 1>& next) const {
-    next(0) = mf::so2Plus<S>(x(0), S(u(0)) + w(0));
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 1, 1>& x, Eigen::Matrix<S, 1, 1>& z) const {
-    z = x;
-  }
-};
+// The heading on SO(2) (HeadingModel) and flat with the heading as an angle state: the same
+// smoother across the wrap at pi.
 struct FlatHeading {
   static constexpr int StateSize = 1, MeasurementSize = 1, ControlSize = 1;
   estimation::Index stateSize() const { return 1; }
@@ -161,26 +125,6 @@ TEST(ManifoldRtsSmoother, So2EqualsTheFlatSmootherWithAnAngleState) {
   }
   EXPECT_GT(std::abs(record.back().x(0) - 3.0), 2.0);  // the heading went across pi
 }
-
-// An attitude driven by a gyro with a constant bias, measured as a quaternion every fifth step.
-struct AttitudeModel {
-  using StateSpace = mf::StateLayout<mf::So3Block, mf::VectorBlock<3>>;
-  using MeasurementSpace = mf::StateLayout<mf::So3Block>;
-  static constexpr int NoiseSize = 3, ControlSize = 3;
-  double dt = 0.1;
-  template <class S>
-  void transition(const Eigen::Matrix<S, 7, 1>& x, const Vector<3>& u,
-                  const Eigen::Matrix<S, 3, 1>& w, Eigen::Matrix<S, 7, 1>& next) const {
-    const mf::Vector3<S> rate = u.cast<S>() - x.template tail<3>() + w;
-    mf::storeQuaternion(mf::so3Plus<S>(mf::storedQuaternion(x.template head<4>()), rate * S(dt)),
-                        next);
-    next.template tail<3>() = x.template tail<3>();
-  }
-  template <class S>
-  void observation(const Eigen::Matrix<S, 7, 1>& x, Eigen::Matrix<S, 4, 1>& z) const {
-    z = x.template head<4>();
-  }
-};
 
 Quat rotation(const V3& phi) {
   const double angle = phi.norm();
