@@ -6,7 +6,7 @@
 #include "sf_estimation/manifold/state_layout.hpp"
 #include "sf_estimation/types.hpp"
 
-namespace sftest {
+namespace manifold_test {
 
 namespace mf = estimation::manifold;
 using estimation::Matrix;
@@ -74,4 +74,4 @@ struct AttitudeModel {
   }
 };
 
-}  // namespace sftest
+}  // namespace manifold_test

@@ -18,9 +18,9 @@ namespace {
 namespace mf = estimation::manifold;
 using estimation::Matrix;
 using estimation::Vector;
-using sftest::AttitudeModel;
-using sftest::HeadingModel;
-using sftest::LinearModel;
+using manifold_test::AttitudeModel;
+using manifold_test::HeadingModel;
+using manifold_test::LinearModel;
 using Quat = Eigen::Quaterniond;
 using V3 = Eigen::Vector3d;
 
