@@ -1,6 +1,7 @@
 """Helpers of the robot replay tests: run a generated node's offline replay, read its CSV."""
 
 import csv
+import math
 import os
 import subprocess
 import sys
@@ -42,3 +43,27 @@ def read_rows(csv_path):
     """The replay CSV as a list of {column: float}."""
     with open(csv_path, newline="") as f:
         return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def correction(row, prefix, angle_states):
+    """(mean square, its expectation) of the smoothing correction of a CSV row: over the states
+    with a filtered variance, mean of (x_s - x_f)^2 / var_f and of 1 - var_s / var_f, the
+    smoothed columns named `prefix` + the filtered ones, the differences of `angle_states`
+    wrapped (doc/smoothing.md); None for a row without a smoothed belief or without a filtered
+    variance."""
+    squares, expected = [], []
+    for i in range(sum(1 for k in row if k.startswith("var"))):
+        var = row["var%d" % i]
+        smoothed = row["%sx%d" % (prefix, i)]
+        if math.isnan(smoothed):
+            return None
+        if not var > 0.0:
+            continue
+        d = smoothed - row["x%d" % i]
+        if i in angle_states:
+            d = math.atan2(math.sin(d), math.cos(d))
+        squares.append(d * d / var)
+        expected.append(1.0 - row["%svar%d" % (prefix, i)] / var)
+    if not squares:
+        return None
+    return sum(squares) / len(squares), sum(expected) / len(expected)

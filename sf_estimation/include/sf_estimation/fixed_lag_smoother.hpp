@@ -65,6 +65,10 @@ class FixedLagSmoother {
   void clear() { added_ = 0; }
 
   std::size_t lag() const { return lag_; }
+  /// The filtered belief of the period the last add() smoothed (valid while add() returned a
+  /// belief and until the next add()): what the smoothed one is compared with.
+  const Period& laggedFiltered() const { return ring_[(added_ - 1 - lag_) % ring_.size()].period; }
+  const AngleMask<N>& angleStates() const { return angleStates_; }
   /// Periods held now (at most lag + 1).
   std::size_t periodsHeld() const { return added_ < ring_.size() ? added_ : ring_.size(); }
   /// Memory of the ring: lag + 1 slots of this size.

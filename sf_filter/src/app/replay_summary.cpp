@@ -1,5 +1,6 @@
 // What the replay prints after the run: the totals line, each input's counters and NIS, the
 // GPS inputs' and the alignment's losses; and --strict's exit status.
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
@@ -87,6 +88,32 @@ void printAlignment(const ReplayCommand& c, const ReplayFrameAligner& aligner) {
   }
 }
 
+/// --smooth, --smooth-lag: the smoother's size and cost, and what stands for its NIS: how far
+/// it moved the filtered means, in the filtered standard deviations (SmoothingCorrection), as
+/// the RMS over the smoothed periods beside its expectation for a consistent smoother, and
+/// the newest period's.
+void printSmoothing(const ReplayCommand& c, const ReplayOutcome& o) {
+  const std::string& name = c.options.nodeName;
+  const ReplaySummary& s = o.summary;
+  if (c.options.smooth) {
+    std::cout << name << ": smoothed " << s.smoothedPeriods << " periods (" << s.smoothedSegments
+              << " segments) in " << s.smoothingSeconds << " s, " << s.smoothingBytesPerPeriod
+              << " bytes per period" << std::endl;
+  } else if (c.options.smoothLag > 0.0) {
+    std::cout << name << ": fixed-lag smoother, lag " << s.lagPeriods << " periods ("
+              << static_cast<double>(s.lagPeriods) * o.core.period() << " s; "
+              << c.options.smoothLag << " s asked), " << s.lagPeriodsHeld << " periods held, "
+              << s.lagBytes << " bytes held" << std::endl;
+  } else {
+    return;
+  }
+  std::cout << name << ": smoothing correction over " << s.corrections.periods << " periods: RMS "
+            << s.corrections.rms() << " filtered standard deviations (expected "
+            << s.corrections.expectedRms() << "), last period "
+            << std::sqrt(s.lastCorrection.meanSquare) << " (expected "
+            << std::sqrt(s.lastCorrection.expected) << ")" << std::endl;
+}
+
 }  // namespace
 
 void printNis(const std::string& name, const FusionEngine& core,
@@ -105,15 +132,7 @@ void printReplaySummary(const ReplayCommand& c, const NodeDefinition& def, const
   const std::string& name = c.options.nodeName;
   const ReplaySummary& s = o.summary;
   printTotals(name, o);
-  if (c.options.smooth) {
-    std::cout << name << ": smoothed " << s.smoothedPeriods << " periods (" << s.smoothedSegments
-              << " segments) in " << s.smoothingSeconds << " s, " << s.smoothingBytesPerPeriod
-              << " bytes per period" << std::endl;
-  }
-  if (c.options.smoothLag > 0.0) {
-    std::cout << name << ": fixed-lag smoother, lag " << s.lagPeriods << " periods ("
-              << c.options.smoothLag << " s asked), " << s.lagBytes << " bytes held" << std::endl;
-  }
+  printSmoothing(c, o);
   printInputCounters(name, o, def.description.inputs);
   printNis(name, o.core, def.description.inputs);
   printGpsCounters(name, o.sink, def.description.inputs);

@@ -46,6 +46,10 @@ class LaggedSmoother {
   virtual std::uint64_t failures() const = 0;
   /// The fixed memory of the held periods.
   virtual std::size_t bytes() const = 0;
+  /// How far the smoother moved the newest smoothed period (states 0 before the first), and
+  /// the sum over every period it smoothed (SmoothingCorrection: what stands for a NIS).
+  virtual SmoothingCorrection lastCorrection() const = 0;
+  virtual const SmoothingCorrectionTotal& corrections() const = 0;
 };
 
 }  // namespace sf_filter

@@ -48,6 +48,10 @@ class LaggedSmootherOf final : public LaggedSmoother {
     }
     if (!smoothed) return std::nullopt;
     const PeriodStamp& lagged = periods_[(added_ - 1 - lag()) % periods_.size()];
+    const Period& filtered = smoother_.laggedFiltered();
+    last_ = smoothingCorrection(viewOf(filtered.x, filtered.P), viewOf(smoothed->x, smoothed->P),
+                                smoother_.angleStates());
+    total_.add(last_);
     return LaggedBelief{lagged.time, lagged.presentInputs, viewOf(smoothed->x, smoothed->P)};
   }
 
@@ -58,6 +62,8 @@ class LaggedSmootherOf final : public LaggedSmoother {
   std::size_t bytes() const override {
     return periods_.size() * (Smoother::bytesPerSlot() + sizeof(PeriodStamp));
   }
+  SmoothingCorrection lastCorrection() const override { return last_; }
+  const SmoothingCorrectionTotal& corrections() const override { return total_; }
 
  private:
   const estimation::SmoothedPeriod<N>* hold(const Period& period) {
@@ -78,6 +84,8 @@ class LaggedSmootherOf final : public LaggedSmoother {
   std::vector<PeriodStamp> periods_;
   std::size_t added_ = 0;
   std::uint64_t failures_ = 0;
+  SmoothingCorrection last_;
+  SmoothingCorrectionTotal total_;
   PeriodRecorder<Core, Period> recorder_;
 };
 

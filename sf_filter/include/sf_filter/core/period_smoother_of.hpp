@@ -74,6 +74,9 @@ class PeriodSmootherOf final : public PeriodSmoother {
   std::size_t bytesPerPeriod() const override {
     return sizeof(Period) + sizeof(estimation::SmoothedPeriod<N>);
   }
+  SmoothingCorrection correction(std::size_t k) const override {
+    return smoothingCorrection(filtered(k), smoothed(k), smoother_.angleStates());
+  }
 
  private:
   const Core& core_;

@@ -20,6 +20,7 @@
 
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/core/health.hpp"
+#include "sf_filter/core/lagged_smoother.hpp"
 
 namespace sf_filter {
 
@@ -67,6 +68,33 @@ class FusionDiagnostics {
   /// node, not the core: pose resets, say).
   void addEstimationValue(std::string key, std::function<std::string()> value) {
     estimationValues_.emplace_back(std::move(key), std::move(value));
+  }
+
+  /// ~smoothing_lag: adds to the estimation reports the fixed-lag smoother's lag (seconds and
+  /// periods), the periods and bytes it holds, and what stands for its NIS (it has no innovation
+  /// of its own): how far it moved the newest lagged period's filtered mean, in filtered
+  /// standard deviations, beside that correction's expectation for a consistent smoother, and
+  /// the same over every period it smoothed (SmoothingCorrection, doc/smoothing.md).
+  /// `smoother` must outlive the reports.
+  void addSmoother(const LaggedSmoother& smoother) {
+    using health_detail::format;
+    const LaggedSmoother* s = &smoother;
+    const double period = core_.period();
+    addEstimationValue("smoothing lag [s]",
+                       [s, period] { return format(static_cast<double>(s->lag()) * period); });
+    addEstimationValue("smoothing lag [periods]", [s] { return std::to_string(s->lag()); });
+    addEstimationValue("smoothing periods held", [s] { return std::to_string(s->periodsHeld()); });
+    addEstimationValue("smoothing bytes held", [s] { return std::to_string(s->bytes()); });
+    addEstimationValue("smoothing correction, last period [sd]",
+                       [s] { return format(std::sqrt(s->lastCorrection().meanSquare)); });
+    addEstimationValue("smoothing correction expected, last period [sd]",
+                       [s] { return format(std::sqrt(s->lastCorrection().expected)); });
+    addEstimationValue("smoothing correction RMS [sd]",
+                       [s] { return format(s->corrections().rms()); });
+    addEstimationValue("smoothing correction expected RMS [sd]",
+                       [s] { return format(s->corrections().expectedRms()); });
+    addEstimationValue("smoothing correction periods",
+                       [s] { return std::to_string(s->corrections().periods); });
   }
 
   /// Adds `key` with `value(i)` to input i's reports where it is not empty (counters kept by

@@ -546,6 +546,7 @@ class FusionNode final : public MessageSink {
                                    "filters have)");
     }
     writer_.declareSmoothed(advertiser);
+    diagnostics_.addSmoother(*lagged_);
   }
 
   /// The smoothed belief of the period the lag back, once the smoother holds the lag.

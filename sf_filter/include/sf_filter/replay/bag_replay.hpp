@@ -62,7 +62,8 @@ struct ReplayOptions {
   std::string parametersFile;
   /// --smooth: after the forward run, the RTS backward pass of the filter (KF, EKF; the
   /// unscented one for the UKF) over every period; the CSV gets the smoothed columns after the
-  /// filtered ones (doc/smoothing.md). The output bag keeps the filtered estimates.
+  /// filtered ones, the output bag the smoothed estimates on odometry/smoothed and
+  /// ~state/smoothed beside the filtered ones (doc/smoothing.md).
   bool smooth = false;
   /// --smooth-lag SECONDS (0: off): the fixed-lag smoother of that lag, rounded to whole
   /// periods; each CSV row gets the lagged_* columns of its own period, smoothed with the
@@ -96,9 +97,15 @@ struct ReplaySummary {
   std::uint64_t smoothedSegments = 0;
   double smoothingSeconds = 0.0;
   std::size_t smoothingBytesPerPeriod = 0;
-  /// --smooth-lag: the lag in periods and the smoother's fixed memory.
+  /// --smooth-lag: the lag in periods, the periods the smoother holds at the end and its
+  /// fixed memory.
   std::size_t lagPeriods = 0;
+  std::size_t lagPeriodsHeld = 0;
   std::size_t lagBytes = 0;
+  /// --smooth, --smooth-lag: how far the smoother moved the filtered means (SmoothingCorrection)
+  /// over every smoothed period, and the newest (--smooth-lag: the last period it smoothed).
+  SmoothingCorrectionTotal corrections;
+  SmoothingCorrection lastCorrection;
 };
 
 /// Rotates the vectors of FRAME_ALIGNED_INPUTS offline (replay_frame_aligner.hpp).
@@ -214,10 +221,16 @@ class BagReplay final : public MessageSink {
       if (output) writeOutput(bagFile, [&] { writeBag(*output, e); });
     };
     readInput([&] { readMessages(inputs, topics, readTf, write); });
-    if (smoother) smoothRun(*smoother, csv, csvFile);
+    if (smoother) {
+      smoothRun(*smoother, csv, csvFile);
+      if (output) writeOutput(bagFile, [&] { writeSmoothedBag(*smoother, *output); });
+    }
     if (lagged) {
       while (!pending_.empty()) writePending(csv, nullptr);
       if (csv.is_open() && !csv) throw writeError(csvFile);
+      summary_.lagPeriodsHeld = lagged->periodsHeld();
+      summary_.corrections = lagged->corrections();
+      summary_.lastCorrection = lagged->lastCorrection();
     }
     if (csv.is_open()) {
       csv.close();
@@ -617,12 +630,28 @@ class BagReplay final : public MessageSink {
     summary_.smoothedPeriods = smoother.periods();
     summary_.smoothedSegments = smoother.segments();
     summary_.smoothingBytesPerPeriod = smoother.bytesPerPeriod() + sizeof(CsvRow);
+    for (std::size_t k = 0; k < smoother.periods(); ++k) {
+      summary_.lastCorrection = smoother.correction(k);
+      summary_.corrections.add(summary_.lastCorrection);
+    }
     if (!csv.is_open()) return;
     for (std::size_t k = 0; k < smoother.periods(); ++k) {
       const PeriodBelief filtered = smoother.filtered(k), smoothed = smoother.smoothed(k);
       writeCsvRow(csv, rows_[k].time, filtered.state, filtered.covariance, rows_[k].presentInputs,
                   &smoothed);
       if (!csv) throw writeError(csvFile);
+    }
+  }
+
+  /// --smooth --bag: each period's smoothed estimate, at its period's time, on the topics of the
+  /// fixed-lag one (written after the forward run; a bag's reader orders by time).
+  void writeSmoothedBag(const PeriodSmoother& smoother, rosbag::Bag& bag) const {
+    for (std::size_t k = 0; k < smoother.periods(); ++k) {
+      const PeriodBelief s = smoother.smoothed(k);
+      const EstimateRef e{rows_[k].time, s.state, s.covariance, rows_[k].presentInputs, 0,
+                          false,         false};
+      BagSink sink{bag, options_.nodeName, ros::Time(e.time)};
+      writer_.writeSmoothed(e, true, sink);
     }
   }
 
