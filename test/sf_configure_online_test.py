@@ -167,8 +167,9 @@ class SfConfigureOnlineTest(unittest.TestCase):
         period, lag = self.params["estimation_period"], self.params["max_measurement_lag"]
         # rosbag play publishes /clock every ~clock_step s of bag time (rate / its --hz)
         end = truth.t[-1] - rospy.get_param("~clock_step") - lag - period
-        start = time.monotonic()
-        while not rospy.is_shutdown() and time.monotonic() - start < WALL_TIMEOUT:
+        # ~wall_timeout: longer for a long recording (the shipped bag plays in 60 s)
+        start, timeout = time.monotonic(), rospy.get_param("~wall_timeout", WALL_TIMEOUT)
+        while not rospy.is_shutdown() and time.monotonic() - start < timeout:
             if received and received[-1][0] >= end and all(
                     int(diagnostics.get(i, {}).get("received", -1)) == n
                     for i, (n, _) in counted.items()):

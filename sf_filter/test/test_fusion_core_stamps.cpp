@@ -35,6 +35,50 @@ Core makeStartedCore(Collector& out, bool speedByStamp = true,
   return core;
 }
 
+/// The estimates of a core with the lag started at `firstReading`, fed the speed 3.0
+/// stamped at 1.203 s (arriving at 1.21 s), run to 1.5 s.
+std::vector<Core::Estimate> gridRun(double firstReading, bool onGrid) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.maxMeasurementLag = kLag;
+  options.periodsOnClockGrid = onGrid;
+  options.inputs.resize(2);
+  options.inputs[0].alignByStamp = true;
+  Core core(makeTrain(), options);
+  Collector out;
+  core.advanceTo(firstReading, out);
+  core.advanceTo(1.21, out);
+  EXPECT_EQ(core.addMeasurement(0, 1.21, 3.0, std::nullopt, 1.203), Rejection::None);
+  core.advanceTo(1.5, out);
+  return out.estimates;
+}
+
+// Online the first clock reading is the node's first /clock, offline the first message: a
+// few ms apart. Started at 1.055 s instead of 1.052 s, the periods shift by 3 ms and the value
+// stamped at 1.203 s falls into another period ([1.105, 1.205) instead of [1.202, 1.302)); on
+// the clock grid both runs have the periods [1.0, 1.1), [1.1, 1.2), ... and the same
+// estimates.
+TEST(FusionCoreStamps, OnTheClockGridTheFirstReadingDoesNotMoveThePeriods) {
+  const auto early = gridRun(1.052, true), late = gridRun(1.055, true);
+  ASSERT_EQ(early.size(), 4u);  // the periods ending at 1.1, 1.2, 1.3, 1.4 (1.5 at 1.55)
+  ASSERT_EQ(late.size(), early.size());
+  for (std::size_t k = 0; k < early.size(); ++k) {
+    EXPECT_NEAR(early[k].time, 1.1 + 0.1 * static_cast<double>(k), 1e-9) << k;
+    EXPECT_EQ(early[k].time, late[k].time) << k;
+    EXPECT_EQ(early[k].state, late[k].state) << k;
+    EXPECT_EQ(early[k].presentInputs, late[k].presentInputs) << k;
+  }
+  EXPECT_EQ(early[2].presentInputs, 1);  // [1.2, 1.3) holds the value stamped at 1.203
+  // Without the grid the phase is the first reading's: the value is one period earlier in
+  // the later-started run.
+  const auto earlyPhase = gridRun(1.052, false), latePhase = gridRun(1.055, false);
+  EXPECT_NEAR(earlyPhase.at(0).time, 1.102, 1e-9);
+  EXPECT_NEAR(latePhase.at(0).time, 1.105, 1e-9);
+  EXPECT_EQ(earlyPhase.at(2).presentInputs, 1);
+  EXPECT_EQ(latePhase.at(1).presentInputs, 1);
+  EXPECT_EQ(latePhase.at(2).presentInputs, 0);
+}
+
 TEST(FusionCoreStamps, APeriodIsEstimatedOnlyAfterItsEndPlusTheLag) {
   Collector out;
   Core core = makeStartedCore(out);

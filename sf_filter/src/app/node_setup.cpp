@@ -81,6 +81,7 @@ class StartedFusionNode final : public FusionNodeInstance {
         coreOptions(parameters.estimation_period_ms, inputs, lagMs, faults.maxFutureStampMs);
     options.nisWindow = nisWindowPeriods(faults, parameters.estimation_period_ms);
     options.nisTolerance = faults.nisTolerance;
+    options.periodsOnClockGrid = faults.periodsOnClockGrid;
     const std::string baseFrame = aligner_ ? aligner_->baseFrame() : def.baseFrame;
     node_.emplace(nh, pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
                   aligner_ ? &*aligner_ : nullptr, faults.diagnosticPeriod,

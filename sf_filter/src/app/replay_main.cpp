@@ -40,6 +40,7 @@ FusionCoreOptions replayCoreOptions(const ReplayCommand& c) {
   FusionCoreOptions options = coreOptions(c.periodMs, c.inputs, c.lagMs, c.maxFutureStampMs);
   options.nisWindow = nisWindowPeriods(c.nis, c.periodMs);
   options.nisTolerance = c.nis.nisTolerance;
+  options.periodsOnClockGrid = c.nis.periodsOnClockGrid;
   if (!c.tune) return options;
   // The cost sums over the values that reach the filter: a gate would let the optimiser lower
   // it by gating values away, so the identification runs without gates; the NIS needs its

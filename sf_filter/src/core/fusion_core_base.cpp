@@ -557,7 +557,11 @@ const FusionCoreOptions& FusionCoreBase::checked(const FusionCoreOptions& o, Ind
 
 void FusionCoreBase::restartSchedule(double now) {
   startTime_ = now;
-  ring_->schedule.start(now - options_.maxMeasurementLag);
+  if (options_.periodsOnClockGrid) {
+    ring_->schedule.startOnGrid(now - options_.maxMeasurementLag);
+  } else {
+    ring_->schedule.start(now - options_.maxMeasurementLag);
+  }
   ring_->newestPlaced = 0;
   reading_ = now;
   clearLeadStamps();

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 namespace sf_filter {
 
@@ -18,15 +19,24 @@ class PeriodSchedule {
   /// Starts the schedule at `time`; the first period ends at time + period.
   void start(double time) {
     start_ = time;
+    grid_.reset();
     index_ = 1;
     started_ = true;
+  }
+  /// Starts the schedule on the clock grid at the last multiple of the period at or before
+  /// `time`; period ends are then (g + k) * period for that multiple g, the same numbers
+  /// whatever reading within the grid's period started it.
+  void startOnGrid(double time) {
+    start(time);
+    grid_ = std::floor(time / period_);
+    start_ = *grid_ * period_;
   }
   void stop() { started_ = false; }
 
   /// Index of the current (not yet estimated) period; the first period is 1.
   std::uint64_t index() const { return index_; }
-  /// End time of period k: start + k * period.
-  double endOf(std::uint64_t k) const { return start_ + static_cast<double>(k) * period_; }
+  /// End time of period k: start + k * period (on the clock grid (g + k) * period).
+  double endOf(std::uint64_t k) const { return endAt(static_cast<std::int64_t>(k)); }
   /// End time of the current (not yet estimated) period.
   double currentEnd() const { return endOf(index_); }
 
@@ -36,8 +46,8 @@ class PeriodSchedule {
   std::int64_t indexOf(double t) const {
     auto k = static_cast<std::int64_t>(std::floor((t + kTolerance - start_) / period_)) + 1;
     // Correct the floor's rounding against the end times the schedule itself uses.
-    while (start_ + static_cast<double>(k) * period_ <= t + kTolerance) ++k;
-    while (start_ + static_cast<double>(k - 1) * period_ > t + kTolerance) --k;
+    while (endAt(k) <= t + kTolerance) ++k;
+    while (endAt(k - 1) > t + kTolerance) --k;
     return k;
   }
   /// Start of the current period: the previous period's end, computed like every end (not
@@ -70,12 +80,19 @@ class PeriodSchedule {
   void skipTo(double now) { index_ += periodsDue(now); }
 
  private:
+  /// endOf() for any (also negative) index.
+  double endAt(std::int64_t k) const {
+    if (grid_) return (*grid_ + static_cast<double>(k)) * period_;
+    return start_ + static_cast<double>(k) * period_;
+  }
+
   /// Period ends are sums of doubles; a clock reading within a microsecond of an end counts
   /// as reaching it (ROS times near 1.7e9 s resolve to about 0.2 us).
   static constexpr double kTolerance = 1e-6;
 
   double period_;
   double start_ = 0.0;
+  std::optional<double> grid_;  ///< the first period's start / period, on the clock grid
   std::uint64_t index_ = 1;
   bool started_ = false;
 };

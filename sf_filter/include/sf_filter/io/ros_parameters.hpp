@@ -385,6 +385,9 @@ struct FaultSettings {
   int nisWindow = -1;
   double nisTolerance = 2.0;      ///< ~nis_tolerance, the factor of nis_window.hpp
   double diagnosticPeriod = 1.0;  ///< ~diagnostic_period [s]
+  /// ~periods_on_clock_grid: period ends on whole multiples of the period in clock time
+  /// (FusionCoreOptions::periodsOnClockGrid).
+  bool periodsOnClockGrid = false;
 };
 
 /// The NIS window's default span. Shorter windows see the regimes of a real robot's noise
@@ -443,6 +446,7 @@ inline void loadInputFaultParameters(const ParameterSource& pnh, std::vector<Inp
 ///                       30 s of periods)
 ///   ~nis_tolerance      factor 1 .. 100 (nis_window.hpp), default 2
 ///   ~diagnostic_period  s, 0.01 .. 3600, between diagnostic messages
+///   ~periods_on_clock_grid  true: period ends on multiples of the period in clock time
 inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
                                          std::vector<InputOptions>& inputs,
                                          const InputCapabilities& can) {
@@ -480,6 +484,13 @@ inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
       !(settings.diagnosticPeriod >= kMinDiagnosticPeriodSeconds &&
         settings.diagnosticPeriod <= kMaxDiagnosticPeriodSeconds)) {
     refuse("diagnostic_period", "expected a number of seconds from 0.01 to 3600");
+  }
+  XmlRpc::XmlRpcValue grid;
+  if (pnh.get("periods_on_clock_grid", grid)) {
+    if (grid.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
+      refuse("periods_on_clock_grid", "expected true or false, found " + detail::describe(grid));
+    }
+    settings.periodsOnClockGrid = static_cast<bool>(grid);
   }
   return settings;
 }
@@ -569,6 +580,7 @@ inline const std::vector<std::string>& knownParameters() {
                        "nis_window",
                        "nis_tolerance",
                        "diagnostic_period",
+                       "periods_on_clock_grid",
                        "frame_id",
                        "child_frame_id",
                        "publish_tf",
