@@ -11,12 +11,14 @@ of that. References, independent of the node's code:
   simulator's true values (they maximise the likelihood of this very data);
 - the chi-square bounds of the NIS for the tuned filter (the replay's NIS lines);
 - the hold-out guard's cost of the header's values: the same plain-Python KF's mean cost
-  over the periods after the split.
+  over the periods after the split; on a bag whose sensors get 100 times noisier after 70 %
+  of it the guard keeps the header's matrices.
 Both a KF and a UKF (whose S comes from the unscented transform) are identified.
 """
 
 import math
 import os
+import random
 import re
 import subprocess
 import sys
@@ -169,6 +171,35 @@ class NoiseTuningTest(unittest.TestCase):
                              HEADER_R)
         self.assertAlmostEqual(start / (sum(terms[-periods:]) / periods), 1.0, delta=1e-5)
         self.assertLess(tuned, start)
+
+    def test_guard_keeps_the_header_when_the_held_out_part_differs(self):
+        # the sensors 100 times noisier after 70 % of the recording: the values identified on
+        # the first part predict the last part worse than the header's (whose Q is ten times
+        # the simulator's); the file holds the header's matrices, the exit status is 0
+        noisy = random.Random(7)
+        samples = [(k, p, v, zp, zv) if k < 0.7 * PERIODS else
+                   (k, p, v, p + noisy.gauss(0.0, math.sqrt(100 * TRUE_R[0])),
+                    v + noisy.gauss(0.0, math.sqrt(100 * TRUE_R[1])))
+                   for k, p, v, zp, zv in self.samples]
+        bag = os.path.join(self.tmp.name, "regime.bag")
+        cart_sim.write_bag(bag, samples)
+        out = os.path.join(self.tmp.name, "regime.yaml")
+        proc = self.run_node("sf_tune_cart_kf", "--tune", bag, "--out", out)
+        self.assertEqual(proc.returncode, 0, proc.stdout + proc.stderr)
+        m = re.search(r"on the last 30 % \((\d+) periods\) .*: start (\S+), tuned (\S+): not "
+                      r"better: .* the start values are kept", proc.stdout)
+        self.assertIsNotNone(m, proc.stdout)
+        periods, start = int(m.group(1)), float(m.group(2))
+        terms = kalman_terms([(zp, zv) for _, _, _, zp, zv in samples[:-1]], HEADER_Q, HEADER_R)
+        self.assertAlmostEqual(start / (sum(terms[-periods:]) / periods), 1.0, delta=1e-5)
+        self.assertGreater(float(m.group(3)), start)
+        self.assertIn("wrote %s with the start values" % out, proc.stdout)
+        self.assertNotIn("(tuned): NIS", proc.stdout)
+        with open(out) as f:
+            params = yaml.safe_load(f)
+        for k in range(2):
+            self.assertAlmostEqual(params["process_noise_covariance"][k][k], HEADER_Q[k], 15)
+            self.assertAlmostEqual(params["measurement_noise_covariance"][k][k], HEADER_R[k], 15)
 
     def test_tuned_nis_is_inside_its_bounds_and_the_headers_is_not(self):
         _, path = self.tune("sf_tune_cart_kf")
