@@ -61,14 +61,17 @@ std::vector<FreeEntry> reportIdentification(const std::string& name,
   std::vector<FreeEntry> kept;
   for (std::size_t k = 0; k < free.size(); ++k) {
     const EntryIdentification& id = ids[k];
+    std::string why;
+    if (!id.identified()) {
+      char flat[48];
+      std::snprintf(flat, sizeof flat, " (below %g: flat)", kIdentifiedRise);
+      why = id.atBound ? " (at the bound of --tune-range)" : flat;
+      if (keepUnidentified) why += "; written (--tune-keep-unidentified)";
+    }
     std::printf("%s: --tune: %-6s %s: the cost rises by %.4g at x 1/%g and by %.4g at x %g%s\n",
                 name.c_str(), free[k].name().c_str(),
                 id.identified() ? "identified" : "not identified", id.riseDown,
-                kIdentificationProbe, id.riseUp, kIdentificationProbe,
-                id.identified()    ? ""
-                : id.atBound       ? " (at the bound of --tune-range)"
-                : keepUnidentified ? " (below 3.84: flat); written (--tune-keep-unidentified)"
-                                   : " (below 3.84: flat)");
+                kIdentificationProbe, id.riseUp, kIdentificationProbe, why.c_str());
     if (id.identified() || keepUnidentified) {
       kept.push_back(free[k]);
     } else {
