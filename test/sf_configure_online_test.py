@@ -104,8 +104,10 @@ class SfConfigureOnlineTest(unittest.TestCase):
         cls.out = cls.tmp.name
         # the built nodes: the workspace's lib/sf_pkg (CMAKE_PREFIX_PATH, as rosrun finds them)
         lib_dir = os.path.dirname(find_executable("sf_diff_drive_odom_imu"))
+        # without the tuning (test/robots/test_sf_configure_replay.py checks it): this test
+        # is about online against offline, under the rostest's time limit
         proc = subprocess.run([sys.executable, TOOL, cls.bag, "--out", cls.out,
-                               "--lib-dir", lib_dir],
+                               "--lib-dir", lib_dir, "--no-tune"],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                               universal_newlines=True, timeout=300)
         print(proc.stdout)

@@ -77,6 +77,42 @@ class DecisionsTest(unittest.TestCase):
                     self.assertAlmostEqual(got, want, delta=1e-12)
 
 
+# --tune's lines as the node prints them (abridged from the Husky recording's): a first
+# identification, the entries' verdicts, the identification again with the identified ones,
+# the hold-out guard, the tuned NIS.
+TUNE_OUTPUT = """\
+sf_x: --tune: Q.3    start 0.025        tuned 0.0006       (x 0.024)
+sf_x: --tune: R.0    start 0.0001       tuned 1.8e-07      (x 0.0018)
+sf_x: --tune: Q.3    identified: the cost rises by 115.8 at x 1/2 and by 72.97 at x 2
+sf_x: --tune: R.0    not identified: the cost rises by -0.0882 at x 1/2 and by 0.1764 at x 2 (below 3.84: flat)
+sf_x: --tune: R.0    kept at its start value (--tune-keep-unidentified writes the tuned one)
+sf_x: --tune: again with the identified entries only
+sf_x: --tune: Q.3    start 0.025        tuned 0.000651515  (x 0.02606)
+sf_x: --tune: hold-out: tuned on the first 70 % of the recording (29 replays), on the last 30 % (114 periods) mean log det S + NIS per period: start -0.8, tuned -5.5: better
+sf_x (tuned): NIS input 0 (odom twist.twist.linear.x): mean 0.854 over 379 periods (expected 1; lag-1 autocorrelation 0.2, worth 250 independent periods), 95 % bounds [0.8, 1.2]: consistent; window of 300 periods inconsistent in 0 of 80 judged periods
+sf_x: --tune: wrote robot_tuned.yaml
+"""
+
+
+class TuneSummaryTest(unittest.TestCase):
+    def test_identified_entries_changed_unidentified_kept_and_the_guards_verdict(self):
+        self.assertEqual(sfc.tune_summary(TUNE_OUTPUT), [
+            "- `Q.3` identified (the cost rises by 115.8 at x 1/2 and by 72.97 at x 2): "
+            "0.025 -> 0.000651515",
+            "- `R.0` not identified (the cost rises by -0.0882 at x 1/2 and by 0.1764 at x 2 "
+            "(below 3.84: flat)): kept at 0.0001",
+            "- hold-out guard: tuned on the first 70 % of the recording (29 replays), on the last "
+            "30 % (114 periods) mean log det S + NIS per period: start -0.8, tuned -5.5: better",
+            "- tuned NIS input 0 (odom twist.twist.linear.x): mean 0.854 (expected 1): consistent"])
+
+    def test_the_guard_keeping_the_start_values_changes_nothing(self):
+        kept = TUNE_OUTPUT.replace(": better", ": not better: ...").replace(
+            "wrote robot_tuned.yaml", "wrote robot_tuned.yaml with the start values")
+        lines = sfc.tune_summary(kept)
+        self.assertEqual(lines[0], "- `Q.3` identified (the cost rises by 115.8 at x 1/2 and by "
+                                   "72.97 at x 2): kept at 0.025")
+
+
 class OutputsTest(unittest.TestCase):
     """Every output is checked as the C++ tools check theirs (doc/reliability.md): an output
     that is an input, or a symbolic link, is refused before anything is written."""

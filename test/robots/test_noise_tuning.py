@@ -9,12 +9,16 @@ of that. References, independent of the node's code:
   cost sum(log det S + y' S^-1 y) over the same readings equals the cost the node reports for
   the header's values, and the tuned values must reach a cost at most that of the
   simulator's true values (they maximise the likelihood of this very data);
-- the chi-square bounds of the NIS for the tuned filter (the replay's NIS lines).
+- the chi-square bounds of the NIS for the tuned filter (the replay's NIS lines);
+- the hold-out guard's cost of the header's values: the same plain-Python KF's mean cost
+  over the periods after the split; on a bag whose sensors get 100 times noisier after 70 %
+  of it the guard keeps the header's matrices.
 Both a KF and a UKF (whose S comes from the unscented transform) are identified.
 """
 
 import math
 import os
+import random
 import re
 import subprocess
 import sys
@@ -50,9 +54,14 @@ def executable(name):
 
 def kalman_cost(readings, q, r):
     """sum over the readings of log det S + y' S^-1 y for the cart's KF from x0 = 0, P0 = I."""
+    return sum(kalman_terms(readings, q, r))
+
+
+def kalman_terms(readings, q, r):
+    """log det S + y' S^-1 y of each reading for the cart's KF from x0 = 0, P0 = I."""
     x = [0.0, 0.0]
     p = [[1.0, 0.0], [0.0, 1.0]]
-    cost = 0.0
+    terms = []
     for zp, zv in readings:
         # predict: x = F x, P = F P F' + Q, F = [[1, T], [0, 1]]
         x = [x[0] + T * x[1], x[1]]
@@ -62,7 +71,7 @@ def kalman_cost(readings, q, r):
         s00, s01, s11 = p00 + r[0], p01, p11 + r[1]
         det = s00 * s11 - s01 * s01
         y0, y1 = zp - x[0], zv - x[1]
-        cost += math.log(det) + (y0 * y0 * s11 - 2 * y0 * y1 * s01 + y1 * y1 * s00) / det
+        terms.append(math.log(det) + (y0 * y0 * s11 - 2 * y0 * y1 * s01 + y1 * y1 * s00) / det)
         # K = P S^-1
         i00, i01, i11 = s11 / det, -s01 / det, s00 / det
         k00, k01 = p00 * i00 + p01 * i01, p00 * i01 + p01 * i11
@@ -73,7 +82,7 @@ def kalman_cost(readings, q, r):
         n01 = (1 - k00) * p01 - k01 * p11
         n11 = -k10 * p01 + (1 - k11) * p11
         p = [[n00, n01], [n01, n11]]
-    return cost
+    return terms
 
 
 def nis_lines(stdout):
@@ -146,6 +155,51 @@ class NoiseTuningTest(unittest.TestCase):
 
     def test_ukf_recovers_the_simulators_noise(self):
         self.check_recovers_the_simulators_noise("sf_tune_cart_ukf")
+
+    def test_hold_out_cost_is_the_plain_kalman_filters_over_the_last_part(self):
+        # the guard's cost of the header's values: the mean of log det S + NIS over the
+        # periods after the split (the last 30 % of the time span), the filter run through the
+        # first part: the plain-Python KF's terms over the same last periods
+        stdout, _ = self.tune("sf_tune_cart_kf")
+        m = re.search(r"--tune: hold-out: tuned on the first 70 % of the recording \(\d+ "
+                      r"replays\), on the last 30 % \((\d+) periods\) mean log det S \+ NIS "
+                      r"per period: start (\S+), tuned (\S+): better", stdout)
+        self.assertIsNotNone(m, stdout)
+        periods, start, tuned = int(m.group(1)), float(m.group(2)), float(m.group(3))
+        self.assertLessEqual(abs(periods - 0.3 * (PERIODS - 1)), 2)
+        terms = kalman_terms([(zp, zv) for _, _, _, zp, zv in self.samples[:-1]], HEADER_Q,
+                             HEADER_R)
+        self.assertAlmostEqual(start / (sum(terms[-periods:]) / periods), 1.0, delta=1e-5)
+        self.assertLess(tuned, start)
+
+    def test_guard_keeps_the_header_when_the_held_out_part_differs(self):
+        # the sensors 100 times noisier after 70 % of the recording: the values identified on
+        # the first part predict the last part worse than the header's (whose Q is ten times
+        # the simulator's); the file holds the header's matrices, the exit status is 0
+        noisy = random.Random(7)
+        samples = [(k, p, v, zp, zv) if k < 0.7 * PERIODS else
+                   (k, p, v, p + noisy.gauss(0.0, math.sqrt(100 * TRUE_R[0])),
+                    v + noisy.gauss(0.0, math.sqrt(100 * TRUE_R[1])))
+                   for k, p, v, zp, zv in self.samples]
+        bag = os.path.join(self.tmp.name, "regime.bag")
+        cart_sim.write_bag(bag, samples)
+        out = os.path.join(self.tmp.name, "regime.yaml")
+        proc = self.run_node("sf_tune_cart_kf", "--tune", bag, "--out", out)
+        self.assertEqual(proc.returncode, 0, proc.stdout + proc.stderr)
+        m = re.search(r"on the last 30 % \((\d+) periods\) .*: start (\S+), tuned (\S+): not "
+                      r"better: .* the start values are kept", proc.stdout)
+        self.assertIsNotNone(m, proc.stdout)
+        periods, start = int(m.group(1)), float(m.group(2))
+        terms = kalman_terms([(zp, zv) for _, _, _, zp, zv in samples[:-1]], HEADER_Q, HEADER_R)
+        self.assertAlmostEqual(start / (sum(terms[-periods:]) / periods), 1.0, delta=1e-5)
+        self.assertGreater(float(m.group(3)), start)
+        self.assertIn("wrote %s with the start values" % out, proc.stdout)
+        self.assertNotIn("(tuned): NIS", proc.stdout)
+        with open(out) as f:
+            params = yaml.safe_load(f)
+        for k in range(2):
+            self.assertAlmostEqual(params["process_noise_covariance"][k][k], HEADER_Q[k], 15)
+            self.assertAlmostEqual(params["measurement_noise_covariance"][k][k], HEADER_R[k], 15)
 
     def test_tuned_nis_is_inside_its_bounds_and_the_headers_is_not(self):
         _, path = self.tune("sf_tune_cart_kf")

@@ -3,8 +3,8 @@ own NIS check"): one per shipped header and the bag it is meant for, written by 
 
 For every file:
 - it is what its own command writes: the command in its second comment line is rerun
-  (except for the soccer file, whose identification replays a 60 s bag at 1 kHz 1562 times,
-  155 s) and must give the same matrices;
+  (except for the soccer file, whose identification replays a 60 s bag at 1 kHz 2460 times,
+  12 min on a loaded machine) and must give the same matrices;
 - the header's values replayed on the bag are inconsistent by the node's rule (the run's
   verdict, and every judged window of the node's default ~nis_window), so the check is able
   to fail on these bags;

@@ -30,7 +30,8 @@ std::string replayUsage(const std::string& program) {
          "   or: " +
          program +
          " --tune INPUT.bag [INPUT.bag]... [--free LIST] [--out TUNED.yaml]\n"
-         "       [--tune-range F] [--max-evaluations N] [the replay's options but --csv, --bag]\n"
+         "       [--tune-range F] [--max-evaluations N] [--tune-holdout F]\n"
+         "       [--tune-keep-unidentified] [the replay's options but --csv, --bag]\n"
          "Replays the bag through this node's filter without a ROS master, in recorded-time\n"
          "order, and writes the estimates. Without --csv and --bag only a summary is printed.\n"
          "Several bags are one recording: their messages are merged in recorded-time order\n"
@@ -62,7 +63,11 @@ std::string replayUsage(const std::string& program) {
          "with --out as a YAML file of private parameters for the node and --params\n"
          "(doc/tuning.md). LIST: comma-separated Q, R, P0 (their non-zero diagonal entries) or\n"
          "Q.i, R.i, P0.i; default Q,R. --tune-range F: each variance within a factor F of its\n"
-         "start (default 1000); --max-evaluations N: replays at most (default 2000).";
+         "start (default 1000); --max-evaluations N: replays at most (default 2000). An entry\n"
+         "at a bound or whose cost is flat (rises by less than 3.84 at half and twice its value)\n"
+         "keeps its start value unless --tune-keep-unidentified. --tune-holdout F: the guard\n"
+         "tunes on the first 1 - F of the recording (default 0.3 held out, 0: no guard) and\n"
+         "writes the start values (exit status 0) unless the tuned ones predict the rest better.";
 }
 
 namespace {
@@ -183,6 +188,10 @@ bool readRunOption(ReplayCommand& c, Arguments& a) {
     c.tunedPath = a.value();
   } else if (arg == "--tune-range") {
     c.tuning.range = numberOption(arg, a.value());
+  } else if (arg == "--tune-holdout") {
+    c.tuning.holdout = numberOption(arg, a.value());
+  } else if (arg == "--tune-keep-unidentified") {
+    c.tuning.keepUnidentified = true;
   } else if (arg == "--max-evaluations") {
     const double n = numberOption(arg, a.value());
     if (n != std::floor(n) || n < 1 || n > 1e9) {
@@ -326,6 +335,9 @@ void checkTuning(ReplayCommand& c, const NodeDefinition& def) {
     throw std::invalid_argument("--tune-range must be a finite factor above 1");
   }
   if (c.tuning.maxEvaluations < 1) throw std::invalid_argument("--max-evaluations must be >= 1");
+  if (!(c.tuning.holdout >= 0.0 && c.tuning.holdout <= 0.9)) {
+    throw std::invalid_argument("--tune-holdout must be a fraction from 0 (no guard) to 0.9");
+  }
   const FilterParameters start =
       c.fileParameters ? *c.fileParameters : def.defaultParameters(c.periodMs);
   c.freeEntries = parseFreeEntries(c.freeList, start);

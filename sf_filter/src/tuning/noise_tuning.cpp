@@ -247,6 +247,54 @@ TuningResult tuneNoise(const EventLog& events, const EngineMaker& makeEngine,
   return result;
 }
 
+bool EntryIdentification::identified() const {
+  return !atBound && riseDown >= kIdentifiedRise && riseUp >= kIdentifiedRise;
+}
+
+std::vector<EntryIdentification> identifyEntries(const EventLog& events,
+                                                 const EngineMaker& makeEngine,
+                                                 const FilterParameters& start,
+                                                 const std::vector<FreeEntry>& free,
+                                                 const TuningResult& result) {
+  std::vector<EntryIdentification> out(free.size());
+  for (std::size_t k = 0; k < free.size(); ++k) {
+    std::vector<double> probe = result.factors;
+    out[k].atBound = result.atBound[k];
+    probe[k] = result.factors[k] / kIdentificationProbe;
+    out[k].riseDown =
+        predictionErrorCost(events, makeEngine, scaledParameters(start, free, probe)) - result.cost;
+    probe[k] = result.factors[k] * kIdentificationProbe;
+    out[k].riseUp =
+        predictionErrorCost(events, makeEngine, scaledParameters(start, free, probe)) - result.cost;
+  }
+  return out;
+}
+
+HeldOutCost heldOutCost(const EventLog& events, std::size_t split, const EngineMaker& makeEngine,
+                        const FilterParameters& parameters) {
+  std::unique_ptr<FusionEngine> engine;
+  try {
+    engine = makeEngine(parameters);
+  } catch (const std::exception&) {
+    return {std::numeric_limits<double>::infinity(), 0};
+  }
+  auto ignore = [](const EstimateRef&) {};
+  ReplayClock clock;
+  events.replay(*engine, ignore, clock, 0, split);
+  const double before = engine->innovations().predictionErrorCost();
+  const std::uint64_t periodsBefore = engine->innovations().overall().periods();
+  events.replay(*engine, ignore, clock, split, events.size());
+  const FusionStatistics statistics = engine->statistics();
+  HeldOutCost held;
+  held.periods = engine->innovations().overall().periods() - periodsBefore;
+  const double cost = engine->innovations().predictionErrorCost() - before;
+  const bool failed = statistics.estimationFailures > 0 || statistics.nisFailures > 0;
+  held.mean = failed || !std::isfinite(cost) ? std::numeric_limits<double>::infinity()
+              : held.periods > 0             ? cost / static_cast<double>(held.periods)
+                                             : 0.0;
+  return held;
+}
+
 std::string identificationRefusal(const TuningResult& r) {
   if (r.innovationPeriods == 0) {
     return "the recording identifies nothing: no period has a finite innovation (no "

@@ -6,7 +6,9 @@
 // replays it hundreds of times.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -46,12 +48,48 @@ class EventLog {
   }
   std::size_t size() const { return events_.size(); }
 
+  /// The index of the first clock reading at or after `fraction` of the span of the log's
+  /// clock readings (size() without one): where a log is split into a first and a later part.
+  std::size_t splitIndex(double fraction) const {
+    double first = 0.0, last = 0.0;
+    bool any = false;
+    for (const Event& e : events_) {
+      if (e.kind != Kind::Clock) continue;
+      if (!any) first = e.now;
+      last = e.now;
+      any = true;
+    }
+    const double at = first + fraction * (last - first);
+    for (std::size_t i = 0; any && i < events_.size(); ++i) {
+      if (events_[i].kind == Kind::Clock && events_[i].now >= at) return i;
+    }
+    return events_.size();
+  }
+
+  /// The log of the events before `end` (a recording cut there).
+  EventLog head(std::size_t end) const {
+    EventLog part;
+    part.events_.assign(events_.begin(),
+                        events_.begin() + static_cast<std::ptrdiff_t>(std::min(end, size())));
+    part.blocks_ = blocks_;  // a Block event refers to its place here
+    return part;
+  }
+
   /// Feeds the log into `core` as the bag replay fed the bag, through the same ReplayClock;
   /// the estimates go to `write` (an EstimateRef callable).
   template <class Write>
   void replay(FusionEngine& core, Write& write) const {
     ReplayClock clock;
-    for (const Event& e : events_) {
+    replay(core, write, clock, 0, events_.size());
+  }
+
+  /// Events [begin, end) of the log through `clock`: a replay in parts (the held-out part of
+  /// the noise identification's guard) gives the estimates of a replay in one.
+  template <class Write>
+  void replay(FusionEngine& core, Write& write, ReplayClock& clock, std::size_t begin,
+              std::size_t end) const {
+    for (std::size_t i = begin; i < end && i < events_.size(); ++i) {
+      const Event& e = events_[i];
       switch (e.kind) {
         case Kind::Clock:
           clock.advance(core, e.now, write);

@@ -48,6 +48,9 @@ std::string tuningRefusal(const std::string& method);
 struct TuningOptions {
   double range = 1000.0;      ///< each variance within [start / range, start * range]
   int maxEvaluations = 2000;  ///< replays at most
+  /// The last part of the recording's time span held out by the guard (0: no guard).
+  double holdout = 0.3;
+  bool keepUnidentified = false;  ///< write entries the recording does not identify
 };
 
 struct TuningResult {
@@ -81,6 +84,39 @@ TuningResult tuneNoise(const EventLog& events, const EngineMaker& makeEngine,
 /// with a finite innovation, every replay failed, or a cost that did not change by the
 /// optimiser's tolerance (1e-4) whatever the free entries (flat: they do not enter it).
 std::string identificationRefusal(const TuningResult& result);
+
+/// How the recording identifies one free entry at the tuned values: whether it ended at a
+/// bound of the range, and how much the cost rises when the entry alone is divided or
+/// multiplied by kIdentificationProbe (a factor-4 span around the optimum).
+struct EntryIdentification {
+  bool atBound = false;
+  double riseDown = 0.0, riseUp = 0.0;
+  /// Off the bounds and the cost rising by kIdentifiedRise or more on both sides.
+  bool identified() const;
+};
+
+/// The probe's factor (the entry at 1/2 and 2 times its tuned value).
+constexpr double kIdentificationProbe = 2.0;
+/// The rise of J (twice the negative log-likelihood) that a likelihood-ratio test of one
+/// parameter needs at 95 % (the chi-square(1) quantile): below it on either side, the
+/// recording cannot tell the tuned value from one twice or half as large.
+constexpr double kIdentifiedRise = 3.84;
+
+/// Per free entry of `result` (tuned from `start` on `events`), two more replays.
+std::vector<EntryIdentification> identifyEntries(const EventLog& events,
+                                                 const EngineMaker& makeEngine,
+                                                 const FilterParameters& start,
+                                                 const std::vector<FreeEntry>& free,
+                                                 const TuningResult& result);
+
+/// The cost of `parameters` over the periods estimated after the first `split` events of
+/// `events` (the filter runs through the first part): its mean per period with an innovation.
+struct HeldOutCost {
+  double mean = 0.0;          ///< +infinity when a step failed
+  std::uint64_t periods = 0;  ///< 0: the later part has no innovation
+};
+HeldOutCost heldOutCost(const EventLog& events, std::size_t split, const EngineMaker& makeEngine,
+                        const FilterParameters& parameters);
 
 /// `start` with the free entries' variances multiplied by `factors` (correlations kept).
 FilterParameters scaledParameters(const FilterParameters& start, const std::vector<FreeEntry>& free,
