@@ -83,6 +83,7 @@ class SimulatedSkidSteerTest(unittest.TestCase):
         self.assertAlmostEqual(median, 25 + 2 * math.log(2), delta=0.5)
         self.assertEqual(self.params["max_measurement_lag"], "0.055")
         self.assertEqual(self.params["estimation_period"], "0.02")
+        self.assertEqual(self.params["periods_on_clock_grid"], "true")
         self.assertIn("its yaw axis +y", self.text)
         self.assertIn("base_link -> imu_link yaw 1.5708 pitch 0.0000 roll 1.5708", self.text)
         self.assertIn("`sf_skid_steer_odom_imu`", self.text)
