@@ -45,24 +45,36 @@
   ((/fix)(sensor_msgs::NavSatFix)(longitude)) \
   ((/fix)(sensor_msgs::NavSatFix)(latitude))
 #define DERIVED_INPUTS ((3)(EAST)(ABSOLUTE))((4)(NORTH)(ABSOLUTE))
+// The fixes' slow error: first-order Gauss-Markov per axis, time constant and standard
+// deviation measured on the recording's fixes (see above).
+#define GPS_ERROR_TAU 60.0
+#define GPS_ERROR_SIGMA 1.1
 #undef STATE_TRANSITION_MODEL
-#define STATE_TRANSITION_MODEL SKID_STEER_TRANSITION(x[7])
+#define STATE_TRANSITION_MODEL \
+  SKID_STEER_TRANSITION(x[7])(x[8])(exp(-T / GPS_ERROR_TAU) * x[9])(exp(-T / GPS_ERROR_TAU) * x[10])
 #undef OBSERVATION_MODEL
 #define OBSERVATION_MODEL \
   (x[3] * (1 + x[7])) \
   (x[4] + SKID_STEER_MOVING * x[6]) \
   (x[4] + x[5]) \
-  (x[0]) \
-  (x[1])
+  (cos(x[8]) * x[0] - sin(x[8]) * x[1] + x[9]) \
+  (sin(x[8]) * x[0] + cos(x[8]) * x[1] + x[10])
 #undef MEASUREMENT_NOISE_COVARIANCE
-#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((1e-4)(4e-4)(1.25e-5)(2.0)(2.0))
+#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((1e-4)(4e-4)(1.25e-5)(0.02)(0.02))
+#define GPS_COVARIANCE_SCALE 0.01
+#define GPS_ERROR_Q (GPS_ERROR_SIGMA * GPS_ERROR_SIGMA * (1 - exp(-2 * T / GPS_ERROR_TAU)))
 #undef PROCESS_NOISE_COVARIANCE
 #define PROCESS_NOISE_COVARIANCE \
-  SF_DIAGONAL((0.02 * T)(0.02 * T)(1e-4 * T)(0.25 * T)(1.0 * T)(1e-8 * T)(100)(1e-6 * T))
+  SF_DIAGONAL((0.02 * T)(0.02 * T)(1e-4 * T)(0.25 * T)(1.0 * T)(1e-8 * T)(100)(1e-6 * T) \
+              (0)(GPS_ERROR_Q)(GPS_ERROR_Q))
 #undef INITIAL_STATE
-#define INITIAL_STATE (0)(0)(0)(0)(0)(0)(0)(0)
+#define INITIAL_STATE (0)(0)(0)(0)(0)(0)(0)(0)(0)(0)(0)
 #undef INITIAL_ERROR_COVARIANCE
-#define INITIAL_ERROR_COVARIANCE SF_DIAGONAL((0)(0)(0)(1)(1)(2.5e-5)(100)(0.04))
+#define INITIAL_ERROR_COVARIANCE \
+  SF_DIAGONAL((0)(0)(0)(1)(1)(2.5e-5)(100)(0.04)(3.29)(GPS_ERROR_SIGMA * GPS_ERROR_SIGMA) \
+              (GPS_ERROR_SIGMA * GPS_ERROR_SIGMA))
+#undef ANGLE_STATES
+#define ANGLE_STATES (2)(8)
 #undef ALIGN_BY_STAMP
 #define ALIGN_BY_STAMP (0)(1)(2)(3)(4)
 // The fixes' gate (doc/configuration.md, "Alignment policies, gates and stamps"): a fix whose
