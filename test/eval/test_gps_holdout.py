@@ -201,17 +201,19 @@ class EvaluateHoldoutTest(unittest.TestCase):
 
     def test_yaw_and_error_states_give_the_predicted_fix_without_a_fit(self):
         # The GPS node's CSV holds its yaw state (x8, 90 deg: the odom x axis points north)
-        # and the fixes' error (x9, x10: 0.3 m east, -0.4 m north); its pose runs along odom
+        # and the fixes' offset (x9 + x11 = 0.3 m east, x10 + x12 = -0.4 m north: the slow
+        # error and the start about the datum, the header's states); its pose runs along odom
         # -y, i.e. east, 0.5 m ahead of the robot. Its position in ENU is 0.5 m east of each
         # fix, its predicted fix 0.8 m east and 0.4 m south. Nothing is written for
         # ~gps_yaw_offset and the replay gets no --params.
         def state_replay(exe, bag, csv_path, extra=()):
             self.calls.append((os.path.basename(exe), list(extra)))
             with open(csv_path, "w") as f:
-                f.write("time,pose_x,pose_y,pose_heading,x8,x9,x10\n")
+                f.write("time,pose_x,pose_y,pose_heading,x8,x9,x10,x11,x12\n")
                 for k in range(3000):
                     t = 100.066 + 0.01 * k
-                    f.write("%.3f,0,%.6f,0,%.9f,0.3,-0.4\n" % (t, -(t - 100.0 + 0.5), math.pi / 2))
+                    f.write("%.3f,0,%.6f,0,%.9f,0.1,-0.5,0.2,0.1\n"
+                            % (t, -(t - 100.0 + 0.5), math.pi / 2))
             return "summary"
 
         gh.pioneer_nodes.replay = state_replay

@@ -6,7 +6,7 @@ Usage:
                  [--out-dir DIR] [--plot OUT.png] [--node NODE] [--baseline-node NODE]
                  [--fix-topic /fix] [--remap FROM:=TO]... [--params FILE.yaml]
                  [--static-transform X Y Z YAW PITCH ROLL PARENT CHILD]...
-                 [--yaw-state 8] [--error-states 9 10] [--fitted-yaw]
+                 [--yaw-state 8] [--error-states 9,11 10,12] [--fitted-yaw]
                  [--truth-topic TOPIC --truth-heading DEG]
 
 The valid fixes of the bag's /fix (sensor_msgs/NavSatFix, status >= STATUS_FIX) are split:
@@ -16,16 +16,17 @@ through the GPS node (sf_husky_skid_steer_gps, config/husky_skid_steer_gps.h), a
 bag whole through the odometry + IMU node without GPS (sf_husky_skid_steer_ekf).
 
 The GPS node (config/husky_skid_steer_gps.h) estimates the yaw between ENU and its odom
-frame and the fixes' slowly changing error as states (--yaw-state, --error-states: 8 and
-9, 10); nothing is fitted for it. Each track is compared with the held-out fixes in ENU
+frame, the fixes' slowly changing error and the start's position about the datum as
+states (--yaw-state 8; --error-states 9,11 10,12, east and north, whose sums are the
+fixes' offset from the odom origin); nothing is fitted for it. Each track is compared with the held-out fixes in ENU
 about the datum (the first fused fix), at their header stamps (estimate interpolated
 linearly), with no further fitting. Printed after a header (the split, the fitted yaw
 offset, what the fixes' position_covariance holds: types, entries off the diagonal,
 unequal east and north variances) as a markdown table: per track the fixes compared and
 the RMSE, maximum and final horizontal error [m] on the held-out fixes, and the RMSE on the
 fused ones; rows:
-  GPS node, predicted fix  its pose turned into ENU by its yaw state plus its fixes' error
-                           state: what it predicts the next fix to be
+  GPS node, predicted fix  its pose turned into ENU by its yaw state plus the fixes'
+                           offset states: what it predicts the next fix to be
   GPS node, position       its pose turned into ENU by its yaw state (where the robot is)
   no GPS, same frame       the odometry + IMU node turned into ENU by the yaw offset that
                            fits it best onto the fused fixes of the first CALIBRATION
@@ -72,7 +73,9 @@ import pioneer_nodes  # noqa: E402
 GPS_NODE = "sf_husky_skid_steer_gps"
 BASELINE_NODE = "sf_husky_skid_steer_ekf"
 YAW_STATE = 8  # config/husky_skid_steer_gps.h: the heading of the odom x axis in ENU
-ERROR_STATES = (9, 10)  # and the fixes' slow error, east and north
+# and the offset of the fixes from the odom origin, east and north: the sum of the states
+# listed (the receiver's slow error and the start about the datum)
+ERROR_STATES = ((9, 11), (10, 12))
 
 
 def split_fixes(fixes, every):
@@ -116,20 +119,24 @@ def rotated_track(track, yaw):
 
 def state_tracks(csv_path, yaw_state, error_states):
     """(position, predicted fix, final yaw) of a GPS node whose state holds the yaw offset
-    (column x<yaw_state>) and the fixes' slow error (east, north columns x<error_states>):
-    its pose turned into ENU, that plus the error (what it predicts the next fix to be), and
-    the last yaw [rad]."""
-    names = ["pose_x", "pose_y", "x%d" % yaw_state] + ["x%d" % i for i in error_states]
+    (column x<yaw_state>) and the offset of the fixes from its odom origin (east: the sum of
+    the states error_states[0], north: of error_states[1]): its pose turned into ENU, that
+    plus the offset (what it predicts the next fix to be), and the last yaw [rad]."""
+    east, north = (["x%d" % i for i in axis] for axis in error_states)
+    names = ["pose_x", "pose_y", "x%d" % yaw_state] + east + north
     t, c = ev.read_csv_columns(csv_path, names)
     rows = [r for r in zip(t, *(c[n] for n in names)) if all(map(math.isfinite, r))]
     if not rows:
         raise ValueError("%s: no finite row" % csv_path)
-    pos = [to_enu(x, y, yaw) for _, x, y, yaw, _, _ in rows]
-    times = [r[0] for r in rows]
-    position = ev.make_trajectory(times, [p[0] for p in pos], [p[1] for p in pos])
-    predicted = ev.make_trajectory(times, [p[0] + r[4] for p, r in zip(pos, rows)],
-                                   [p[1] + r[5] for p, r in zip(pos, rows)])
-    return position, predicted, rows[-1][3]
+    times, pe, pn, fe, fn = [], [], [], [], []
+    for r in rows:
+        e, n = to_enu(r[1], r[2], r[3])
+        times.append(r[0])
+        pe.append(e)
+        pn.append(n)
+        fe.append(e + sum(r[4:4 + len(east)]))
+        fn.append(n + sum(r[4 + len(east):]))
+    return (ev.make_trajectory(times, pe, pn), ev.make_trajectory(times, fe, fn), rows[-1][3])
 
 
 def held_track(points):
@@ -198,7 +205,7 @@ class HoldoutSetup:
         self.node, self.baseline_node, self.fix_topic = node, baseline_node, fix_topic
         # the GPS node's state indices of the yaw offset and of the fixes' error (east,
         # north); yaw_state None: a node without them, given the fitted ~gps_yaw_offset
-        self.yaw_state, self.error_states = yaw_state, tuple(error_states)
+        self.yaw_state, self.error_states = yaw_state, tuple(map(tuple, error_states))
         self.replay_args = list(replay_args)  # remaps and --static-transform, as --replay takes
         self.params = params  # a YAML of private parameters, or None
 
@@ -355,15 +362,23 @@ def _parser():
     parser.add_argument("--params", help="a YAML of private parameters (both replays)")
     parser.add_argument("--yaw-state", type=int, default=YAW_STATE,
                         help="the GPS node's state index of the yaw offset (default %(default)s)")
-    parser.add_argument("--error-states", type=int, nargs=2, default=list(ERROR_STATES),
+    parser.add_argument("--error-states", type=_indices, nargs=2, default=list(ERROR_STATES),
                         metavar=("EAST", "NORTH"),
-                        help="its state indices of the fixes' slow error (default 9 10)")
+                        help="its state indices whose sum is the fixes' offset from its odom "
+                        "origin, east and north (default 9,11 10,12)")
     parser.add_argument("--fitted-yaw", action="store_true",
                         help="a GPS node without these states: give it the fitted yaw offset")
     parser.add_argument("--truth-topic", help="the bag's true pose (a simulated recording)")
     parser.add_argument("--truth-heading", type=float, default=0.0,
                         help="the heading [deg] in ENU of the true pose's x axis")
     return parser
+
+
+def _indices(text):
+    try:
+        return tuple(int(v) for v in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError("expected state indices I[,J...], found %r" % text)
 
 
 def _print_table(rows):
