@@ -32,7 +32,7 @@
 // sigma^2 = 1.21 m^2 is the receiver's declared horizontal variance (0.81 to 1.96 m^2) and
 // tau = 2 sigma^2 / 0.04 = 60 s; the 38 s recording does not identify a longer tau). The fix's
 // own covariance is the receiver's total error; with e a state only its white part is left,
-// GPS_COVARIANCE_SCALE 0.01 of it (0.09 to 0.14 m). c and e are told apart by e's decay: c is
+// GPS_COVARIANCE_SCALE 0.003 of it (0.05 to 0.08 m). c and e are told apart by e's decay: c is
 // constant. Each fix's covariance is its position_covariance (covariance type APPROXIMATED on
 // this recording: its diagonal, equal east and north variances); R's 0.02 m^2 is used only
 // for a fix whose covariance type is UNKNOWN.
@@ -76,7 +76,7 @@
   (sin(x[8]) * x[0] + cos(x[8]) * x[1] + x[12] + x[10])
 #undef MEASUREMENT_NOISE_COVARIANCE
 #define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((1e-4)(4e-4)(1.25e-5)(0.02)(0.02))
-#define GPS_COVARIANCE_SCALE 0.01
+#define GPS_COVARIANCE_SCALE 0.003
 #define GPS_ERROR_Q (GPS_ERROR_SIGMA * GPS_ERROR_SIGMA * (1 - exp(-2 * T / GPS_ERROR_TAU)))
 #undef PROCESS_NOISE_COVARIANCE
 #define PROCESS_NOISE_COVARIANCE \

@@ -28,7 +28,7 @@ constexpr long kEastInput = 3, kNorthInput = 4;
 constexpr double kLat = 43.5, kLon = 7.25, kAlt = 272.4;
 // The header's GPS_COVARIANCE_SCALE: the filter gets this part of each fix's covariance (the
 // white part; the header has the receiver's slow error as a state).
-constexpr double kScale = 0.01;
+constexpr double kScale = 0.003;
 
 using sf_test::feed;
 using sf_test::readerOf;
