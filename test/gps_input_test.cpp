@@ -3,8 +3,9 @@
 // on serialized messages. A fix without a valid status is dropped and counted, the first valid
 // fix is the datum, a fix 100 m north (WGS84 meridian radius of curvature at its height) is
 // 100 m along the odom axis the yaw offset says, with the fix's own variances turned alike
-// and scaled by the header's GPS_COVARIANCE_SCALE, and a fix whose covariance type is unknown falls back to the header's R, counted; a fix of
-// known covariance type gives east and north together with their covariance in the odom frame.
+// and scaled by the header's GPS_COVARIANCE_SCALE, and a fix whose covariance type is unknown falls
+// back to the header's R, counted; a fix of known covariance type gives east and north together
+// with their covariance in the odom frame.
 #include <cmath>
 #include <cstdint>
 #include <optional>

@@ -116,10 +116,11 @@ BOOST_PP_SEQ_FOR_EACH_I(SF_GPS_ENTRY, ~, DERIVED_INPUTS)
 #if defined(GPS_COVARIANCE_SCALE)
 namespace gps_detail {
 inline constexpr auto kConfiguredCovarianceScale = GPS_COVARIANCE_SCALE;
-static_assert(std::is_arithmetic<std::remove_const_t<decltype(kConfiguredCovarianceScale)>>::value &&
-                  kConfiguredCovarianceScale > 0 && kConfiguredCovarianceScale < 1e100,
-              "GPS_COVARIANCE_SCALE: expected a finite factor > 0 on each fix's covariance, found "
-              "'" SF_PP_STR(GPS_COVARIANCE_SCALE) "'");
+static_assert(
+    std::is_arithmetic<std::remove_const_t<decltype(kConfiguredCovarianceScale)>>::value &&
+        kConfiguredCovarianceScale > 0 && kConfiguredCovarianceScale < 1e100,
+    "GPS_COVARIANCE_SCALE: expected a finite factor > 0 on each fix's covariance, found "
+    "'" SF_PP_STR(GPS_COVARIANCE_SCALE) "'");
 }  // namespace gps_detail
 /// GPS_COVARIANCE_SCALE: the factor on each fix's covariance (see above).
 constexpr double kGpsCovarianceScale = static_cast<double>(gps_detail::kConfiguredCovarianceScale);

@@ -130,8 +130,9 @@ void readGpsInput(const Message& msg, MessageSink& sink, GpsValues& values) {
 }
 
 /// Hands one fix's GPS values to the sink: with a known covariance type together with their
-/// covariances in the odom frame (times GPS_COVARIANCE_SCALE) (the fusion core carries them to the filter's R, correlation
-/// of x and y included); otherwise each alone, with the header's R (counted).
+/// covariances in the odom frame (times GPS_COVARIANCE_SCALE) (the fusion core carries them to the
+/// filter's R, correlation of x and y included); otherwise each alone, with the header's R
+/// (counted).
 inline void sendGps(const GpsValues& v, MessageSink& sink, double now, double stamp) {
   if (v.count == 0) return;
   const std::optional<std::array<double, 9>> odom = sink.gps().odomCovariance(*v.fix);
