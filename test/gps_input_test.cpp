@@ -2,9 +2,10 @@
 // shipped header config/husky_skid_steer_gps.h generates: its NodeDefinition's reader of /fix
 // on serialized messages. A fix without a valid status is dropped and counted, the first valid
 // fix is the datum, a fix 100 m north (WGS84 meridian radius of curvature at its height) is
-// 100 m along the odom axis the yaw offset says, with the fix's own variances turned alike,
-// and a fix whose covariance type is unknown falls back to the header's R, counted; a fix of
-// known covariance type gives east and north together with their covariance in the odom frame.
+// 100 m along the odom axis the yaw offset says, with the fix's own variances turned alike
+// and scaled by the header's GPS_COVARIANCE_SCALE, and a fix whose covariance type is unknown falls
+// back to the header's R, counted; a fix of known covariance type gives east and north together
+// with their covariance in the odom frame.
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -26,6 +27,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr long kEastInput = 3, kNorthInput = 4;
 constexpr double kLat = 43.5, kLon = 7.25, kAlt = 272.4;
+// The header's GPS_COVARIANCE_SCALE: the filter gets this part of each fix's covariance (the
+// white part; the header has the receiver's slow error as a state).
+constexpr double kScale = 0.003;
 
 using sf_test::feed;
 using sf_test::readerOf;
@@ -82,8 +86,8 @@ TEST(GpsInput, StatusDatumYawOffsetAndCovariance) {
   EXPECT_EQ(sink.values[0].input, kEastInput);
   EXPECT_NEAR(sink.values[0].value, 100.0, 1e-3);  // odom x: north
   EXPECT_NEAR(sink.values[1].value, 0.0, 1e-3);
-  EXPECT_NEAR(*sink.values[0].variance, 1.21, 1e-12);  // the north variance
-  EXPECT_NEAR(*sink.values[1].variance, 0.81, 1e-12);
+  EXPECT_NEAR(*sink.values[0].variance, kScale * 1.21, 1e-14);  // the north variance
+  EXPECT_NEAR(*sink.values[1].variance, kScale * 0.81, 1e-14);
 
   sink.values.clear();
   feed(fix, navSatFix(kLat, 4.0, 0, 0), sink, 0.0);  // COVARIANCE_TYPE_UNKNOWN: the header's R
@@ -114,9 +118,9 @@ TEST(GpsInput, CovarianceOfEastAndNorthReachesTheSinkTurned) {
   ASSERT_EQ(sink.blocks.size(), 1u);
   const sf_test::Block& b = sink.blocks[0];
   ASSERT_EQ(b.inputs, (std::vector<long>{kEastInput, kNorthInput}));
-  EXPECT_NEAR(b.covariance[0], c * c + c * s + 2 * s * s, 1e-12);
-  EXPECT_NEAR(b.covariance[3], s * s - c * s + 2 * c * c, 1e-12);
-  EXPECT_NEAR(b.covariance[1], c * s + 0.5 * (c * c - s * s), 1e-12);
+  EXPECT_NEAR(b.covariance[0], kScale * (c * c + c * s + 2 * s * s), 1e-14);
+  EXPECT_NEAR(b.covariance[3], kScale * (s * s - c * s + 2 * c * c), 1e-14);
+  EXPECT_NEAR(b.covariance[1], kScale * (c * s + 0.5 * (c * c - s * s)), 1e-14);
   EXPECT_EQ(b.covariance[1], b.covariance[2]);
   // The values: 100 m north is x = 100 s, y = 100 c.
   ASSERT_EQ(sink.values.size(), 2u);
@@ -130,9 +134,9 @@ TEST(GpsInput, CovarianceOfEastAndNorthReachesTheSinkTurned) {
   known.header.stamp = ros::Time(3.0);
   feed(fix, known, sink, 0.0);
   ASSERT_EQ(sink.blocks.size(), 2u);
-  EXPECT_NEAR(sink.blocks[1].covariance[0], c * c + 2 * s * s, 1e-12);
-  EXPECT_NEAR(sink.blocks[1].covariance[3], s * s + 2 * c * c, 1e-12);
-  EXPECT_NEAR(sink.blocks[1].covariance[1], c * s, 1e-12);
+  EXPECT_NEAR(sink.blocks[1].covariance[0], kScale * (c * c + 2 * s * s), 1e-14);
+  EXPECT_NEAR(sink.blocks[1].covariance[3], kScale * (s * s + 2 * c * c), 1e-14);
+  EXPECT_NEAR(sink.blocks[1].covariance[1], kScale * c * s, 1e-14);
   EXPECT_EQ(sink.covarianceFallbacks(kEastInput), 0u);
 }
 

@@ -169,7 +169,7 @@ class EvaluateHoldoutTest(unittest.TestCase):
                                 gh.replay_args(["odom:=/wheels/odom"],
                                                [["0", "0", "0.2", "0", "0", "0", "base_link",
                                                  "imu"]]),
-                                None)
+                                None, yaw_state=None)
         result = gh.evaluate_holdout(self.bag, "/nowhere", self.tmp.name, 5, 10.0, setup)
         transform = ["--static-transform", "0", "0", "0.2", "0", "0", "0", "base_link", "imu"]
         self.assertEqual(self.calls[0], ("sf_my_odom", ["odom:=/wheels/odom"] + transform))
@@ -190,7 +190,7 @@ class EvaluateHoldoutTest(unittest.TestCase):
         params = os.path.join(self.tmp.name, "user.yaml")
         with open(params, "w") as f:
             f.write("max_measurement_lag: 0.05\ngps_yaw_offset: 1.0\n")
-        setup = gh.HoldoutSetup(fix_topic="/gps/fix", params=params)
+        setup = gh.HoldoutSetup(fix_topic="/gps/fix", params=params, yaw_state=None)
         gh.evaluate_holdout(self.bag, "/nowhere", self.tmp.name, 5, 10.0, setup)
         self.assertEqual(self.calls[0][1], ["--params", params])
         with open(os.path.join(self.tmp.name, "gps.yaml")) as f:
@@ -198,6 +198,36 @@ class EvaluateHoldoutTest(unittest.TestCase):
         self.assertEqual(written[0], "max_measurement_lag: 0.05")
         self.assertEqual(len(written), 2)
         self.assertAlmostEqual(float(written[1].split(":")[1]), 0.0, places=3)
+
+    def test_yaw_and_error_states_give_the_predicted_fix_without_a_fit(self):
+        # The GPS node's CSV holds its yaw state (x8, 90 deg: the odom x axis points north)
+        # and the fixes' offset (x9 + x11 = 0.3 m east, x10 + x12 = -0.4 m north: the slow
+        # error and the start about the datum, the header's states); its pose runs along odom
+        # -y, i.e. east, 0.5 m ahead of the robot. Its position in ENU is 0.5 m east of each
+        # fix, its predicted fix 0.8 m east and 0.4 m south. Nothing is written for
+        # ~gps_yaw_offset and the replay gets no --params.
+        def state_replay(exe, bag, csv_path, extra=()):
+            self.calls.append((os.path.basename(exe), list(extra)))
+            with open(csv_path, "w") as f:
+                f.write("time,pose_x,pose_y,pose_heading,x8,x9,x10,x11,x12\n")
+                for k in range(3000):
+                    t = 100.066 + 0.01 * k
+                    f.write("%.3f,0,%.6f,0,%.9f,0.1,-0.5,0.2,0.1\n"
+                            % (t, -(t - 100.0 + 0.5), math.pi / 2))
+            return "summary"
+
+        gh.pioneer_nodes.replay = state_replay
+        setup = gh.HoldoutSetup("sf_my_gps", "sf_my_odom", "/gps/fix")
+        result = gh.evaluate_holdout(self.bag, "/nowhere", self.tmp.name, 5, 10.0, setup)
+        self.assertFalse(os.path.exists(os.path.join(self.tmp.name, "gps.yaml")))
+        self.assertEqual(self.calls[1][1], [])
+        self.assertAlmostEqual(result["yaw_state"], math.pi / 2)
+        by_label = {r["label"]: r for r in result["rows"]}
+        predicted = by_label["GPS node, predicted fix (`sf_my_gps`)"]
+        self.assertAlmostEqual(predicted["rmse"], math.hypot(0.8, 0.4), delta=0.01)
+        self.assertAlmostEqual(by_label["GPS node, position (`sf_my_gps`)"]["rmse"], 0.5,
+                               delta=0.01)
+        self.assertIsNone(predicted["truth_rmse"])
 
     def test_bad_options_are_refused(self):
         with self.assertRaises(ValueError):

@@ -16,6 +16,9 @@ path per seed, stops, curves, back to the start) and records what a typical robo
   tf                 tf2_msgs/TFMessage         50 Hz   odom -> base_link      the wheel odometry's
   tf_static          tf2_msgs/TFMessage         once    base_link -> imu_link  the IMU's mount (latched)
   ground_truth/pose  geometry_msgs/PoseStamped  50 Hz   odom                   the true pose
+  fix (--gps only)   sensor_msgs/NavSatFix      2.5 Hz  base_link              the true position
+                                                                              in ENU with a slow
+                                                                              and a white error
 
 The IMU is mounted on its side (roll 90 deg, yaw 90 deg: its y axis is the robot's z axis),
 so the yaw rate appears on angular_velocity.y: only the rotation by tf2 gives the filter a
@@ -27,6 +30,11 @@ of the base-frame yaw rate is its component along the robot's z axis, printed at
 --imu-mount level mounts the IMU with base_link's axes (the yaw rate on angular_velocity.z, as
 on the real Husky recording that config/husky_skid_steer_odom_imu.h reads); --no-stops drives
 a path that is never at rest (it starts and ends in motion and does not return to the start).
+
+--gps adds a GPS receiver (gps_sim.py: the odom frame's x axis at --gps-heading in ENU, a
+Gauss-Markov error of --gps-sigma and --gps-tau plus --gps-white per axis, the declared
+--gps-declared; defaults as measured on the real Husky recording's fixes), from its own
+random stream: without --gps the bag is byte for byte what it was.
 
 Realistic errors (sensor_errors.py; also --odom-separation-scale, a driver with a wrong wheel
 separation) are off by default; --realistic husky switches on a calibrated set.
@@ -44,6 +52,7 @@ from nav_msgs.msg import Odometry  # noqa: E402
 from sensor_msgs.msg import Imu  # noqa: E402
 from tf2_msgs.msg import TFMessage  # noqa: E402
 
+import gps_sim  # noqa: E402  (--gps)
 import pioneer_sim  # noqa: E402  (teleoperation script and true motion)
 import sensor_errors  # noqa: E402
 import simbag  # noqa: E402
@@ -59,6 +68,7 @@ GYRO_RES = math.radians(1.0 / 131.0)        # 16-bit, +-250 deg/s
 ACCEL_STD = 0.05                            # [m/s^2]
 ACCEL_RES = G / 16384.0                     # 16-bit, +-2 g
 GT_PERIOD_MS = 20                           # ground truth at 50 Hz (phase 0)
+GPS_PHASE_MS = 5                            # --gps: the first fix 5 ms after the start
 MOUNT_XYZ = (0.12, 0.0, 0.18)               # IMU position on base_link [m]
 MOUNT_RPY = (math.pi / 2, 0.0, math.pi / 2)  # IMU orientation on base_link (tf2 RPY)
 MOUNTS = {"side": MOUNT_RPY,                # --imu-mount: the default, yaw rate on y
@@ -107,7 +117,7 @@ def transform(bag, t_ns, parent, child, xyz, quat):
     return t
 
 
-def build_bag(seed, truth, tele, gyro_bias, start_s, profile=None, mount_rpy=MOUNT_RPY):
+def build_bag(seed, truth, tele, gyro_bias, start_s, profile=None, mount_rpy=MOUNT_RPY, gps=None):
     bag = simbag.BagBuilder(start_s)
     states = truth.log
     n_ms = len(tele.cmds) * pioneer_sim.TICK_MS
@@ -223,6 +233,11 @@ def build_bag(seed, truth, tele, gyro_bias, start_s, profile=None, mount_rpy=MOU
         pose.pose.position.x, pose.pose.position.y = x, y
         pose.pose.orientation.z, pose.pose.orientation.w = pioneer_sim.quaternion_z(th)
         bag.add("ground_truth/pose", pose, k * ms)
+    if gps is not None:   # gps_sim.py: the fixes from their own stream
+        for k, _, _, _, lat, lon, alt in gps_sim.fixes(gps, simbag.rng("diff_drive", seed, "gps"),
+                                                       states, n_ms, GPS_PHASE_MS):
+            msg = gps_sim.fix_message(gps, bag.next_seq("fix"), bag.stamp(k * ms), lat, lon, alt)
+            bag.add("fix", msg, k * ms)
     return bag, (ox, oy, odom_heading_end)
 
 
@@ -234,6 +249,32 @@ def parse_vector(text):
     if len(values) != 3:
         raise argparse.ArgumentTypeError("expected X,Y,Z, e.g. 0.004,0.012,-0.006")
     return values
+
+
+def add_gps_arguments(parser):
+    g = parser.add_argument_group("GPS (tools/sim/gps_sim.py; off by default)")
+    g.add_argument("--gps", action="store_true",
+                   help="record sensor_msgs/NavSatFix on fix (APPROXIMATED covariance)")
+    g.add_argument("--gps-rate", type=float, default=gps_sim.DEFAULT_RATE_HZ, help="[Hz]")
+    g.add_argument("--gps-heading", type=float, default=gps_sim.DEFAULT_HEADING_DEG,
+                   help="heading of the odom x axis in ENU [deg, counter-clockwise from east]")
+    g.add_argument("--gps-sigma", type=float, default=gps_sim.DEFAULT_SIGMA,
+                   help="standard deviation of the slow (Gauss-Markov) error per axis [m]")
+    g.add_argument("--gps-tau", type=float, default=gps_sim.DEFAULT_TAU,
+                   help="time constant of the slow error [s]")
+    g.add_argument("--gps-white", type=float, default=gps_sim.DEFAULT_WHITE,
+                   help="standard deviation of the white error per axis [m]")
+    g.add_argument("--gps-declared", type=float, default=gps_sim.DEFAULT_DECLARED,
+                   help="the standard deviation the fix declares per horizontal axis [m]")
+
+
+def gps_model(args):
+    """The gps_sim.GpsModel of the options, None without --gps."""
+    if not args.gps:
+        return None
+    return gps_sim.GpsModel(heading_deg=args.gps_heading, rate_hz=args.gps_rate,
+                            sigma=args.gps_sigma, tau=args.gps_tau, white=args.gps_white,
+                            declared=args.gps_declared)
 
 
 def main(argv=None):
@@ -254,12 +295,14 @@ def main(argv=None):
     parser.add_argument("--imu-mount", choices=sorted(MOUNTS), default="side",
                         help="side: roll and yaw 90 deg, the yaw rate on angular_velocity.y "
                         "(default); level: the IMU's axes are base_link's, the yaw rate on z")
+    add_gps_arguments(parser)
     sensor_errors.add_arguments(parser)
     args = parser.parse_args(argv)
     if args.duration <= 0 or abs(args.duration * 10 - round(args.duration * 10)) > 1e-9:
         parser.error("--duration must be positive and a multiple of 0.1 s")
     try:
         profile = sensor_errors.profile_from_args(args)
+        gps = gps_model(args)
     except Exception as exc:  # noqa: BLE001 - report bad option values as usage errors
         parser.error(str(exc))
 
@@ -269,7 +312,7 @@ def main(argv=None):
     if not args.no_stops and math.hypot(x, y) > pioneer_sim.LOOP_TOLERANCE:
         raise SystemExit("loop not closed: final true pose (%.4f, %.4f) m" % (x, y))
     mount_rpy = MOUNTS[args.imu_mount]
-    bag, odom_end = build_bag(args.seed, truth, tele, args.gyro_bias, args.start, profile, mount_rpy)
+    bag, odom_end = build_bag(args.seed, truth, tele, args.gyro_bias, args.start, profile, mount_rpy, gps)
     bag.write(args.out, args.compression)
     if profile.active:
         print("diff_drive errors: %s" % profile.summary())

@@ -17,6 +17,11 @@
 //     static constexpr int axis;              //   0 EAST (odom x), 1 NORTH (odom y), 2 UP (z)
 //     template <class Message> static sf_filter::gps::Fix fix(const Message&); };
 //
+// GPS_COVARIANCE_SCALE (optional, default 1) multiplies the covariance of every fix before it
+// reaches the filter: a header that models the receiver's slowly changing error as a state
+// (config/husky_skid_steer_gps.h) gives the filter only the white part of the error the fix
+// declares. Generates sf_config::kGpsCovarianceScale; checked: a number > 0.
+//
 // Checked at compile time, each reported once and naming the macro and the entry: the message
 // is a NavSatFix (latitude, longitude, altitude, status.status, position_covariance,
 // position_covariance_type), the mode is ABSOLUTE, and the input has no other variance source
@@ -106,6 +111,21 @@ constexpr int sameAxisBefore(int k) {
 
 #if SF_DI_OK
 BOOST_PP_SEQ_FOR_EACH_I(SF_GPS_ENTRY, ~, DERIVED_INPUTS)
+#endif
+
+#if defined(GPS_COVARIANCE_SCALE)
+namespace gps_detail {
+inline constexpr auto kConfiguredCovarianceScale = GPS_COVARIANCE_SCALE;
+static_assert(
+    std::is_arithmetic<std::remove_const_t<decltype(kConfiguredCovarianceScale)>>::value &&
+        kConfiguredCovarianceScale > 0 && kConfiguredCovarianceScale < 1e100,
+    "GPS_COVARIANCE_SCALE: expected a finite factor > 0 on each fix's covariance, found "
+    "'" SF_PP_STR(GPS_COVARIANCE_SCALE) "'");
+}  // namespace gps_detail
+/// GPS_COVARIANCE_SCALE: the factor on each fix's covariance (see above).
+constexpr double kGpsCovarianceScale = static_cast<double>(gps_detail::kConfiguredCovarianceScale);
+#else
+constexpr double kGpsCovarianceScale = 1.0;
 #endif
 
 /// How TOPICS_IN entry I is read when it is a GPS input (see above).

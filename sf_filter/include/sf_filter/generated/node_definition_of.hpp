@@ -130,8 +130,9 @@ void readGpsInput(const Message& msg, MessageSink& sink, GpsValues& values) {
 }
 
 /// Hands one fix's GPS values to the sink: with a known covariance type together with their
-/// covariances in the odom frame (the fusion core carries them to the filter's R, correlation
-/// of x and y included); otherwise each alone, with the header's R (counted).
+/// covariances in the odom frame (times GPS_COVARIANCE_SCALE) (the fusion core carries them to the
+/// filter's R, correlation of x and y included); otherwise each alone, with the header's R
+/// (counted).
 inline void sendGps(const GpsValues& v, MessageSink& sink, double now, double stamp) {
   if (v.count == 0) return;
   const std::optional<std::array<double, 9>> odom = sink.gps().odomCovariance(*v.fix);
@@ -150,7 +151,8 @@ inline void sendGps(const GpsValues& v, MessageSink& sink, double now, double st
       for (int c = 0; c < v.count; ++c) {
         const auto j = static_cast<std::size_t>(c);
         block[i * static_cast<std::size_t>(v.count) + j] =
-            (*odom)[static_cast<std::size_t>(v.axes[i] * 3 + v.axes[j])];
+            (*odom)[static_cast<std::size_t>(v.axes[i] * 3 + v.axes[j])] *
+            sf_config::kGpsCovarianceScale;
       }
     }
     sink.measurementBlock(v.inputs.data(), values.data(), block.data(), v.count, now, stamp);
@@ -159,7 +161,10 @@ inline void sendGps(const GpsValues& v, MessageSink& sink, double now, double st
   for (int k = 0; k < v.count; ++k) {
     const gps::GpsSample& s = v.samples[static_cast<std::size_t>(k)];
     if (s.covarianceUnknown) sink.countCovarianceFallback(v.inputs[static_cast<std::size_t>(k)]);
-    sink.measurement(v.inputs[static_cast<std::size_t>(k)], now, s.value, s.variance, stamp);
+    const std::optional<double> variance =
+        s.variance ? std::optional<double>(*s.variance * sf_config::kGpsCovarianceScale)
+                   : std::nullopt;  // the header's R is the white part already
+    sink.measurement(v.inputs[static_cast<std::size_t>(k)], now, s.value, variance, stamp);
   }
 }
 
