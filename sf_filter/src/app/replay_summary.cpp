@@ -110,6 +110,12 @@ void printReplaySummary(const ReplayCommand& c, const NodeDefinition& def, const
               << " segments) in " << s.smoothingSeconds << " s, " << s.smoothingBytesPerPeriod
               << " bytes per period" << std::endl;
   }
+  if (s.batch) {
+    std::cout << name << ": batch MAP track: " << s.batch->iterations << " iterations, cost "
+              << s.batch->cost << " (filtered track " << s.batch->initialCost << "), "
+              << (s.batch->converged ? "converged" : "NOT converged") << ", " << s.batch->halvings
+              << " step halvings" << std::endl;
+  }
   if (c.options.smoothLag > 0.0) {
     std::cout << name << ": fixed-lag smoother, lag " << s.lagPeriods << " periods ("
               << c.options.smoothLag << " s asked), " << s.lagBytes << " bytes held" << std::endl;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include <Eigen/Core>
 
@@ -24,6 +25,15 @@ PeriodBelief viewOf(const X& x, const P& covariance) {
   return {Eigen::Map<const Eigen::VectorXd>(x.data(), n),
           Eigen::Map<const Eigen::MatrixXd>(covariance.data(), n, n)};
 }
+
+/// The batch MAP smoother's outcome (sf_estimation/batch_map_smoother.hpp's report).
+struct BatchOutcome {
+  int iterations = 0;        ///< the most any segment took
+  int halvings = 0;          ///< step halvings of the safeguard
+  double initialCost = 0.0;  ///< the cost of the filtered track
+  double cost = 0.0;         ///< the cost of the smoothed track
+  bool converged = false;
+};
 
 class PeriodSmoother {
  public:
@@ -45,6 +55,8 @@ class PeriodSmoother {
   virtual PeriodBelief smoothed(std::size_t period) const = 0;
   /// Memory of one period: the record and its smoothed result.
   virtual std::size_t bytesPerPeriod() const = 0;
+  /// The batch smoother's outcome, valid after smooth(); nullopt for the RTS pass.
+  virtual std::optional<BatchOutcome> batchOutcome() const { return std::nullopt; }
 };
 
 }  // namespace sf_filter

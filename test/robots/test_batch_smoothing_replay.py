@@ -1,0 +1,163 @@
+"""The replay's batch MAP track (`--replay BAG --smooth batch`, doc/smoothing.md): after the
+forward run, the maximum-a-posteriori track of the whole recording by Gauss-Newton (the
+iterated extended Kalman smoother), written in the smoothed_* columns that --smooth writes.
+
+References: for a linear model the RTS smoother's track is the MAP track, so on
+config/soccer_kf.h (a KF) with bags/soccer_lost_vision_ideal.bag `--smooth batch` must equal
+`--smooth` to 1e-9 (relative to each value, with the column's largest magnitude as the floor
+for values near zero), after two iterations (the first exact, the second confirming). On
+config/diff_drive_odom_imu.h (an EKF) with bags/diff_drive_seed1.bag the RTS pass linearises
+each transition about the filtered estimate instead of iterating: the MAP track differs from it
+by a first-order error in the noise, measured MEASURED_GAP; both tracks are compared with the
+simulator's ground truth by tools/eval/evaluate.py. In both, the filtered columns are the plain
+replay's and the summary reports the iterations, the costs and convergence. A filter without a
+batch smoother (the particle filter) is refused.
+"""
+
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
+sys.path.insert(0, HERE)
+sys.dont_write_bytecode = True
+import evaluate  # noqa: E402
+from replay_helpers import built_lib_dir, read_rows, replay_exe  # noqa: E402
+
+SOCCER_BAG = os.path.join(REPO, "bags", "soccer_lost_vision_ideal.bag")
+DIFF_DRIVE_BAG = os.path.join(REPO, "bags", "diff_drive_seed1.bag")
+PIONEER_BAG = os.path.join(REPO, "bags", "pioneer_seed1.bag")
+POSE = ["pose_x", "pose_y", "pose_heading"]
+
+
+def run_three(node, bag, tmp):
+    """The plain, --smooth and --smooth batch replays of `bag`: their rows and the batch run."""
+    paths = [os.path.join(tmp, name + ".csv") for name in ("plain", "rts", "batch")]
+    replay_exe(node, bag, paths[0])
+    replay_exe(node, bag, paths[1], "--smooth")
+    proc = replay_exe(node, bag, paths[2], "--smooth", "batch")
+    return paths, proc
+
+
+def smoothed_keys(row):
+    return [k for k in row if k.startswith("smoothed_")]
+
+
+def summary_numbers(stdout):
+    """(iterations, cost, filtered cost, converged) of the summary's batch line."""
+    line = next(l for l in stdout.splitlines() if "batch MAP track:" in l)
+    words = line.replace(",", "").replace("(", "").replace(")", "").split()
+    iterations = int(words[words.index("iterations") - 1])
+    cost = float(words[words.index("cost") + 1])
+    filtered = float(words[words.index("track", words.index("cost")) + 1])
+    return iterations, cost, filtered, "NOT converged" not in line
+
+
+class BatchSmoothingCase(unittest.TestCase):
+    """Shared checks; subclasses set NODE and BAG."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory(prefix="sf_batch_smoothing_test_")
+        paths, cls.proc = run_three(cls.NODE, cls.BAG, cls.tmp.name)
+        cls.plain_path, cls.rts_path, cls.batch_path = paths
+        cls.plain, cls.rts, cls.batch = (read_rows(p) for p in paths)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def check_filtered_columns_are_the_plain_replay(self):
+        with open(self.plain_path) as a, open(self.batch_path) as b:
+            plain, batch = a.read().splitlines(), b.read().splitlines()
+        self.assertEqual(len(plain), len(batch))
+        columns = plain[0].count(",") + 1
+        self.assertEqual(batch[0].split(",")[columns], "smoothed_x0")
+        for p, s in zip(plain, batch):
+            self.assertEqual(",".join(s.split(",")[:columns]), p)
+        self.assertIn("smoothed %d periods (1 segments)" % (len(plain) - 1), self.proc.stdout)
+
+
+class LinearBatchSmoothingTest(BatchSmoothingCase):
+    NODE, BAG = "sf_soccer_kf", SOCCER_BAG
+
+    def test_filtered_columns_are_the_plain_replay(self):
+        self.check_filtered_columns_are_the_plain_replay()
+
+    def test_batch_track_is_the_rts_track(self):
+        keys = smoothed_keys(self.rts[0])
+        self.assertGreater(len(keys), 10)
+        floor = {k: max(abs(r[k]) for r in self.rts) for k in keys}
+        worst = 0.0
+        for rts, batch in zip(self.rts, self.batch):
+            for k in keys:
+                worst = max(worst, abs(batch[k] - rts[k]) / max(abs(rts[k]), 1e-3 * floor[k]))
+        self.assertLess(worst, 1e-9)
+        # ... and not the filtered one (the comparison is not vacuous).
+        moved = max(abs(r["smoothed_x0"] - r["x0"]) for r in self.batch)
+        self.assertGreater(moved, 1e-3)
+
+    def test_two_iterations_and_a_lower_cost(self):
+        iterations, cost, filtered, converged = summary_numbers(self.proc.stdout)
+        self.assertEqual(iterations, 2)
+        self.assertTrue(converged)
+        self.assertLess(cost, filtered)
+
+
+class NonlinearBatchSmoothingTest(BatchSmoothingCase):
+    NODE, BAG = "sf_diff_drive_odom_imu", DIFF_DRIVE_BAG
+
+    def test_filtered_columns_are_the_plain_replay(self):
+        self.check_filtered_columns_are_the_plain_replay()
+
+    def test_converged_to_a_lower_cost(self):
+        iterations, cost, filtered, converged = summary_numbers(self.proc.stdout)
+        self.assertTrue(converged)
+        self.assertGreater(iterations, 2)
+        self.assertLess(cost, filtered)
+
+    def test_gap_to_the_rts_track(self):
+        """Largest |MAP - RTS| of each state in smoothed standard deviations."""
+        n = len([k for k in self.batch[0] if k.startswith("smoothed_var")])
+        gaps = []
+        for i in range(n):
+            gaps.append(max(abs(b["smoothed_x%d" % i] - r["smoothed_x%d" % i])
+                            / math.sqrt(b["smoothed_var%d" % i]) for b, r in zip(self.batch, self.rts)))
+        print("\nMAP - RTS gap in smoothed std. deviations: %s" % ", ".join("%.3g" % g for g in gaps))
+        self.assertLess(max(gaps), GAP_BOUND)
+        self.assertGreater(max(gaps), 0.0)
+
+    def test_accuracy_against_the_truth(self):
+        truth = evaluate.load_truth(self.BAG)
+        rmse = {}
+        for label, prefix, path in (("filtered", "", self.batch_path),
+                                    ("rts", "smoothed_", self.rts_path),
+                                    ("batch", "smoothed_", self.batch_path)):
+            rmse[label] = evaluate.evaluate(
+                evaluate.load_result_csv(path, [prefix + c for c in POSE]), truth).rmse_pos
+        print("\nposition RMSE [m]: %s" % ", ".join("%s %.4f" % kv for kv in sorted(rmse.items())))
+        self.assertLess(rmse["batch"], rmse["filtered"])
+        self.assertLess(abs(rmse["batch"] - rmse["rts"]), RMSE_GAP_BOUND * rmse["rts"])
+
+
+class RefusalTest(unittest.TestCase):
+    def test_particle_filter_has_no_batch_smoother(self):
+        exe = os.path.join(built_lib_dir("sf_train_pf"), "sf_train_pf")
+        with tempfile.TemporaryDirectory(prefix="sf_batch_smoothing_test_") as tmp:
+            out = os.path.join(tmp, "pf.csv")
+            proc = subprocess.run([exe, "--replay", PIONEER_BAG, "--smooth", "batch", "--csv", out],
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                  universal_newlines=True, timeout=120)
+            self.assertNotEqual(proc.returncode, 0)
+            self.assertIn("--smooth batch: the", proc.stderr)
+            self.assertIn("has no batch smoother", proc.stderr)
+            self.assertFalse(os.path.exists(out))
+
+
+if __name__ == "__main__":
+    unittest.main()
