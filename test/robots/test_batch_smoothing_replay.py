@@ -8,8 +8,9 @@ config/soccer_kf.h (a KF) with bags/soccer_lost_vision_ideal.bag `--smooth batch
 for values near zero), after two iterations (the first exact, the second confirming). On
 config/diff_drive_odom_imu.h (an EKF) with bags/diff_drive_seed1.bag the RTS pass linearises
 each transition about the filtered estimate instead of iterating: the MAP track differs from it
-by a first-order error in the noise, measured MEASURED_GAP; both tracks are compared with the
-simulator's ground truth by tools/eval/evaluate.py. In both, the filtered columns are the plain
+by a first-order error in the noise, measured as 0.0048 smoothed standard deviations at most
+(7.9e-5 m of position); both tracks are compared with the simulator's ground truth by
+tools/eval/evaluate.py: position RMSE 0.0263 m filtered, 0.01732 m RTS, 0.01733 m MAP. In both, the filtered columns are the plain
 replay's and the summary reports the iterations, the costs and convergence. A filter without a
 batch smoother (the particle filter) is refused.
 """
@@ -33,6 +34,14 @@ SOCCER_BAG = os.path.join(REPO, "bags", "soccer_lost_vision_ideal.bag")
 DIFF_DRIVE_BAG = os.path.join(REPO, "bags", "diff_drive_seed1.bag")
 PIONEER_BAG = os.path.join(REPO, "bags", "pioneer_seed1.bag")
 POSE = ["pose_x", "pose_y", "pose_heading"]
+# The EKF bag: MAP - RTS of any state at most 0.05 smoothed standard deviations (measured
+# 0.0048, the pose; the other states' transitions are linear and agree to 1e-12). The RTS
+# pass's linearisation error is of second order in the heading's spread, which is below
+# 0.025 rad there: a gap ten times the measured one would be a wrong step, not that error.
+GAP_BOUND = 0.05
+# ... and at least 1e-3 of a standard deviation: the iterations moved the track (a batch mode
+# that only ran the RTS pass would agree to 1e-12).
+MIN_GAP = 1e-3
 
 
 def run_three(node, bag, tmp):
@@ -124,13 +133,12 @@ class NonlinearBatchSmoothingTest(BatchSmoothingCase):
     def test_gap_to_the_rts_track(self):
         """Largest |MAP - RTS| of each state in smoothed standard deviations."""
         n = len([k for k in self.batch[0] if k.startswith("smoothed_var")])
-        gaps = []
-        for i in range(n):
-            gaps.append(max(abs(b["smoothed_x%d" % i] - r["smoothed_x%d" % i])
-                            / math.sqrt(b["smoothed_var%d" % i]) for b, r in zip(self.batch, self.rts)))
-        print("\nMAP - RTS gap in smoothed std. deviations: %s" % ", ".join("%.3g" % g for g in gaps))
-        self.assertLess(max(gaps), GAP_BOUND)
-        self.assertGreater(max(gaps), 0.0)
+        gaps = [max(abs(b["smoothed_x%d" % i] - r["smoothed_x%d" % i])
+                    / math.sqrt(b["smoothed_var%d" % i]) for b, r in zip(self.batch, self.rts))
+                for i in range(n)]
+        message = "MAP - RTS in smoothed std. deviations: " + ", ".join("%.3g" % g for g in gaps)
+        self.assertLess(max(gaps), GAP_BOUND, message)
+        self.assertGreater(max(gaps), MIN_GAP, message)
 
     def test_accuracy_against_the_truth(self):
         truth = evaluate.load_truth(self.BAG)
@@ -140,9 +148,11 @@ class NonlinearBatchSmoothingTest(BatchSmoothingCase):
                                     ("batch", "smoothed_", self.batch_path)):
             rmse[label] = evaluate.evaluate(
                 evaluate.load_result_csv(path, [prefix + c for c in POSE]), truth).rmse_pos
-        print("\nposition RMSE [m]: %s" % ", ".join("%s %.4f" % kv for kv in sorted(rmse.items())))
-        self.assertLess(rmse["batch"], rmse["filtered"])
-        self.assertLess(abs(rmse["batch"] - rmse["rts"]), RMSE_GAP_BOUND * rmse["rts"])
+        message = "position RMSE [m]: " + ", ".join("%s %.5f" % kv for kv in sorted(rmse.items()))
+        self.assertLess(rmse["batch"], 0.75 * rmse["filtered"], message)  # measured 0.66
+        # The two tracks' RMSEs differ by at most the RMS of their difference (triangle
+        # inequality), 3.8e-5 m measured: 1 % of the RMSE is 1.7e-4 m.
+        self.assertLess(abs(rmse["batch"] - rmse["rts"]), 0.01 * rmse["rts"], message)
 
 
 class RefusalTest(unittest.TestCase):
