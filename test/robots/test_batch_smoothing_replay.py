@@ -4,13 +4,14 @@ iterated extended Kalman smoother), written in the smoothed_* columns that --smo
 
 References: for a linear model the RTS smoother's track is the MAP track, so on
 config/soccer_kf.h (a KF) with bags/soccer_lost_vision_ideal.bag `--smooth batch` must equal
-`--smooth` to 1e-9 (relative to each value, with the column's largest magnitude as the floor
-for values near zero), after two iterations (the first exact, the second confirming). On
-config/diff_drive_odom_imu.h (an EKF) with bags/diff_drive_seed1.bag the RTS pass linearises
-each transition about the filtered estimate instead of iterating: the MAP track differs from it
-by a first-order error in the noise, measured as 0.0048 smoothed standard deviations at most
-(7.9e-5 m of position); both tracks are compared with the simulator's ground truth by
-tools/eval/evaluate.py: position RMSE 0.0263 m filtered, 0.01732 m RTS, 0.01733 m MAP. In both, the filtered columns are the plain
+`--smooth` to 1e-9 relative (with 1e-3 of the column's largest magnitude as the floor for
+values near zero; measured 1.5e-11), after two iterations (the first exact, the second
+confirming). On config/diff_drive_odom_imu.h (an EKF) with bags/diff_drive_seed1.bag the RTS
+pass linearises each transition about the filtered estimate instead of iterating: the MAP
+track differs from it by an error of first order in the noise (in standard deviations),
+measured as 0.0048 smoothed standard deviations at most (7.9e-5 m of position); both tracks
+are compared with the simulator's ground truth by tools/eval/evaluate.py (position RMSE
+0.0263 m filtered, 0.01732 m RTS, 0.01733 m MAP). In both, the filtered columns are the plain
 replay's and the summary reports the iterations, the costs and convergence. A filter without a
 batch smoother (the particle filter) is refused.
 """
@@ -35,9 +36,11 @@ DIFF_DRIVE_BAG = os.path.join(REPO, "bags", "diff_drive_seed1.bag")
 PIONEER_BAG = os.path.join(REPO, "bags", "pioneer_seed1.bag")
 POSE = ["pose_x", "pose_y", "pose_heading"]
 # The EKF bag: MAP - RTS of any state at most 0.05 smoothed standard deviations (measured
-# 0.0048, the pose; the other states' transitions are linear and agree to 1e-12). The RTS
-# pass's linearisation error is of second order in the heading's spread, which is below
-# 0.025 rad there: a gap ten times the measured one would be a wrong step, not that error.
+# 0.0048, the pose; the other states' transitions are linear and agree to 1e-12). In standard
+# deviations the RTS pass's error is of first order in the noise (test_rts_smoother.cpp: 0.45
+# on its unicycle, 0.045 with the noise ten times smaller); the heading, whose spread makes the
+# transition nonlinear, has a smoothed standard deviation below 0.025 rad here, so a gap ten
+# times the measured one would be a wrong step, not that error.
 GAP_BOUND = 0.05
 # ... and at least 1e-3 of a standard deviation: the iterations moved the track (a batch mode
 # that only ran the RTS pass would agree to 1e-12).
