@@ -39,9 +39,8 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Cholesky>
-
 #include "sf_estimation/angles.hpp"
+#include "sf_estimation/batch_map_step.hpp"
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/extended_kalman_filter.hpp"
 #include "sf_estimation/jacobian.hpp"
@@ -51,6 +50,7 @@
 #include "sf_estimation/measurement_noise.hpp"
 #include "sf_estimation/rts_smoother.hpp"
 #include "sf_estimation/rts_step.hpp"
+#include "sf_estimation/small_products.hpp"
 #include "sf_estimation/types.hpp"
 #include "sf_estimation/unscented_kalman_filter.hpp"
 
@@ -91,9 +91,14 @@ struct LinearStateSpace {
   Matrix<N, L> B;
   Matrix<M, N> H;
   void transition(const Vector<N>& x, const Vector<L>& u, Vector<N>& next) const {
-    next = A * x + B * u;
+    next.resize(x.size());
+    multiply<Store::Assign>(A, x, next);
+    multiply<Store::Add>(B, u, next);
   }
-  void observation(const Vector<N>& x, Vector<M>& z) const { z = H * x; }
+  void observation(const Vector<N>& x, Vector<M>& z) const {
+    z.resize(H.rows());
+    multiply<Store::Assign>(H, x, z);
+  }
   Index controlSize() const { return B.cols(); }
   void transitionJacobian(const Vector<N>&, const Vector<L>&, Matrix<N, N>& J) const { J = A; }
   void observationJacobian(const Vector<N>&, Matrix<M, N>& J) const { J = H; }
@@ -116,8 +121,7 @@ class BatchMapSmoother {
         R_(R),
         angleStates_(angleStates),
         angleMeasurements_(angleMeasurements),
-        options_(options),
-        noiseFactor_(Q) {
+        options_(options) {
     if (options_.maxIterations < 1 || !(options_.tolerance > 0.0) || options_.maxHalvings < 0) {
       throw ParameterError(
           "BatchMapSmoother: expected maxIterations >= 1, tolerance > 0, maxHalvings >= 0");
@@ -237,10 +241,10 @@ class BatchMapSmoother {
     model_.transition(about, u, out.x);
     Vector<N> offset = belief.x - about;
     angleStates_.wrap(offset);
-    out.x += F * offset;
+    multiply<Store::Add>(F, offset, out.x);
     angleStates_.wrap(out.x);
     propagateCovariance<N>(F, belief.P, Q_, out.P);
-    out.cross = belief.P * F.transpose();
+    multiply<Store::Assign, true>(belief.P, F, out.cross);
   }
 
   /// The correction of `belief` by the present rows of z with h linearised about `about`:
@@ -256,7 +260,7 @@ class BatchMapSmoother {
     angleMeasurements_.wrap(y);
     Vector<N> offset = belief.x - about;
     angleStates_.wrap(offset);
-    y -= H * offset;
+    multiply<Store::Subtract>(H, offset, y);
     neutraliseMissing(z, y, H);
     Matrix<M, M> R(m, m);
     effectiveMeasurementNoise(R_, z, R);
@@ -271,8 +275,7 @@ class BatchMapSmoother {
     const Index n = track[begin].size(), m = R_.rows();
     Vector<N> r = track[begin] - record[begin].belief.x;
     angleStates_.wrap(r);
-    const Eigen::LDLT<Matrix<N, N>> prior(record[begin].belief.P);
-    double sum = r.dot(prior.solve(r));
+    double sum = weightedSquare<N>(record[begin].belief.P, r);
     Vector<N> predicted(n);
     Vector<M> y(m);
     Matrix<M, M> R(m, m);
@@ -280,7 +283,7 @@ class BatchMapSmoother {
       model_.transition(track[k - 1], record[k].belief.u, predicted);
       r = track[k] - predicted;
       angleStates_.wrap(r);
-      sum += r.dot(noiseFactor_.solve(r));
+      sum += weightedSquare<N>(Q_, r);
       const Measurement<M>& z = record[k].z;
       if (!z.anyAvailable()) continue;
       model_.observation(track[k], y);
@@ -288,7 +291,7 @@ class BatchMapSmoother {
       angleMeasurements_.wrap(y);
       for (Index i = 0; i < m; ++i) y(i) = z.available(i) ? y(i) : 0.0;
       effectiveMeasurementNoise(R_, z, R);
-      sum += y.dot(Eigen::LDLT<Matrix<M, M>>(R).solve(y));
+      sum += weightedSquare<M>(R, y);
     }
     return 0.5 * sum;
   }
@@ -342,7 +345,6 @@ class BatchMapSmoother {
   AngleMask<N> angleStates_;
   AngleMask<M> angleMeasurements_;
   BatchMapOptions options_;
-  Eigen::LDLT<Matrix<N, N>> noiseFactor_;  ///< of Q, for the transition residuals' weight
   std::vector<Vector<N>> track_, candidate_;
   std::vector<Smoothed> forward_;
 };
