@@ -170,19 +170,19 @@ class BatchMapSmoother {
     const Index n = Q_.rows(), m = R_.rows();
     for (std::size_t k = 0; k < record.size(); ++k) {
       const Period& p = record[k];
-      const std::string where = "BatchMapSmoother: period " + std::to_string(k) + ": ";
+      const auto where = [k] { return "BatchMapSmoother: period " + std::to_string(k) + ": "; };
       if (p.belief.x.size() != n || p.belief.P.rows() != n || p.belief.P.cols() != n) {
-        throw InvalidInputError(where + "the belief does not have the model's " +
+        throw InvalidInputError(where() + "the belief does not have the model's " +
                                 std::to_string(n) + " states");
       }
       if (!p.belief.x.allFinite() || !p.belief.P.allFinite() || !p.belief.u.allFinite()) {
-        throw InvalidInputError(where + "the belief or the control is not finite");
+        throw InvalidInputError(where() + "the belief or the control is not finite");
       }
       try {
         validateControl(p.belief.u, model_.controlSize());
         p.z.validate(m);
       } catch (const InvalidInputError& e) {
-        throw InvalidInputError(where + e.what());
+        throw InvalidInputError(where() + e.what());
       }
     }
   }
