@@ -158,6 +158,27 @@ class NonlinearBatchSmoothingTest(BatchSmoothingCase):
         self.assertLess(abs(rmse["batch"] - rmse["rts"]), 0.01 * rmse["rts"], message)
 
 
+class DeadReckoningBatchSmoothingTest(unittest.TestCase):
+    """config/nav3ctrl_ekf.h: five of its seven states have no process noise (the pose, the
+    travelled distance, the speed), so their transitions are constraints, which the smoother
+    keeps by rolling them forward; judged by a cost that ignored them, the steps had stalled
+    (4 iterations, not converged). The pose is measured by nothing, the speed by the wheels."""
+
+    def test_converges_and_keeps_the_pose_unobserved(self):
+        with tempfile.TemporaryDirectory(prefix="sf_batch_smoothing_test_") as tmp:
+            for node in ("sf_nav3ctrl_ekf", "sf_nav3ctrl_ukf"):
+                csv_path = os.path.join(tmp, node + ".csv")
+                proc = replay_exe(node, PIONEER_BAG, csv_path, "--smooth", "batch")
+                iterations, cost, filtered, converged = summary_numbers(proc.stdout)
+                self.assertTrue(converged, node)
+                self.assertLessEqual(cost, filtered, node)
+                rows = read_rows(csv_path)
+                # The transitions hold: the travelled distance x4 of a period is v x5 T.
+                for before, after in zip(rows, rows[1:]):
+                    self.assertAlmostEqual(after["smoothed_x4"], before["smoothed_x5"] * 0.1,
+                                           delta=1e-9)
+
+
 class RefusalTest(unittest.TestCase):
     def test_particle_filter_has_no_batch_smoother(self):
         exe = os.path.join(built_lib_dir("sf_train_pf"), "sf_train_pf")

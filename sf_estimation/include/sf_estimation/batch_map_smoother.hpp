@@ -121,7 +121,11 @@ class BatchMapSmoother {
         R_(R),
         angleStates_(angleStates),
         angleMeasurements_(angleMeasurements),
-        options_(options) {
+        options_(options),
+        deterministic_(Mask<N>::Constant(Q.rows(), false)) {
+    for (Index i = 0; i < Q.rows(); ++i) {
+      deterministic_(i) = (Q.row(i).array() == 0.0).all() && (Q.col(i).array() == 0.0).all();
+    }
     if (options_.maxIterations < 1 || !(options_.tolerance > 0.0) || options_.maxHalvings < 0) {
       throw ParameterError(
           "BatchMapSmoother: expected maxIterations >= 1, tolerance > 0, maxHalvings >= 0");
@@ -191,6 +195,7 @@ class BatchMapSmoother {
   BatchMapReport solveSegment(const std::vector<Period>& record, std::size_t begin, std::size_t end,
                               std::vector<Smoothed>& smoothed) {
     for (std::size_t k = begin; k < end; ++k) track_[k] = record[k].belief.x;
+    holdConstraints(record, begin, end, track_);
     BatchMapReport out;
     out.converged = false;
     out.initialCost = out.cost = cost(record, begin, end, track_);
@@ -269,6 +274,24 @@ class BatchMapSmoother {
     angleStates_.wrap(belief.x);
   }
 
+  /// The states that no process noise reaches (a zero row and column of Q) follow their
+  /// transition exactly, x_k(i) = f(x_k-1, u_k)(i): a constraint, which the cost cannot weigh.
+  /// A track is made to meet it by rolling those states forward from the segment's first
+  /// period. The filtered track does not meet it (the filter's corrections move such states),
+  /// a linearised step only to first order.
+  void holdConstraints(const std::vector<Period>& record, std::size_t begin, std::size_t end,
+                       std::vector<Vector<N>>& track) const {
+    if (!deterministic_.any()) return;
+    Vector<N> predicted(track[begin].size());
+    for (std::size_t k = begin + 1; k < end; ++k) {
+      model_.transition(track[k - 1], record[k].belief.u, predicted);
+      for (Index i = 0; i < predicted.size(); ++i) {
+        if (deterministic_(i)) track[k](i) = predicted(i);
+      }
+      angleStates_.wrap(track[k]);
+    }
+  }
+
   /// J of the segment [begin, end) at `track`.
   double cost(const std::vector<Period>& record, std::size_t begin, std::size_t end,
               const std::vector<Vector<N>>& track) const {
@@ -328,6 +351,7 @@ class BatchMapSmoother {
         candidate_[k] = track_[k] + fraction * step;
         angleStates_.wrap(candidate_[k]);
       }
+      holdConstraints(record, begin, end, candidate_);
       const double candidateCost = cost(record, begin, end, candidate_);
       if (candidateCost <= out.cost) {
         std::swap(track_, candidate_);
@@ -345,6 +369,7 @@ class BatchMapSmoother {
   AngleMask<N> angleStates_;
   AngleMask<M> angleMeasurements_;
   BatchMapOptions options_;
+  Mask<N> deterministic_;  ///< states without process noise (holdConstraints)
   std::vector<Vector<N>> track_, candidate_;
   std::vector<Smoothed> forward_;
 };
