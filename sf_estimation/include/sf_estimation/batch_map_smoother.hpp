@@ -21,9 +21,13 @@
 // smoothed covariance (of the model linearised about the track before the last step: at
 // convergence the Laplace approximation of the posterior's marginals).
 //
-// A state that no process noise reaches (a zero row of Q) or a segment prior with an exactly
-// known direction: the cost weighs only the directions the covariance spans (LDLT's solve skips
-// zero pivots, as rtsGain does); the linearised steps keep the track on such a constraint.
+// A state that no process noise reaches (a zero row and column of Q) follows its transition
+// exactly, a constraint the cost cannot weigh: every track the cost judges (the filtered one,
+// each step's candidate) has such states rolled forward from the segment's first period, else
+// a step judged without its violation can stall (the Pioneer's dead reckoning did). Otherwise a
+// residual is weighed in the directions its covariance spans only (LDLT's solve skips zero
+// pivots, as rtsGain does): a segment prior with an exactly known direction, or a singular Q
+// whose null space does not lie along states.
 //
 // Memory per period: the record (the belief, control and the measurement applied) and, while
 // smoothing, the track, a candidate track, the linearised filter's belief and the result.
