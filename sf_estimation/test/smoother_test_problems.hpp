@@ -12,6 +12,7 @@
 #include "batch_map.hpp"
 #include "filter_test_utils.hpp"
 #include "sf_estimation/angles.hpp"
+#include "sf_estimation/batch_map_smoother.hpp"
 #include "sf_estimation/rts_smoother.hpp"
 
 namespace sftest {
@@ -24,6 +25,7 @@ using estimation::wrapAngle;
 template <class Filter, int N = Filter::StateSize, int M = Filter::MeasurementSize,
           int L = Filter::ControlSize>
 struct SmoothedRun {
+  static constexpr int StateSize = N, MeasurementSize = M, ControlSize = L;
   std::vector<FilteredPeriod<N, L>> filtered;
   std::vector<estimation::SmoothedPeriod<N>> smoothed;
 
@@ -38,6 +40,16 @@ struct SmoothedRun {
     smootherFor(filter).smooth(filtered, smoothed);
   }
 };
+
+/// The batch smoother's record of a run: each filtered period with the measurement of its
+/// step (z[0], of the initial belief, is not used).
+template <class Run, int N = Run::StateSize, int M = Run::MeasurementSize, int L = Run::ControlSize>
+std::vector<estimation::MeasuredPeriod<N, M, L>> measuredRecord(
+    const Run& run, const std::vector<Measurement<M>>& z) {
+  std::vector<estimation::MeasuredPeriod<N, M, L>> record;
+  for (std::size_t k = 0; k < run.filtered.size(); ++k) record.push_back({run.filtered[k], z[k]});
+  return record;
+}
 
 /// x' = A x + B u, z = H x as a model (for the batch reference).
 struct LinearModel {

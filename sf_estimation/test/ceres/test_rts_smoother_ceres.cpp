@@ -15,6 +15,7 @@
 
 #include "../batch_map.hpp"
 #include "../smoother_test_problems.hpp"
+#include "sf_estimation/batch_map_smoother.hpp"
 #include "sf_estimation/extended_kalman_filter.hpp"
 #include "sf_estimation/kalman_filter.hpp"
 #include "sf_estimation/rts_smoother.hpp"
@@ -243,6 +244,52 @@ TEST(RtsSmootherCeres, NonlinearNearCeresMapTrack) {
   EXPECT_LT(gap, 1e-8);
   EXPECT_LT(sftest::largestGapInSigmas(ekfRun, ceresMap), 0.6);
   EXPECT_LT(sftest::largestGapInSigmas(ukfRun, ceresMap), 0.6);
+}
+
+// The batch MAP smoother (batch_map_smoother.hpp) against Ceres. Linear: the same track and
+// covariances to 1e-9 relative. The unicycle: the same MAP track to 1e-6 of the MAP's standard
+// deviation in every entry (the smoother stops at steps of 1e-9 of it), the covariance (the
+// last iteration's smoothed one; Ceres's at its solution) to 1e-6 relative.
+TEST(BatchMapSmootherCeres, LinearEqualsCeresBatch) {
+  using Filter = estimation::KalmanFilter<2, 2, 1>;
+  const BatchProblem<sftest::LinearModel> problem = sftest::linearProblem();
+  const Filter kf(problem.model.A, problem.model.B, problem.model.H, problem.Q, problem.R,
+                  problem.x0, problem.P0);
+  const sftest::SmoothedRun<Filter> run(kf, problem.u, problem.z);
+  const BatchSolution batch = solveWithCeres(
+      problem, std::vector<Eigen::VectorXd>(problem.z.size(), Eigen::VectorXd::Zero(2)));
+  auto smoother = estimation::batchSmootherFor(kf);
+  std::vector<estimation::SmoothedPeriod<2>> smoothed;
+  EXPECT_TRUE(smoother.smooth(sftest::measuredRecord(run, problem.z), smoothed).converged);
+  ASSERT_EQ(smoothed.size(), batch.x.size());
+  for (std::size_t k = 0; k < batch.x.size(); ++k) {
+    EXPECT_LT(relDiff(smoothed[k].x, batch.x[k]), 1e-9) << "period " << k;
+    EXPECT_LT(relDiff(smoothed[k].P, batch.P[k]), 1e-9) << "period " << k;
+  }
+}
+
+TEST(BatchMapSmootherCeres, UnicycleEqualsCeresMapTrack) {
+  using Unicycle = sftest::Unicycle;
+  const sftest::UnicycleDrive drive(300, 11, 1.0);
+  const auto& p = drive.problem;
+  const estimation::ExtendedKalmanFilter<Unicycle> ekf(p.model, p.Q, p.R, p.x0, p.P0, p.angles);
+  const sftest::SmoothedRun<estimation::ExtendedKalmanFilter<Unicycle>> run(ekf, p.u, p.z);
+  std::vector<Eigen::VectorXd> start;
+  for (const auto& period : run.filtered) start.emplace_back(period.x);
+  const BatchSolution ceresMap = solveWithCeres(p, start);
+  auto smoother = estimation::batchSmootherFor(ekf);
+  std::vector<estimation::SmoothedPeriod<3>> smoothed;
+  EXPECT_TRUE(smoother.smooth(sftest::measuredRecord(run, p.z), smoothed).converged);
+  double gap = 0.0;
+  for (std::size_t k = 0; k < ceresMap.x.size(); ++k) {
+    Eigen::VectorXd difference = smoothed[k].x - ceresMap.x[k];
+    difference(2) = wrapAngle(difference(2));
+    for (Index i = 0; i < 3; ++i) {
+      gap = std::max(gap, std::abs(difference(i)) / std::sqrt(ceresMap.P[k](i, i)));
+    }
+    EXPECT_LT(relDiff(smoothed[k].P, ceresMap.P[k]), 1e-6) << "period " << k;
+  }
+  EXPECT_LT(gap, 1e-6);
 }
 
 }  // namespace

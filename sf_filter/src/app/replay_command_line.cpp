@@ -16,8 +16,8 @@ namespace sf_filter::app {
 
 std::string replayUsage(const std::string& program) {
   return "usage: " + program +
-         " --replay INPUT.bag [INPUT.bag]... [--csv OUT.csv] [--bag OUT.bag] [--smooth]\n"
-         "       [--smooth-lag SECONDS]\n"
+         " --replay INPUT.bag [INPUT.bag]... [--csv OUT.csv] [--bag OUT.bag]\n"
+         "       [--smooth [batch]] [--smooth-lag SECONDS]\n"
          "       [--name NODE]\n"
          "       [--estimation-period S | --estimation-period-ms MS] [--scale-q FACTOR]\n"
          "       [--scale-r FACTOR] [--seed N] [--strict]\n"
@@ -51,7 +51,9 @@ std::string replayUsage(const std::string& program) {
          "radians), for a bag without /tf_static.\n"
          "--smooth: after the replay, the Rauch-Tung-Striebel backward pass over every period\n"
          "(KF, EKF; the unscented one for a UKF); the CSV gets smoothed_* columns after the\n"
-         "filtered ones (doc/smoothing.md). --smooth-lag: the fixed-lag smoother of that lag\n"
+         "filtered ones (doc/smoothing.md). --smooth batch: the maximum-a-posteriori track\n"
+         "of the whole recording instead (Gauss-Newton, the iterated Kalman smoother; KF,\n"
+         "EKF, UKF), in the same columns. --smooth-lag: the fixed-lag smoother of that lag\n"
          "(whole periods, as ~smoothing_lag online): each row gets lagged_* columns of its own\n"
          "period smoothed with the readings up to the lag later (NaN for the last lag's rows);\n"
          "the output bag gets odometry/smoothed and ~state/smoothed.\n"
@@ -89,6 +91,11 @@ class Arguments {
   std::string value() {
     if (i_ + 1 >= argc_) throw std::invalid_argument("option " + arg_ + " needs a value");
     return argv_[++i_];
+  }
+
+  /// Whether the next argument is `word`.
+  bool nextIs(const char* word) const {
+    return i_ + 1 < argc_ && std::string(argv_[i_ + 1]) == word;
   }
 
   /// The arguments left after the current one.
@@ -238,6 +245,7 @@ bool readOutputOption(ReplayCommand& c, Arguments& a) {
     c.options.outputBag = a.value();
   } else if (arg == "--smooth") {
     c.options.smooth = true;
+    if (a.nextIs("batch")) c.options.smoothBatch = a.value() == "batch";
   } else if (arg == "--smooth-lag") {
     c.options.smoothLag = smoothingLagSeconds("--smooth-lag", std::stod(a.value()));
   } else if (arg == "--params") {

@@ -112,6 +112,12 @@ void printSmoothing(const ReplayCommand& c, const ReplayOutcome& o) {
             << s.corrections.expectedRms() << "), last period "
             << std::sqrt(s.lastCorrection.meanSquare) << " (expected "
             << std::sqrt(s.lastCorrection.expected) << ")" << std::endl;
+  if (s.batch) {
+    std::cout << name << ": batch MAP track: " << s.batch->iterations << " iterations, cost "
+              << s.batch->cost << " (filtered track " << s.batch->initialCost << "), "
+              << (s.batch->converged ? "converged" : "NOT converged") << ", " << s.batch->halvings
+              << " step halvings" << std::endl;
+  }
 }
 
 }  // namespace

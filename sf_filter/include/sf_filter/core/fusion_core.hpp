@@ -212,6 +212,10 @@ class FusionCore : public FusionCoreBase {
   }
 
   const Estimate& lastEstimate() const { return last_; }
+  /// The measurement given to the filter in the last estimated period (its present rows after
+  /// gating and substitution, its variances and covariances): the batch smoother's record
+  /// (batch_period_smoother_of.hpp). Meaningless after a failed step or a restart.
+  const estimation::Measurement<M>& lastMeasurement() const { return measurement_; }
   const Filter& filter() const { return filter_; }
   /// What the filter repaired instead of failing (numerical_repairs.hpp), since the core was
   /// made: kept across filter restarts. All zero for methods that repair nothing.

@@ -106,6 +106,10 @@ class FusionEngine {
   /// An offline smoother of this core's run (period_smoother.hpp), which records the periods
   /// it is told to and keeps a reference to the core; null for a filter without one.
   virtual std::unique_ptr<PeriodSmoother> makeSmoother() const { return nullptr; }
+  /// An offline smoother giving the batch MAP track of this core's run
+  /// (batch_period_smoother_of.hpp; it records each period's measurement too); null for a
+  /// filter without one.
+  virtual std::unique_ptr<PeriodSmoother> makeBatchSmoother() const { return nullptr; }
   /// An online smoother with a lag of `lagPeriods` periods (lagged_smoother.hpp), fed by the
   /// caller after each estimate; nullptr for a filter without a smoother.
   virtual std::unique_ptr<LaggedSmoother> makeLaggedSmoother(std::size_t lagPeriods) const {

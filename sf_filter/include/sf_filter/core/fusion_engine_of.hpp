@@ -13,6 +13,7 @@
 #include <sf_estimation/moving_average.hpp>
 #include <sf_estimation/moving_median.hpp>
 
+#include "sf_filter/core/batch_period_smoother_of.hpp"
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/core/lagged_smoother_of.hpp"
@@ -101,6 +102,14 @@ class FusionEngineOf final : public FusionEngine {
   std::unique_ptr<PeriodSmoother> makeSmoother() const override {
     if constexpr (HasSmoother<Filter>::value) {
       return std::make_unique<PeriodSmootherOf<Core>>(core_);
+    } else {
+      return nullptr;
+    }
+  }
+
+  std::unique_ptr<PeriodSmoother> makeBatchSmoother() const override {
+    if constexpr (HasBatchSmoother<Filter>::value) {
+      return std::make_unique<BatchPeriodSmootherOf<Core>>(core_);
     } else {
       return nullptr;
     }

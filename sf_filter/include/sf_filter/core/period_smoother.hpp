@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include <Eigen/Core>
 #include <sf_estimation/angles.hpp>
@@ -79,6 +80,15 @@ struct SmoothingCorrectionTotal {
   double expectedRms() const { return periods ? std::sqrt(expected / periods) : 0.0; }
 };
 
+/// The batch MAP smoother's outcome (sf_estimation/batch_map_smoother.hpp's report).
+struct BatchOutcome {
+  int iterations = 0;        ///< the most any segment took
+  int halvings = 0;          ///< step halvings of the safeguard
+  double initialCost = 0.0;  ///< the cost of the filtered track
+  double cost = 0.0;         ///< the cost of the smoothed track
+  bool converged = false;
+};
+
 class PeriodSmoother {
  public:
   virtual ~PeriodSmoother() = default;
@@ -101,6 +111,8 @@ class PeriodSmoother {
   virtual std::size_t bytesPerPeriod() const = 0;
   /// Valid after smooth(): how far the pass moved period k (SmoothingCorrection).
   virtual SmoothingCorrection correction(std::size_t period) const = 0;
+  /// The batch smoother's outcome, valid after smooth(); nullopt for the RTS pass.
+  virtual std::optional<BatchOutcome> batchOutcome() const { return std::nullopt; }
 };
 
 }  // namespace sf_filter

@@ -65,6 +65,9 @@ struct ReplayOptions {
   /// filtered ones, the output bag the smoothed estimates on odometry/smoothed and
   /// ~state/smoothed beside the filtered ones (doc/smoothing.md).
   bool smooth = false;
+  /// --smooth batch (with smooth): the batch MAP track instead of the RTS pass
+  /// (batch_period_smoother_of.hpp; KF, EKF, UKF), in the same smoothed columns.
+  bool smoothBatch = false;
   /// --smooth-lag SECONDS (0: off): the fixed-lag smoother of that lag, rounded to whole
   /// periods; each CSV row gets the lagged_* columns of its own period, smoothed with the
   /// readings up to the lag later (NaN for the last lag's periods), and the output bag the
@@ -97,6 +100,8 @@ struct ReplaySummary {
   std::uint64_t smoothedSegments = 0;
   double smoothingSeconds = 0.0;
   std::size_t smoothingBytesPerPeriod = 0;
+  /// --smooth batch: its iterations, costs and convergence.
+  std::optional<BatchOutcome> batch;
   /// --smooth-lag: the lag in periods, the periods the smoother holds at the end and its
   /// fixed memory.
   std::size_t lagPeriods = 0;
@@ -542,7 +547,13 @@ class BagReplay final : public MessageSink {
   /// --smooth: the filter's smoother, refused for a filter without one.
   std::unique_ptr<PeriodSmoother> makeSmoother() const {
     if (!options_.smooth) return nullptr;
-    std::unique_ptr<PeriodSmoother> smoother = core_.makeSmoother();
+    std::unique_ptr<PeriodSmoother> smoother =
+        options_.smoothBatch ? core_.makeBatchSmoother() : core_.makeSmoother();
+    if (!smoother && options_.smoothBatch) {
+      throw ReplayError("--smooth batch: the " + core_.filterDescription() +
+                        " has no batch smoother (the Kalman, extended and unscented Kalman "
+                        "filters have)");
+    }
     if (!smoother) {
       throw ReplayError(
           "--smooth: the " + core_.filterDescription() +
@@ -634,6 +645,7 @@ class BagReplay final : public MessageSink {
       summary_.lastCorrection = smoother.correction(k);
       summary_.corrections.add(summary_.lastCorrection);
     }
+    summary_.batch = smoother.batchOutcome();
     if (!csv.is_open()) return;
     for (std::size_t k = 0; k < smoother.periods(); ++k) {
       const PeriodBelief filtered = smoother.filtered(k), smoothed = smoother.smoothed(k);
