@@ -115,13 +115,27 @@ def player_inputs():
     return topics or None
 
 
-def wait_until_nodes_connected(test, nodes, timeout=WALL_TIMEOUT):
+def node_subscriptions(nodes):
+    """The topics any of `nodes` subscribes to, by the master."""
+    try:
+        _, subscribers, _ = rosgraph.Master(rospy.get_name()).getSystemState()
+    except (OSError, rosgraph.MasterException):
+        return set()
+    return {t for t, subs in subscribers if set(nodes) & set(subs)}
+
+
+def wait_until_nodes_connected(test, nodes, timeout=WALL_TIMEOUT, subscribed_only=False):
     """Until the player is connected to every node on every input (rosbag play's
     --wait-for-subscribers waits for one subscriber per topic only); fails `test` (a
-    TestCase) after `timeout` s of wall time. Also test/sf_configure_online_test.py's."""
+    TestCase) after `timeout` s of wall time. Also test/sf_configure_online_test.py's, which
+    plays whole recordings: with `subscribed_only` the topics the nodes do not subscribe to
+    (a GPS the configuration leaves out) are not waited for, once they subscribe to one."""
     start = time.monotonic()
     while not rospy.is_shutdown():
         inputs, connections = player_inputs(), player_connections()
+        if inputs and subscribed_only:
+            subscribed = node_subscriptions(nodes)
+            inputs = [t for t in inputs if t in subscribed] if subscribed else None
         if inputs and connections is not None and all(
                 set(nodes) <= connections.get(t, set()) for t in inputs):
             return

@@ -166,7 +166,7 @@ class SfConfigureOnlineTest(unittest.TestCase):
         topics, bag_end = bag_topics(self.bag)
         truth = evaluate.load_truth(self.bag) if TRUTH_TOPIC in topics else None
         try:
-            wait_until_nodes_connected(self, [self.node], WALL_TIMEOUT)
+            wait_until_nodes_connected(self, [self.node], WALL_TIMEOUT, subscribed_only=True)
         except AssertionError as e:
             raise AssertionError("%s\nroslaunch (exit %s):\n%s" % (e, self.launch.poll(),
                                                                    self.node_log()))
