@@ -117,13 +117,14 @@ def rotated_track(track, yaw):
     return ev.make_trajectory(track.t, [p[0] for p in points], [p[1] for p in points])
 
 
-def state_tracks(csv_path, yaw_state, error_states):
+def state_tracks(csv_path, yaw_state, error_states, prefix=""):
     """(position, predicted fix, final yaw) of a GPS node whose state holds the yaw offset
     (column x<yaw_state>) and the offset of the fixes from its odom origin (east: the sum of
     the states error_states[0], north: of error_states[1]): its pose turned into ENU, that
-    plus the offset (what it predicts the next fix to be), and the last yaw [rad]."""
-    east, north = (["x%d" % i for i in axis] for axis in error_states)
-    names = ["pose_x", "pose_y", "x%d" % yaw_state] + east + north
+    plus the offset (what it predicts the next fix to be), and the last yaw [rad]. `prefix`:
+    the columns of another track of the CSV (smoothed_ of --smooth)."""
+    east, north = ([prefix + "x%d" % i for i in axis] for axis in error_states)
+    names = [prefix + "pose_x", prefix + "pose_y", prefix + "x%d" % yaw_state] + east + north
     t, c = ev.read_csv_columns(csv_path, names)
     rows = [r for r in zip(t, *(c[n] for n in names)) if all(map(math.isfinite, r))]
     if not rows:
