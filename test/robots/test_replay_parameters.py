@@ -10,6 +10,7 @@ of the YAML path (--scale-r multiplies the header's R, --estimation-period sets 
 same data under the configured topic names with the transform in the bag.
 """
 
+import math
 import os
 import subprocess
 import sys
@@ -90,12 +91,26 @@ class ReplayParametersTest(unittest.TestCase):
                  "parameter ~measurement_noise_covariance: expected 9 numbers (3x3, row-major), "
                  "found 3"),
                 ("frame_id: ''\n", "parameter ~frame_id: '' is not a tf2 frame name"),
+                ("periods_on_clock_grid: 1\n",
+                 "parameter ~periods_on_clock_grid: expected true or false, found"),
                 ("[1, 2]\n", "expected a dictionary of private parameters")):
             with self.subTest(text=text):
                 proc, out = self.replay(self.bag, "--params", self.yaml(text))
                 self.assertEqual(proc.returncode, 2, proc.stderr)
                 self.assertIn(words, proc.stderr.splitlines()[0])
                 self.assertIsNone(out)
+
+    def test_periods_on_the_clock_grid(self):
+        # the schedule starts one lag before the first message; on the grid every period ends
+        # on a multiple of the period in clock time (doc/filter_node.md)
+        def phases(*extra):
+            proc, text = self.replay(self.bag, "--estimation-period", "0.03", *extra)
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            times = [float(line.split(",")[0]) for line in text.splitlines()[1:]]
+            return {round(math.fmod(t, 0.03), 6) % 0.03 for t in times}
+        on_grid = phases("--params", self.yaml("periods_on_clock_grid: true\n"))
+        self.assertTrue(all(min(p, 0.03 - p) < 1e-6 for p in on_grid), on_grid)
+        self.assertFalse(all(min(p, 0.03 - p) < 1e-6 for p in phases()))
 
     def test_unknown_parameter_in_the_file_is_warned_about(self):
         proc, out = self.replay(self.bag, "--params", self.yaml("two_d_mode: true\n"))
