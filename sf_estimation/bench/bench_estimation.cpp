@@ -166,9 +166,10 @@ std::unique_ptr<IEstimator> createParticle(int particles) {
   return EstimatorFactory::create("ParticleFilterSIR", p);
 }
 
-ParticleFilterSIR<Nav3Ctrl> makeParticle(Index particles) {
+ParticleFilterSIR<Nav3Ctrl> makeParticle(Index particles, bool sharedDeadReckoning = false) {
   ParticleFilterParameters params;
   params.particles = particles;
+  params.sharedDeadReckoning = sharedDeadReckoning;
   params.seed = kSeed;
   return ParticleFilterSIR<Nav3Ctrl>(Nav3Ctrl{kPeriod, kRadius}, kParticleQ, kR, Vector<7>::Zero(),
                                      Matrix<7, 7>::Identity(), params);
@@ -275,6 +276,12 @@ void PF_nav3ctrl_fixed(benchmark::State& state) {
   runSteps(state, filter);
 }
 
+// The pose, heading and step length carried as one shared Gaussian (particle_filter.hpp).
+void PF_nav3ctrl_shared_fixed(benchmark::State& state) {
+  auto filter = makeParticle(state.range(0), true);
+  runSteps(state, filter);
+}
+
 void PF_nav3ctrl_factory(benchmark::State& state) {
   auto estimator = createParticle(static_cast<int>(state.range(0)));
   runSteps(state, *estimator);
@@ -293,6 +300,7 @@ BENCHMARK(UKF_nav3ctrl_factory);
 BENCHMARK(UKF_nav3red_fixed);
 BENCHMARK(UKF_nav3red_factory);
 BENCHMARK(PF_nav3ctrl_fixed)->Arg(500)->Arg(700)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(PF_nav3ctrl_shared_fixed)->Arg(700)->Unit(benchmark::kMicrosecond);
 BENCHMARK(PF_nav3ctrl_factory)->Arg(500)->Arg(700)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

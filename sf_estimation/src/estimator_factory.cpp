@@ -229,9 +229,10 @@ std::unique_ptr<IEstimator> createUnscentedKalman(const ParameterMap& map) {
 }
 
 std::unique_ptr<IEstimator> createParticle(const ParameterMap& map) {
-  const ParameterReader in("ParticleFilterSIR", map,
-                           {"model", "Q", "R", "x0", "P0", "particles", "seed",
-                            "resampling-threshold", "angle-states", "angle-measurements"});
+  const ParameterReader in(
+      "ParticleFilterSIR", map,
+      {"model", "Q", "R", "x0", "P0", "particles", "seed", "resampling-threshold", "angle-states",
+       "angle-measurements", "dead-reckoned-states"});
   FunctionModel model = in.model();
   const GaussianParameters g("ParticleFilterSIR", in, model.stateSize(), model.measurementSize());
   ParticleFilterParameters pf;
@@ -240,6 +241,8 @@ std::unique_ptr<IEstimator> createParticle(const ParameterMap& map) {
   if (seed < 0) throw ParameterError("ParticleFilterSIR: parameter 'seed' must be >= 0");
   pf.seed = static_cast<std::uint64_t>(seed);
   pf.resamplingThreshold = in.number("resampling-threshold", pf.resamplingThreshold);
+  pf.sharedDeadReckoning =
+      in.choice("dead-reckoned-states", {"per-particle", "shared"}, "per-particle") == "shared";
   return wrap(ParticleFilterSIR<FunctionModel>(model, g.Q, g.R, g.x0, g.P0, pf, in.angles()));
 }
 

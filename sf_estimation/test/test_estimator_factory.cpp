@@ -293,17 +293,21 @@ TEST(EstimatorFactory, UnscentedKalmanFilterDefaultsAreTheDocumentedOnes) {
   EXPECT_LE(diff.second, 1.6e-8);
 }
 
-TEST(EstimatorFactory, ParticleFilterEqualsFixedSizeFilter) {
+/// The factory's particle filter against the fixed-size one, with the pose carried per particle
+/// or shared (nav3ctrl's dead-reckoned states: x, y, theta and the step length).
+void checkParticleFactoryEqualsFixedSize(bool shared) {
   ParameterMap p = nav3Parameters();
   p["Q"] = Eigen::MatrixXd(estimation::models::nav3ParticleProcessNoise());
   p["particles"] = 300;
   p["seed"] = 17;
   p["resampling-threshold"] = 0.6;
+  if (shared) p["dead-reckoned-states"] = std::string("shared");
   const auto estimator = EstimatorFactory::create("ParticleFilterSIR", p);
   estimation::ParticleFilterParameters pf;
   pf.particles = 300;
   pf.seed = 17;
   pf.resamplingThreshold = 0.6;
+  pf.sharedDeadReckoning = shared;
   estimation::ParticleFilterSIR<Nav3Ctrl> fixed(
       Nav3Ctrl{}, estimation::models::nav3ParticleProcessNoise(),
       estimation::models::nav3MeasurementNoise(), nav3x0(), Matrix<7, 7>::Identity() * 0.1, pf);
@@ -313,6 +317,10 @@ TEST(EstimatorFactory, ParticleFilterEqualsFixedSizeFilter) {
   const auto* adapter = dynamic_cast<const Adapter*>(estimator.get());
   ASSERT_NE(adapter, nullptr);
   const auto& dynamicFilter = adapter->filter();
+  estimation::Mask<7> deadReckoned = estimation::Mask<7>::Constant(false);
+  if (shared) deadReckoned << true, true, true, false, true, false, false;
+  ASSERT_EQ(fixed.deadReckonedStates(), deadReckoned);
+  ASSERT_EQ(estimation::Mask<Eigen::Dynamic>(dynamicFilter.deadReckonedStates()), deadReckoned);
   // Same seed: the particles and weights are bit-identical in every step.
   const auto run = sftest::simulateNav3Drive(50, 64, 0.3, 7);
   double stateDiff = 0.0, covDiff = 0.0;
@@ -334,8 +342,17 @@ TEST(EstimatorFactory, ParticleFilterEqualsFixedSizeFilter) {
     ASSERT_LE(sftest::relDiff(values(out), fixed.state()), 1e-12) << "step " << k;
     ASSERT_LE(sftest::maxAbsDiff(out.covariance, fixed.covariance()), 1e-12 * scale * scale);
   }
-  std::cout << "[ measured ] factory PF vs fixed: particles and weights identical; state "
-            << stateDiff << " (relative), covariance " << covDiff << " (absolute)\n";
+  std::cout << "[ measured ] factory PF (" << (shared ? "shared" : "per-particle")
+            << " dead reckoning) vs fixed: particles and weights identical; state " << stateDiff
+            << " (relative), covariance " << covDiff << " (absolute)\n";
+}
+
+TEST(EstimatorFactory, ParticleFilterEqualsFixedSizeFilter) {
+  checkParticleFactoryEqualsFixedSize(false);
+}
+
+TEST(EstimatorFactory, ParticleFilterWithSharedDeadReckoningEqualsFixedSizeFilter) {
+  checkParticleFactoryEqualsFixedSize(true);
 }
 
 TEST(EstimatorFactory, AveragingMethodsRunThroughTheInterface) {

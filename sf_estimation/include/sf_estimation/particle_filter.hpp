@@ -5,6 +5,13 @@
 // The reported state and covariance are the moments of the weighted particles before
 // resampling (resampling only adds Monte-Carlo noise to them). All buffers are allocated at
 // construction, none in a step.
+// With shared dead reckoning (ParticleFilterParameters::sharedDeadReckoning), the states that no
+// measurement weighs (dead_reckoned_states.hpp) are one Gaussian shared by all particles instead
+// of a value per particle: each step every particle is moved from the shared mean, the new mean
+// is the particles' weighted mean and the covariance adds, to the particles' spread, the shared
+// covariance carried through f (central differences along its square root, as the divided
+// difference filter does) and Q. Only the dead-reckoned block changes; nothing is lost to path
+// degeneracy, as the particles' own pose is the path of a few ancestors.
 #pragma once
 
 #include <algorithm>
@@ -19,6 +26,7 @@
 #include <Eigen/Core>
 
 #include "sf_estimation/angles.hpp"
+#include "sf_estimation/dead_reckoned_states.hpp"
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/measurement_noise.hpp"
 #include "sf_estimation/measurement_prediction.hpp"
@@ -43,6 +51,9 @@ struct ParticleFilterParameters {
   /// A planar pose in the state (its heading an angle state) whose reported mean is the
   /// particles' mean on SE(2) (planar_pose_mean.hpp) rather than entry by entry.
   std::optional<PlanarPoseIndices> planarPose;
+  /// Carry the dead-reckoned states (dead_reckoned_states.hpp) as one Gaussian shared by the
+  /// particles (see the top of this file) instead of per particle.
+  bool sharedDeadReckoning = false;
 };
 
 template <class Model>
@@ -63,7 +74,13 @@ class ParticleFilterSIR {
   ParticleFilterSIR(Model model, const Matrix<N, N>& Q, const Matrix<M, M>& R, const Vector<N>& x0,
                     const Matrix<N, N>& P0, const ParticleFilterParameters& params = {},
                     const AngularComponents& angles = {})
-      : model_(std::move(model)), Q_(Q), R_(R), x0_(x0), P0_(P0), params_(params) {
+      : model_(std::move(model)),
+        Q_(Q),
+        R_(R),
+        x0_(x0),
+        P0_(P0),
+        params_(params),
+        sharedRoot_(Q.rows()) {
     const std::string method = "ParticleFilterSIR";
     requireFilterParameters(method, Q, R, x0, P0);
     const Index n = Q.rows();
@@ -85,6 +102,12 @@ class ParticleFilterSIR {
     }
     noiseRoot_ = probability::covarianceSquareRoot(Q);
     findNoiseSources();
+    deadReckoned_ = Mask<N>::Constant(n, false);
+    if (params.sharedDeadReckoning) {
+      deadReckoned_ = estimation::deadReckonedStates(model_, x0, model_.controlSize());
+      anyDeadReckoned_ = deadReckoned_.any();
+    }
+    sharedSpread_.resize(n, n);
     const Index m = R.rows(), p = params.particles;
     u_ = Vector<L>::Zero(model_.controlSize());
     particles_.resize(n, p);
@@ -113,6 +136,8 @@ class ParticleFilterSIR {
   const Vector<L>& control() const { return u_; }
   const Particles& particles() const { return particles_; }
   const Eigen::VectorXd& logWeights() const { return logWeights_; }
+  /// The states carried as one shared Gaussian (none unless sharedDeadReckoning).
+  const Mask<N>& deadReckonedStates() const { return deadReckoned_; }
   /// Effective sample size after the last step, before any resampling: 1 / sum w_i^2,
   /// capped at the particle count (rounding can exceed it by an ulp for equal weights).
   double effectiveSampleSize() const { return effectiveSampleSize_; }
@@ -135,6 +160,15 @@ class ParticleFilterSIR {
     logWeights_.setConstant(-std::log(static_cast<double>(particleCount())));
     weights_.setConstant(1.0 / static_cast<double>(particleCount()));
     updateMoments();
+    if (anyDeadReckoned_) {
+      // The shared Gaussian starts as given, not as the sample of it.
+      for (Index r = 0; r < stateSize(); ++r) {
+        if (!deadReckoned_(r)) continue;
+        state_(r) = x0_(r);
+        covariance_.row(r) = P0_.row(r);
+        covariance_.col(r) = P0_.col(r);
+      }
+    }
     effectiveSampleSize_ = static_cast<double>(particleCount());
     resampled_ = false;
   }
@@ -202,6 +236,7 @@ class ParticleFilterSIR {
     // values stay in registers; the normals are drawn in the same order as when filling a
     // whole n x p matrix column by column.
     Vector<N> in(n), out(n), noise(n), sample(n);
+    if (anyDeadReckoned_) propagateSharedCovariance();
     for (Index i = 0; i < p; ++i) {
       in = particles_.col(i);
       sampleTransition(in, engine_, out, noise, sample);
@@ -221,16 +256,20 @@ class ParticleFilterSIR {
     effectiveSampleSize_ = std::min(1.0 / weights_.squaredNorm(), static_cast<double>(p));
     // The moments of the weighted particles, before resampling replaces them by copies.
     updateMoments();
+    if (anyDeadReckoned_) covariance_ += sharedSpread_;
     resampled_ = effectiveSampleSize_ <= params_.resamplingThreshold * static_cast<double>(p);
     if (resampled_) resample();
     if (weightsVanished) ++repairs_.weights;
   }
 
   /// sample = f(in, u) + w with w ~ N(0, Q) drawn from `engine`; `out` and `noise` are
-  /// scratch. Throws NumericalError for a non-finite sample.
-  void sampleTransition(const Vector<N>& in, probability::RandomEngine& engine, Vector<N>& out,
+  /// scratch. Throws NumericalError for a non-finite sample. Shared dead reckoning: `in`'s
+  /// dead-reckoned states are set to their shared mean first, and they get no noise of their
+  /// own (Q enters their shared covariance).
+  void sampleTransition(Vector<N>& in, probability::RandomEngine& engine, Vector<N>& out,
                         Vector<N>& noise, Vector<N>& sample) const {
     const Index n = stateSize();
+    if (anyDeadReckoned_) in = deadReckoned_.select(state_, in);
     model_.transition(in, u_, out);
     probability::fillStandardNormal(engine, noise);
     if (noisePerRow_) {
@@ -239,6 +278,7 @@ class ParticleFilterSIR {
       sample.noalias() = noiseRoot_ * noise;
     }
     sample += out;
+    if (anyDeadReckoned_) sample = deadReckoned_.select(out, sample);
     angleStates_.wrap(sample);
     if (!sample.allFinite()) {
       throw NumericalError(
@@ -294,6 +334,46 @@ class ParticleFilterSIR {
         noiseScale_(r) = noiseRoot_(r, c);
       }
       if (nonzeros > 1) noisePerRow_ = false;
+    }
+  }
+
+  /// sharedSpread_ = D S S^T D^T + Q on the dead-reckoned block (zero elsewhere): the shared
+  /// covariance P = S S^T carried through f by central differences along the columns of S about
+  /// the mean, D s = (f(x + h s) - f(x - h s)) / 2h with h = sqrt(3) (exact for a linear f);
+  /// the particles' spread, added after the step, is the rest. Throws NumericalError for a
+  /// non-finite result, before anything is changed.
+  void propagateSharedCovariance() {
+    constexpr double h = 1.7320508075688772;
+    const Index n = stateSize();
+    sharedSpread_.setZero();
+    for (Index r = 0; r < n; ++r) {
+      for (Index c = 0; c < n; ++c) {
+        if (deadReckoned_(r) && deadReckoned_(c)) sharedSpread_(r, c) = covariance_(r, c);
+      }
+    }
+    sharedRoot_.compute(sharedSpread_);
+    const Matrix<N, N>& S = sharedRoot_.matrix();
+    Vector<N> ahead(n), behind(n), forward(n), backward(n), difference(n);
+    sharedSpread_.setZero();
+    for (Index c = 0; c < n; ++c) {
+      if (S.col(c).isZero(0.0)) continue;
+      ahead = state_ + h * S.col(c);
+      behind = state_ - h * S.col(c);
+      model_.transition(ahead, u_, forward);
+      model_.transition(behind, u_, backward);
+      difference = forward - backward;
+      angleStates_.wrap(difference);
+      difference = deadReckoned_.select(difference / (2.0 * h), Vector<N>::Zero(n));
+      sharedSpread_.noalias() += difference * difference.transpose();
+    }
+    for (Index r = 0; r < n; ++r) {
+      for (Index c = 0; c < n; ++c) {
+        if (deadReckoned_(r) && deadReckoned_(c)) sharedSpread_(r, c) += Q_(r, c);
+      }
+    }
+    if (!sharedSpread_.allFinite()) {
+      throw NumericalError(
+          "ParticleFilterSIR: the shared dead-reckoned covariance is not finite; step rejected");
     }
   }
 
@@ -416,6 +496,10 @@ class ParticleFilterSIR {
   AngleMask<N> angleStates_;
   AngleMask<M> angleMeasurements_;
   NumericalRepairs repairs_;
+  Mask<N> deadReckoned_;  // carried as one shared Gaussian (sharedDeadReckoning)
+  bool anyDeadReckoned_ = false;
+  probability::CovarianceSquareRoot<N> sharedRoot_;
+  Matrix<N, N> sharedSpread_;  // what the shared block adds to the particles' spread in a step
 };
 
 }  // namespace estimation

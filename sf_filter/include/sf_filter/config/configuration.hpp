@@ -51,6 +51,7 @@
 //   UKF_PROPAGATED_MEAN                      -    -    o    -    -    -    -
 //   NUMBER_OF_PARTICLES                      -    -    -    o    -    -    -
 //   RANDOM_SEED, RESAMPLING_THRESHOLD        -    -    -    o    -    -    -
+//   PF_SHARED_DEAD_RECKONING                 -    -    -    o    -    -    -
 //   WINDOW_SIZE                              -    -    -    -    R    R    o
 //   WEIGHTING_COEFFICIENTS                   x    x    x    x    o    x    x
 //   INPUT_ALIGNMENT                          o    o    o    o    o    o    o
@@ -99,6 +100,9 @@
 //                               weighted mean.            Default 1 with ANGLE_STATES, else 0.
 //   NUMBER_OF_PARTICLES         integer >= 1.                              Default 1000.
 //   RANDOM_SEED                 integer >= 0.                              Default 42.
+//   PF_SHARED_DEAD_RECKONING    1: the states no measurement weighs (a dead-reckoned pose) are
+//                               one Gaussian shared by the particles; 0: per particle.
+//                                                         Default 1 with ANGLE_STATES, else 0.
 //   RESAMPLING_THRESHOLD        fraction of NUMBER_OF_PARTICLES in [0, 1]; resample when the
 //                               effective sample size drops below it.      Default 0.5.
 //   WINDOW_SIZE                 integer >= 1: measurements per input averaged. CWA default 1.
@@ -160,7 +164,7 @@
 //     measurement_noise_covariance (R, m x m), initial_state (x0), initial_error_covariance (P0),
 //     each method's own parameters (SF_METHOD_PARAMETER in config/methods/<method>.hpp:
 //     number_of_particles, random_seed, resampling_threshold, ukf_alpha, ukf_beta, ukf_kappa,
-//     ukf_propagated_mean), window_size, weighting_coefficients (Eigen::VectorXd, empty =
+//     ukf_propagated_mean, pf_shared_dead_reckoning), window_size, weighting_coefficients (Eigen::VectorXd, empty =
 //     equal weights) };
 //   Parameters defaultParameters(double estimation_period_ms = kEstimationPeriodMs);
 //     (entries using T are evaluated with T = estimation_period_ms / 1000)

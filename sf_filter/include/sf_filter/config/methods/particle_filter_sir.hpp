@@ -1,6 +1,6 @@
 // Traits of METHOD PARTICLE_FILTER_SIR (thesis Algorithm 3.4): included once per pass by
 // config/methods.hpp, which explains the passes. Its own macros: NUMBER_OF_PARTICLES,
-// RANDOM_SEED, RESAMPLING_THRESHOLD. The model's macros are checked for every model-based
+// RANDOM_SEED, RESAMPLING_THRESHOLD, PF_SHARED_DEAD_RECKONING. The model's macros are checked for every model-based
 // method by validation.hpp (SF_METHOD_KIND_MODEL).
 
 // clang-format off
@@ -25,6 +25,17 @@
 #else
 #define SF_CFG_RESAMPLING_THRESHOLD 0.5
 #endif
+// Shared dead reckoning (estimation::ParticleFilterParameters::sharedDeadReckoning): on for a
+// state with angles, whose pose is dead-reckoned in every shipped header and is otherwise the
+// path of a few resampled ancestors (doc/estimation.md); off otherwise, so flat headers replay
+// as before.
+#if defined(PF_SHARED_DEAD_RECKONING)
+#define SF_CFG_PF_SHARED_DEAD_RECKONING (PF_SHARED_DEAD_RECKONING)
+#elif defined(ANGLE_STATES)
+#define SF_CFG_PF_SHARED_DEAD_RECKONING 1
+#else
+#define SF_CFG_PF_SHARED_DEAD_RECKONING 0
+#endif
 
 #elif SF_METHOD_PART == SF_METHOD_PART_PARAMETERS
 // Its run-time parameters: type, name (member of sf_config::Parameters and FilterParameters,
@@ -33,6 +44,7 @@
 SF_METHOD_PARAMETER(int, number_of_particles, 1000, SF_CFG_NUMBER_OF_PARTICLES)
 SF_METHOD_PARAMETER(unsigned, random_seed, 42, SF_CFG_RANDOM_SEED)
 SF_METHOD_PARAMETER(double, resampling_threshold, 0.5, SF_CFG_RESAMPLING_THRESHOLD)
+SF_METHOD_PARAMETER(bool, pf_shared_dead_reckoning, false, (SF_CFG_PF_SHARED_DEAD_RECKONING) != 0)
 
 #elif SF_METHOD_PART == SF_METHOD_PART_TUNING
 // Why the noise identification (tuning/noise_tuning.hpp) refuses it.
@@ -52,6 +64,9 @@ SF_METHOD_TUNING(PARTICLE_FILTER_SIR,
 #if defined(RESAMPLING_THRESHOLD)
 #pragma GCC warning "RESAMPLING_THRESHOLD is not used by the chosen METHOD and is ignored"
 #endif
+#if defined(PF_SHARED_DEAD_RECKONING)
+#pragma GCC warning "PF_SHARED_DEAD_RECKONING is not used by the chosen METHOD and is ignored"
+#endif
 
 #elif SF_METHOD_PART == SF_METHOD_PART_CHECKS && METHOD == PARTICLE_FILTER_SIR
 #if defined(NUMBER_OF_PARTICLES)
@@ -69,6 +84,12 @@ static_assert((RESAMPLING_THRESHOLD) >= 0 && (RESAMPLING_THRESHOLD) <= 1,
               "(resample when the effective sample size drops below it), found '"
               SF_PP_STR(RESAMPLING_THRESHOLD) "'");
 #endif
+#if defined(PF_SHARED_DEAD_RECKONING)
+static_assert((PF_SHARED_DEAD_RECKONING) == 0 || (PF_SHARED_DEAD_RECKONING) == 1,
+              "PF_SHARED_DEAD_RECKONING: expected 1 (the states no measurement weighs carried as "
+              "one Gaussian shared by the particles) or 0 (per particle), found '"
+              SF_PP_STR(PF_SHARED_DEAD_RECKONING) "'");
+#endif
 // clang-format on
 
 #elif SF_METHOD_PART == SF_METHOD_PART_BINDING && METHOD == PARTICLE_FILTER_SIR
@@ -83,6 +104,7 @@ inline Filter makeFilter(const sf_config::Parameters& p) {
   pf.particles = p.number_of_particles;
   pf.seed = p.random_seed;
   pf.resamplingThreshold = p.resampling_threshold;
+  pf.sharedDeadReckoning = p.pf_shared_dead_reckoning;
 #if defined(POSE_OUT)
   // A published pose whose heading is an angle: its mean over the particles is taken on SE(2),
   // where poses spread along an arc average to a point of the arc (planar_pose_mean.hpp).
