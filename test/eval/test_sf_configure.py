@@ -77,6 +77,53 @@ class DecisionsTest(unittest.TestCase):
                     self.assertAlmostEqual(got, want, delta=1e-12)
 
 
+def tf_message(*edges):
+    """A tf message (attribute access as rosbag's) of (parent, child, z, yaw) edges."""
+    ns = lambda **kw: type("M", (), kw)  # noqa: E731
+    return ns(transforms=[ns(header=ns(frame_id=parent), child_frame_id=child, transform=ns(
+        translation=ns(x=0.0, y=0.0, z=z),
+        rotation=ns(x=0.0, y=0.0, z=math.sin(yaw / 2), w=math.cos(yaw / 2))))
+        for parent, child, z, yaw in edges])
+
+
+class MountOnTfTest(unittest.TestCase):
+    """A mount published on /tf with one value throughout is written as static transforms
+    (the Husky recording: base_footprint -> base_link -> imu_link on /tf, leading slashes)."""
+
+    def test_a_constant_chain_on_tf_becomes_static_transforms(self):
+        msgs = [(False, tf_message(("/base_footprint", "/base_link", 0.1386, 0.0),
+                                   ("/base_link", "/wheel", 0.0, 0.5 * k)))
+                for k in range(3)] + [(False, tf_message(("/base_link", "/imu_link", 0.0, 0.3)))] * 2
+        edges = sfc.constant_tf_edges(msgs, "base_footprint", "imu_link")
+        self.assertEqual([(p, c) for p, c, _, _ in edges],
+                         [("base_link", "imu_link"), ("base_footprint", "base_link")])
+        self.assertAlmostEqual(edges[0][3][0], 0.3, delta=1e-9)  # yaw
+        self.assertAlmostEqual(edges[1][2][2], 0.1386, delta=1e-9)  # z
+        config = {"static_transform": None, "tf_edges": edges}
+        self.assertEqual(sfc.static_transforms(config)[1],
+                         ("static_base_link", ["0", "0", "0.1386", "0", "0", "0",
+                                               "base_footprint", "base_link"]))
+
+    def test_a_moving_or_unconnected_mount_is_left_to_tf(self):
+        moving = [(False, tf_message(("base_link", "imu_link", 0.0, 0.1 * k))) for k in range(2)]
+        self.assertEqual(sfc.constant_tf_edges(moving, "base_link", "imu_link"), [])
+        other_tree = [(False, tf_message(("map", "imu_link", 0.0, 0.0)))]
+        self.assertEqual(sfc.constant_tf_edges(other_tree, "base_link", "imu_link"), [])
+        # on /tf_static already: nothing to add
+        static = [(True, tf_message(("base_link", "imu_link", 0.0, 0.0)))]
+        self.assertEqual(sfc.constant_tf_edges(static, "base_link", "imu_link"), [])
+
+    def test_the_node_publishes_the_base_frame_and_leaves_an_existing_parent_alone(self):
+        config = {"estimation_period": 0.1, "max_measurement_lag": 0.03,
+                  "base_frame": "base_footprint", "base_has_parent": False}
+        params = sfc.parameters(config)
+        self.assertEqual(params["child_frame_id"], "base_footprint")
+        self.assertNotIn("publish_tf", params)
+        odom = [(False, tf_message(("odom_combined", "base_footprint", 0.0, 0.0)))]
+        config["base_has_parent"] = sfc.has_tf_parent(odom, "base_footprint")
+        self.assertIs(sfc.parameters(config)["publish_tf"], False)
+
+
 # --tune's lines as the node prints them (abridged from the Husky recording's): a first
 # identification, the entries' verdicts, the identification again with the identified ones,
 # the hold-out guard, the tuned NIS.
