@@ -163,7 +163,7 @@ class NoiseTuningTest(unittest.TestCase):
         stdout, _ = self.tune("sf_tune_cart_kf")
         m = re.search(r"--tune: hold-out: tuned on the first 70 % of the recording \(\d+ "
                       r"replays\), on the last 30 % \((\d+) periods\) mean log det S \+ NIS "
-                      r"per period: start (\S+), tuned (\S+): better", stdout)
+                      r"per period: start (\S+), tuned (\S+); gain .*: better", stdout)
         self.assertIsNotNone(m, stdout)
         periods, start, tuned = int(m.group(1)), float(m.group(2)), float(m.group(3))
         self.assertLessEqual(abs(periods - 0.3 * (PERIODS - 1)), 2)
@@ -186,8 +186,8 @@ class NoiseTuningTest(unittest.TestCase):
         out = os.path.join(self.tmp.name, "regime.yaml")
         proc = self.run_node("sf_tune_cart_kf", "--tune", bag, "--out", out)
         self.assertEqual(proc.returncode, 0, proc.stdout + proc.stderr)
-        m = re.search(r"on the last 30 % \((\d+) periods\) .*: start (\S+), tuned (\S+): not "
-                      r"better: .* the start values are kept", proc.stdout)
+        m = re.search(r"on the last 30 % \((\d+) periods\) .*: start (\S+), tuned (\S+); gain .*: "
+                      r"not better: .* the start values are kept", proc.stdout)
         self.assertIsNotNone(m, proc.stdout)
         periods, start = int(m.group(1)), float(m.group(2))
         terms = kalman_terms([(zp, zv) for _, _, _, zp, zv in samples[:-1]], HEADER_Q, HEADER_R)

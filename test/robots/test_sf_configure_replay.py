@@ -149,8 +149,9 @@ class HuskyRecordingTest(unittest.TestCase):
             with open(os.path.join(tmp, "robot.launch")) as f:
                 self.assertIn('args="0 0 0.13857492 0 0 0 base_footprint base_link"', f.read())
             # the tuning's track checked against the recording's GPS
+            # (the tuned track is 0.3 mm worse: not a significant gain)
             self.assertRegex(text, r"- against the GPS `/fix` .*: header's noise [\d.]+ m RMSE, "
-                                   r"tuned [\d.]+ m: (a gain|no gain: keep robot.yaml)")
+                                   r"tuned [\d.]+ m \(.*\): no gain: keep robot.yaml")
             hand_csv = os.path.join(tmp, "hand.csv")
             run([os.path.join(lib_dir, "sf_husky_skid_steer_ekf"), "--replay", HUSKY_BAG,
                  "--csv", hand_csv])
