@@ -51,7 +51,8 @@ class FrameAligner {
   /// Component `axis` (0 x, 1 y, 2 z) of `vector`, given in `frame` at `stamp`, rotated into
   /// the base frame; nullopt if no transform is known (the value is then dropped and counted).
   /// On the first message of an input the transform may still be on its way: it waits up to
-  /// ~transform_timeout for it (blocking the node's callbacks, once per input).
+  /// ~transform_timeout for it (blocking the node's callbacks, once per input), unless tf
+  /// already has the frames at a later time (transformMayStillArrive).
   std::optional<double> align(std::size_t input, const std::string& frame, const ros::Time& stamp,
                               const std::array<double, 3>& vector, int axis) {
     State& s = states_.at(input);
@@ -61,7 +62,11 @@ class FrameAligner {
     v.z = vector[2];
     std::string error;
     auto rotated = rotateVector(buffer_, v, frame, baseFrame_, stamp, &error);
-    if (!rotated && !s.seen) {
+    // Not for a value stamped before the transforms tf has: that wait lasted the whole
+    // timeout, blocking the node's callbacks while its /clock ran on, and made the values
+    // queued behind it late (the Husky recording's first IMU value, doc/real_robot.md); the
+    // replay drops such a value at once.
+    if (!rotated && !s.seen && transformMayStillArrive(buffer_, baseFrame_, frame, stamp)) {
       const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout_);
       while (!rotated && ros::ok() && ros::WallTime::now() < deadline) {
         ros::WallDuration(0.01).sleep();
