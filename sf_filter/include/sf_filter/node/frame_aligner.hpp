@@ -62,13 +62,14 @@ class FrameAligner {
     v.z = vector[2];
     std::string error;
     auto rotated = rotateVector(buffer_, v, frame, baseFrame_, stamp, &error);
-    // Not for a value stamped before the transforms tf has: that wait lasted the whole
-    // timeout, blocking the node's callbacks while its /clock ran on, and made the values
-    // queued behind it late (the Husky recording's first IMU value, doc/real_robot.md); the
-    // replay drops such a value at once.
-    if (!rotated && !s.seen && transformMayStillArrive(buffer_, baseFrame_, frame, stamp)) {
+    if (!rotated && !s.seen) {
       const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout_);
-      while (!rotated && ros::ok() && ros::WallTime::now() < deadline) {
+      // Not once tf has the frames after the value's stamp: that wait lasted the whole
+      // timeout, blocking the node's callbacks while its /clock ran on, and made the values
+      // queued behind it late (the Husky recording's first IMU value, stamped before its
+      // first transforms, doc/real_robot.md); the replay drops such a value at once.
+      while (!rotated && ros::ok() && ros::WallTime::now() < deadline &&
+             transformMayStillArrive(buffer_, baseFrame_, frame, stamp)) {
         ros::WallDuration(0.01).sleep();
         rotated = rotateVector(buffer_, v, frame, baseFrame_, stamp, &error);
       }
