@@ -85,11 +85,11 @@ def configured_runs():
     return [(r["node"], r["output"], r.get("params", "")) for r in runs]
 
 
-def player_connections():
-    """{topic: set of subscriber nodes} of the player's connected publications, or None while
-    the player is not up."""
+def player_connections(publisher=PLAYER):
+    """{topic: set of subscriber nodes} of the player's (or `publisher`'s) connected
+    publications, or None while it is not up."""
     try:
-        uri = rosnode.get_api_uri(rosgraph.Master(rospy.get_name()), PLAYER)
+        uri = rosnode.get_api_uri(rosgraph.Master(rospy.get_name()), publisher)
         if not uri:
             return None
         code, _, bus = xmlrpc.client.ServerProxy(uri).getBusInfo(rospy.get_name())

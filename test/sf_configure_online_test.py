@@ -59,7 +59,8 @@ TOOL = os.path.join(PKG_DIR, "tools", "sf_configure")
 sys.path.insert(0, os.path.join(PKG_DIR, "tools", "eval"))
 sys.dont_write_bytecode = True
 import evaluate  # noqa: E402
-from nav3ctrl_online_test import find_executable, wait_until_nodes_connected  # noqa: E402
+from nav3ctrl_online_test import (find_executable, player_connections,  # noqa: E402
+                                  wait_until_nodes_connected)
 
 AGREEMENT = 0.05  # m, the issue's "online and offline agree to 0.05 m"
 TRUTH_TOPIC = "ground_truth/pose"
@@ -98,12 +99,27 @@ def offline_counters(report):
 
 
 def launched_node(launch_path):
-    """(name, type) of the sf_pkg node in the written launch file."""
-    node = [n for n in ElementTree.parse(launch_path).getroot().iter("node")
-            if n.get("pkg") == "sf_pkg"]
+    """(name, type) of the sf_pkg node in the written launch file, and the names of its
+    static transform publishers."""
+    nodes = list(ElementTree.parse(launch_path).getroot().iter("node"))
+    node = [n for n in nodes if n.get("pkg") == "sf_pkg"]
     if len(node) != 1:
         raise AssertionError("%s: %d sf_pkg nodes, expected 1" % (launch_path, len(node)))
-    return "/" + node[0].get("name"), node[0].get("type")
+    statics = ["/" + n.get("name") for n in nodes if n.get("type") == "static_transform_publisher"]
+    return "/" + node[0].get("name"), node[0].get("type"), statics
+
+
+def wait_until_static_transforms_delivered(test, node, publishers, timeout):
+    """Until each of the launch file's static transform publishers is connected to `node` on
+    /tf_static: the latched transforms reach its tf listener on connecting, before the player
+    starts, as on a robot whose static transforms are up before its sensors. (A /tf message of
+    the same frame received first would make tf2 keep the frame as a dynamic one.)"""
+    start = time.monotonic()
+    while not all(node in (player_connections(p) or {}).get("/tf_static", set())
+                  for p in publishers):
+        test.assertLess(time.monotonic() - start, timeout,
+                        "%s did not connect to the static transforms of %s" % (node, publishers))
+        time.sleep(0.05)
 
 
 class SfConfigureOnlineTest(unittest.TestCase):
@@ -127,7 +143,7 @@ class SfConfigureOnlineTest(unittest.TestCase):
             cls.report = f.read()
         cls.params = read_parameters(os.path.join(cls.out, "robot.yaml"))
         launch = os.path.join(cls.out, "robot.launch")
-        cls.node, cls.node_type = launched_node(launch)
+        cls.node, cls.node_type, cls.statics = launched_node(launch)
         cls.log_path = os.path.join(cls.out, "roslaunch.log")
         cls.log = open(cls.log_path, "w")
         cls.launch = subprocess.Popen(["roslaunch", "--wait", launch], stdout=cls.log,
@@ -167,6 +183,7 @@ class SfConfigureOnlineTest(unittest.TestCase):
         truth = evaluate.load_truth(self.bag) if TRUTH_TOPIC in topics else None
         try:
             wait_until_nodes_connected(self, [self.node], WALL_TIMEOUT, subscribed_only=True)
+            wait_until_static_transforms_delivered(self, self.node, self.statics, WALL_TIMEOUT)
         except AssertionError as e:
             raise AssertionError("%s\nroslaunch (exit %s):\n%s" % (e, self.launch.poll(),
                                                                    self.node_log()))

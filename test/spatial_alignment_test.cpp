@@ -113,6 +113,33 @@ TEST(VectorRotation, DynamicFrameIsInterpolatedButNeverExtrapolated) {
   EXPECT_NE(error.find("extrapolation"), std::string::npos) << error;
 }
 
+TEST(VectorRotation, TransformMayStillArriveOnlyForAStampAfterTheNewestOne) {
+  // The node waits for a transform on an input's first value only while it may still come
+  // (frame_aligner.hpp): not for a value stamped before the oldest transform tf holds (the
+  // Husky recording's first IMU values, stamped before its first /tf message), for which
+  // the wait lasted the whole ~transform_timeout.
+  tf2::BufferCore buffer;
+  EXPECT_TRUE(sf_filter::transformMayStillArrive(buffer, "base_link", "imu_link", ros::Time(10)));
+  geometry_msgs::TransformStamped t;
+  t.header.frame_id = "base_link";
+  t.child_frame_id = "imu_link";
+  t.transform.rotation.w = 1.0;
+  for (double stamp : {10.5, 11.0}) {
+    t.header.stamp = ros::Time(stamp);
+    buffer.setTransform(t, "test", false);
+  }
+  // before the oldest (10.5): a lookup there fails and no later message will fill it in
+  EXPECT_FALSE(sf_filter::rotateVector(buffer, geometry_msgs::Vector3(), "imu_link", "base_link",
+                                       ros::Time(10.0)));
+  EXPECT_FALSE(sf_filter::transformMayStillArrive(buffer, "base_link", "imu_link", ros::Time(10)));
+  // after the newest (11.0): the next message may cover it
+  EXPECT_TRUE(sf_filter::transformMayStillArrive(buffer, "base_link", "imu_link", ros::Time(12)));
+  // a static chain holds at every time: never waited for
+  t.child_frame_id = "gyro_link";
+  buffer.setTransform(t, "test", true);
+  EXPECT_FALSE(sf_filter::transformMayStillArrive(buffer, "base_link", "gyro_link", ros::Time(12)));
+}
+
 TEST(VectorRotation, UnknownOrEmptyFrameFailsWithTheTf2Error) {
   tf2::BufferCore buffer;
   buffer.setTransform(staticTransform("base_link", "imu_link", 0, 0, 0, rpy(0, 0, 0)), "test", true);

@@ -298,5 +298,31 @@ class CovarianceSummaryTest(unittest.TestCase):
         self.assertEqual(s["off_diagonal"], 2)
         self.assertEqual(s["unequal_en"], 1)
 
+class PairedGainTest(unittest.TestCase):
+    """paired_gain: B closer to the fixes than A by more than chance (one-sided 95 %)."""
+
+    def test_hand_computed_bound(self):
+        # d = e_b^2 - e_a^2 = (-1, 0, -1, 0): mean -0.5, variance 1/3, lag-1 autocorrelation
+        # -0.75 (kept at 0): bound -0.5 + 1.6449 sqrt(1/12) = -0.02516 < 0: a gain
+        mean, bound, gain = gr.paired_gain([1, 1, 1, 1], [0, 1, 0, 1])
+        self.assertAlmostEqual(mean, -0.5, delta=1e-12)
+        self.assertAlmostEqual(bound, -0.5 + 1.6448536269514722 * math.sqrt(1 / 12), delta=1e-12)
+        self.assertTrue(gain)
+
+    def test_correlated_differences_count_as_fewer_fixes(self):
+        # d = (-1, -1, 0, 0): mean -0.5, variance 1/3, lag-1 autocorrelation
+        # (0.25 - 0.25 + 0.25) / (3 * 1/3) = 0.25: n_eff = 4 * 0.75 / 1.25 = 2.4,
+        # bound -0.5 + 1.6449 sqrt(1/3 / 2.4) = 0.1130: no gain (independent: -0.0252, a gain)
+        mean, bound, gain = gr.paired_gain([1, 1, 1, 1], [0, 0, 1, 1])
+        self.assertAlmostEqual(bound, -0.5 + 1.6448536269514722 * math.sqrt(1 / 3 / 2.4),
+                               delta=1e-12)
+        self.assertFalse(gain)
+
+    def test_a_worse_or_equal_track_is_no_gain(self):
+        self.assertFalse(gr.paired_gain([1.0, 2.0, 1.5, 0.5], [1.0, 2.0, 1.5, 0.5])[2])
+        self.assertFalse(gr.paired_gain([1.0, 2.0, 1.5, 0.5], [1.1, 2.0, 1.6, 0.5])[2])
+        self.assertFalse(gr.paired_gain([1.0, 2.0], [0.0, 0.0])[2])  # too few fixes
+
+
 if __name__ == "__main__":
     unittest.main()

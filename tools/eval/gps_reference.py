@@ -19,6 +19,11 @@ applied before the errors are taken (--no-align compares the raw coordinates). P
 number of fixes used, the fitted rotation [deg] and shift [m], the RMSE, the maximum and the
 final (last fix used) horizontal error [m].
 
+--against BASELINE compares a second estimate on the same fixes (each aligned on its own) and
+says whether ESTIMATE is closer to them than BASELINE by more than chance (paired_gain: the
+mean of the squared errors' difference per fix, with a one-sided 95 % bound that counts
+neighbouring fixes' correlation): the check of a tuned file against the header's.
+
 --write-track OUT.csv writes the GPS track as time,x,y (x east, y north, metres), a truth
 CSV that evaluate.py --truth reads.
 
@@ -220,6 +225,40 @@ def compare(estimate, reference, align=True, tolerance=ev.DEFAULT_TIME_TOLERANCE
             "rmse": rmse, "max": emax, "final": final}
 
 
+# One-sided 95 % quantile of the standard normal: the paired comparison's bound.
+Z_95 = 1.6448536269514722
+
+
+def paired_gain(errors_a, errors_b):
+    """Whether track B is closer to the fixes than track A by more than chance: the mean of
+    d_k = e_b(k)^2 - e_a(k)^2 over the fixes both use (same stamps), and its one-sided 95 %
+    upper bound d + Z_95 s / sqrt(n_eff), n_eff = n (1 - r) / (1 + r) with r the lag-1
+    autocorrelation of d (kept >= 0: a fix's slow error makes neighbouring d alike). Returns
+    (mean, bound, gain): gain when the bound is below 0, i.e. B's mean squared error is lower
+    with 95 % confidence. Fewer than 3 pairs: no gain."""
+    d = [b * b - a * a for a, b in zip(errors_a, errors_b)]
+    n = len(d)
+    if n < 3:
+        return (sum(d) / n if n else 0.0), math.inf, False
+    mean = sum(d) / n
+    var = sum((x - mean) ** 2 for x in d) / (n - 1)
+    lag = sum((d[k] - mean) * (d[k + 1] - mean) for k in range(n - 1)) / ((n - 1) * var) \
+        if var > 0 else 0.0
+    r = min(max(lag, 0.0), 0.99)
+    bound = mean + Z_95 * math.sqrt(var / (n * (1 - r) / (1 + r)))
+    return mean, bound, bound < 0
+
+
+def compare_two(estimate_a, estimate_b, reference, tolerance=ev.DEFAULT_TIME_TOLERANCE):
+    """compare() of both estimates (each aligned on its own), and paired_gain() of B over A
+    on the fixes both use."""
+    a, b = (compare(e, reference, tolerance=tolerance) for e in (estimate_a, estimate_b))
+    errors_a, errors_b = dict(zip(a["times"], a["errors"])), dict(zip(b["times"], b["errors"]))
+    common = [t for t in a["times"] if t in errors_b]
+    mean, bound, gain = paired_gain([errors_a[t] for t in common], [errors_b[t] for t in common])
+    return a, b, {"n": len(common), "mean": mean, "bound": bound, "gain": gain}
+
+
 def write_track(path, track):
     with open(path, "w") as f:
         f.write("time,x,y\n")
@@ -242,6 +281,9 @@ def main(argv=None):
     parser.add_argument("--no-align", action="store_true",
                         help="no rotation/shift fit: the estimate is already east/north")
     parser.add_argument("--write-track", metavar="CSV", help="write the GPS track (time,x,y)")
+    parser.add_argument("--against", metavar="BASELINE",
+                        help="also compare BASELINE (read as ESTIMATE) and say whether ESTIMATE "
+                             "is significantly closer to the fixes (paired_gain)")
     args = parser.parse_args(argv)
 
     cols = [c.strip() for c in args.pose_columns.split(",")]
@@ -252,6 +294,9 @@ def main(argv=None):
         frame, track = gps_track((f for f in fixes))
         estimate = ev.load_result(args.estimate, cols, args.odom_topic)
         result = compare(estimate, track, align=not args.no_align)
+        if args.against:
+            baseline = ev.load_result(args.against, cols, args.odom_topic)
+            base, result, paired = compare_two(baseline, estimate, track)
     except (ValueError, OSError) as exc:
         print("error: %s" % exc, file=sys.stderr)
         return 2
@@ -265,6 +310,12 @@ def main(argv=None):
         print("fit: rotation %.2f deg, shift (%.3f, %.3f) m" % (math.degrees(theta), tx, ty))
     print("RMSE %.3f m, max %.3f m, final %.3f m" % (result["rmse"], result["max"],
                                                      result["final"]))
+    if args.against:
+        print("against %s (RMSE %.4f m; this estimate %.4f m), over %d fixes: mean of the "
+              "squared errors' difference %.4g m^2, 95 %% upper bound %.4g m^2: %s" % (
+                  args.against, base["rmse"], result["rmse"], paired["n"], paired["mean"],
+                  paired["bound"], "a gain" if paired["gain"] else "no gain (not significantly "
+                  "closer to the fixes)"))
     return 0
 
 

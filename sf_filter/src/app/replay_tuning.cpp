@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/replay_command.hpp"
+#include "sf_filter/core/nis_window.hpp"
 #include "sf_filter/tuning/event_log.hpp"
 #include "sf_filter/tuning/tuned_parameters_file.hpp"
 
@@ -84,9 +85,19 @@ std::vector<FreeEntry> reportIdentification(const std::string& name,
   return kept;
 }
 
+/// The gain the guard requires on the held-out part: the held-out cost of the start values
+/// minus the tuned ones' (summed over its periods: J is twice the negative log-likelihood, so
+/// this is the likelihood-ratio statistic) must exceed the chi-square 95 % quantile with one
+/// degree of freedom per tuned entry, what fitting that many entries gains by chance on the
+/// data it was fitted on (Wilks). A smaller gain is not told from noise.
+double holdoutThreshold(std::size_t entries) {
+  const double k = static_cast<double>(entries);
+  return k * chiSquareBandPerDof(k, 0.10).upper;  // one-sided 95 %: the two-sided 90 % band's top
+}
+
 /// The hold-out guard: the free entries tuned again on the first part of the recording, and
-/// whether those values predict the held-out rest better than `start` does (mean cost per
-/// period with an innovation, the filter run through the first part).
+/// whether those values predict the held-out rest significantly better than `start` does
+/// (holdoutThreshold; the filter run through the first part).
 bool holdoutGuard(const ReplayCommand& c, const EventLog& events, const EngineMaker& makeEngine,
                   const FilterParameters& start, const std::vector<FreeEntry>& free) {
   const std::string& name = c.options.nodeName;
@@ -102,16 +113,19 @@ bool holdoutGuard(const ReplayCommand& c, const EventLog& events, const EngineMa
         name.c_str(), percent);
     return false;
   }
-  const bool better = after.mean < before.mean;
+  const double gain = (before.mean - after.mean) * static_cast<double>(before.periods);
+  const double threshold = holdoutThreshold(free.size());
+  const bool better = gain > threshold;  // false for NaN, and for a failed tuned step (+inf)
   std::printf(
       "%s: --tune: hold-out: tuned on the first %.3g %% of the recording (%d replays), "
       "on the last %.3g %% (%llu periods) mean log det S + NIS per period: start %.6g, "
-      "tuned %.6g: %s\n",
+      "tuned %.6g; gain %.4g against %.4g (chi-square 95 %%, %zu entries): %s\n",
       name.c_str(), 100.0 - percent, first.evaluations, percent,
-      static_cast<unsigned long long>(before.periods), before.mean, after.mean,
+      static_cast<unsigned long long>(before.periods), before.mean, after.mean, gain, threshold,
+      free.size(),
       better ? "better"
-             : "not better: the tuning does not predict unseen data better; the start "
-               "values are kept");
+             : "not better: the tuning does not predict unseen data significantly better; "
+               "the start values are kept");
   return better;
 }
 

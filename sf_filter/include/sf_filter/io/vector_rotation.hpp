@@ -38,6 +38,21 @@ inline std::optional<geometry_msgs::TransformStamped> lookupRotation(const tf2::
   }
 }
 
+/// Whether a transform taking `source` to `target` at `stamp` may still arrive, once a lookup
+/// at `stamp` failed: yes while the frames are not connected or tf's newest common time of
+/// their chain is older than `stamp`; no when tf connects them at a later time (a transform
+/// at a stamp before the oldest one held is not filled in later: each publisher sends its
+/// transforms in stamp order) and for static chains, which hold at every time.
+inline bool transformMayStillArrive(const tf2::BufferCore& buffer, const std::string& target,
+                                    const std::string& source, const ros::Time& stamp) {
+  try {
+    const ros::Time latest = buffer.lookupTransform(target, source, ros::Time(0)).header.stamp;
+    return !latest.isZero() && latest < stamp;
+  } catch (const tf2::TransformException&) {
+    return true;
+  }
+}
+
 /// `vector`, given in frame `source`, expressed in frame `target` (see lookupRotation()).
 inline std::optional<geometry_msgs::Vector3> rotateVector(
     const tf2::BufferCore& buffer, const geometry_msgs::Vector3& vector, const std::string& source,
