@@ -232,7 +232,7 @@ std::unique_ptr<IEstimator> createParticle(const ParameterMap& map) {
   const ParameterReader in(
       "ParticleFilterSIR", map,
       {"model", "Q", "R", "x0", "P0", "particles", "seed", "resampling-threshold", "angle-states",
-       "angle-measurements", "dead-reckoned-states"});
+       "angle-measurements", "dead-reckoned-states", "proposal"});
   FunctionModel model = in.model();
   const GaussianParameters g("ParticleFilterSIR", in, model.stateSize(), model.measurementSize());
   ParticleFilterParameters pf;
@@ -243,6 +243,9 @@ std::unique_ptr<IEstimator> createParticle(const ParameterMap& map) {
   pf.resamplingThreshold = in.number("resampling-threshold", pf.resamplingThreshold);
   pf.sharedDeadReckoning =
       in.choice("dead-reckoned-states", {"per-particle", "shared"}, "per-particle") == "shared";
+  if (in.choice("proposal", {"transition", "linearised"}, "transition") == "linearised") {
+    pf.proposal = ParticleProposal::Linearised;
+  }
   return wrap(ParticleFilterSIR<FunctionModel>(model, g.Q, g.R, g.x0, g.P0, pf, in.angles()));
 }
 

@@ -34,10 +34,15 @@
 #include "sf_estimation/numerical_repairs.hpp"
 #include "sf_estimation/parameter_checks.hpp"
 #include "sf_estimation/particle_filter_steps.hpp"
+#include "sf_estimation/particle_proposal.hpp"
 #include "sf_estimation/planar_pose_mean.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
 
 namespace estimation {
+
+/// Where the particles are drawn from: the transition N(f(x), Q) (thesis Algorithm 3.4), or the
+/// Kalman posterior of each particle's prediction (particle_proposal.hpp).
+enum class ParticleProposal { Transition, Linearised };
 
 struct ParticleFilterParameters {
   /// Upper limit of `particles`, so that a mistyped count is refused instead of exhausting
@@ -54,6 +59,7 @@ struct ParticleFilterParameters {
   /// Carry the dead-reckoned states (dead_reckoned_states.hpp) as one Gaussian shared by the
   /// particles (see the top of this file) instead of per particle.
   bool sharedDeadReckoning = false;
+  ParticleProposal proposal = ParticleProposal::Transition;
 };
 
 template <class Model>
@@ -108,6 +114,9 @@ class ParticleFilterSIR {
       anyDeadReckoned_ = deadReckoned_.any();
     }
     sharedSpread_.resize(n, n);
+    if (params.proposal == ParticleProposal::Linearised) {
+      proposal_.emplace(Q, deadReckoned_, R.rows());
+    }
     const Index m = R.rows(), p = params.particles;
     u_ = Vector<L>::Zero(model_.controlSize());
     particles_.resize(n, p);
@@ -235,15 +244,19 @@ class ParticleFilterSIR {
     // Sample: x_i' = f(x_i, u) + w_i, w_i ~ N(0, Q). One particle at a time, so that its
     // values stay in registers; the normals are drawn in the same order as when filling a
     // whole n x p matrix column by column.
-    Vector<N> in(n), out(n), noise(n), sample(n);
     if (anyDeadReckoned_) propagateSharedCovariance();
-    for (Index i = 0; i < p; ++i) {
-      in = particles_.col(i);
-      sampleTransition(in, engine_, out, noise, sample);
-      scratch_.col(i) = sample;
+    newLogWeights_ = logWeights_;
+    if (proposal_ && z.anyAvailable()) {
+      sampleFromProposal(z);
+    } else {
+      Vector<N> in(n), out(n), noise(n), sample(n);
+      for (Index i = 0; i < p; ++i) {
+        in = particles_.col(i);
+        sampleTransition(in, engine_, out, noise, sample);
+        scratch_.col(i) = sample;
+      }
     }
     // Weight: log w_i += log N(z; h(x_i), R) over the present entries.
-    newLogWeights_ = logWeights_;
     if (z.anyAvailable()) weigh(z);
     // Every weight vanished (the likelihood is zero or not a number for every particle): the
     // measurement is dropped, the weights stay those before it.
@@ -284,6 +297,40 @@ class ParticleFilterSIR {
       throw NumericalError(
           "ParticleFilterSIR: the state transition produced a non-finite "
           "particle; step rejected");
+    }
+  }
+
+  /// The linearised proposal (particle_proposal.hpp): the particles' predictions and their mean
+  /// first (the point of H), then each particle's draw; newLogWeights_ gains the ratio of the
+  /// transition's density to the proposal's.
+  void sampleFromProposal(const Measurement<M>& z) {
+    const Index n = stateSize(), p = particleCount();
+    Vector<N> in(n), predicted(n), noise(n), sample(n), mean = Vector<N>::Zero(n);
+    for (Index i = 0; i < p; ++i) {
+      in = particles_.col(i);
+      if (anyDeadReckoned_) in = deadReckoned_.select(state_, in);
+      model_.transition(in, u_, predicted);
+      angleStates_.wrap(predicted);
+      scratch_.col(i) = predicted;
+      // The mean in the chart around the first prediction (angles), weighted as the particles.
+      in = predicted - scratch_.col(0);
+      angleStates_.wrap(in);
+      mean += weights_(i) * in;
+    }
+    mean += scratch_.col(0);
+    angleStates_.wrap(mean);
+    proposal_->prepare(model_, mean, z, R_, angleMeasurements_);
+    for (Index i = 0; i < p; ++i) {
+      probability::fillStandardNormal(engine_, noise);
+      predicted = scratch_.col(i);
+      const double ratio =
+          proposal_->draw(model_, predicted, z, angleStates_, angleMeasurements_, noise, sample);
+      if (!sample.allFinite()) {
+        throw NumericalError(
+            "ParticleFilterSIR: the proposal produced a non-finite particle; step rejected");
+      }
+      scratch_.col(i) = sample;
+      newLogWeights_(i) += ratio;
     }
   }
 
@@ -500,6 +547,7 @@ class ParticleFilterSIR {
   bool anyDeadReckoned_ = false;
   probability::CovarianceSquareRoot<N> sharedRoot_;
   Matrix<N, N> sharedSpread_;  // what the shared block adds to the particles' spread in a step
+  std::optional<LinearisedProposal<Model>> proposal_;  // ParticleProposal::Linearised
 };
 
 }  // namespace estimation

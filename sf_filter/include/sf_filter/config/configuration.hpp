@@ -52,6 +52,7 @@
 //   NUMBER_OF_PARTICLES                      -    -    -    o    -    -    -
 //   RANDOM_SEED, RESAMPLING_THRESHOLD        -    -    -    o    -    -    -
 //   PF_SHARED_DEAD_RECKONING                 -    -    -    o    -    -    -
+//   PF_LINEARISED_PROPOSAL                   -    -    -    o    -    -    -
 //   WINDOW_SIZE                              -    -    -    -    R    R    o
 //   WEIGHTING_COEFFICIENTS                   x    x    x    x    o    x    x
 //   INPUT_ALIGNMENT                          o    o    o    o    o    o    o
@@ -103,6 +104,8 @@
 //   PF_SHARED_DEAD_RECKONING    1: the states no measurement weighs (a dead-reckoned pose) are
 //                               one Gaussian shared by the particles; 0: per particle.
 //                                                         Default 1 with ANGLE_STATES, else 0.
+//   PF_LINEARISED_PROPOSAL      1: each particle drawn from the Kalman posterior of its
+//                               prediction; 0: from the transition.       Default 0.
 //   RESAMPLING_THRESHOLD        fraction of NUMBER_OF_PARTICLES in [0, 1]; resample when the
 //                               effective sample size drops below it.      Default 0.5.
 //   WINDOW_SIZE                 integer >= 1: measurements per input averaged. CWA default 1.
@@ -164,7 +167,7 @@
 //     measurement_noise_covariance (R, m x m), initial_state (x0), initial_error_covariance (P0),
 //     each method's own parameters (SF_METHOD_PARAMETER in config/methods/<method>.hpp:
 //     number_of_particles, random_seed, resampling_threshold, ukf_alpha, ukf_beta, ukf_kappa,
-//     ukf_propagated_mean, pf_shared_dead_reckoning), window_size, weighting_coefficients (Eigen::VectorXd, empty =
+//     ukf_propagated_mean, pf_shared_dead_reckoning, pf_linearised_proposal), window_size, weighting_coefficients (Eigen::VectorXd, empty =
 //     equal weights) };
 //   Parameters defaultParameters(double estimation_period_ms = kEstimationPeriodMs);
 //     (entries using T are evaluated with T = estimation_period_ms / 1000)

@@ -1,6 +1,6 @@
 // Traits of METHOD PARTICLE_FILTER_SIR (thesis Algorithm 3.4): included once per pass by
 // config/methods.hpp, which explains the passes. Its own macros: NUMBER_OF_PARTICLES,
-// RANDOM_SEED, RESAMPLING_THRESHOLD, PF_SHARED_DEAD_RECKONING. The model's macros are checked for every model-based
+// RANDOM_SEED, RESAMPLING_THRESHOLD, PF_SHARED_DEAD_RECKONING, PF_LINEARISED_PROPOSAL. The model's macros are checked for every model-based
 // method by validation.hpp (SF_METHOD_KIND_MODEL).
 
 // clang-format off
@@ -36,6 +36,12 @@
 #else
 #define SF_CFG_PF_SHARED_DEAD_RECKONING 0
 #endif
+// The linearised proposal (estimation::ParticleProposal::Linearised): off unless asked for.
+#if defined(PF_LINEARISED_PROPOSAL)
+#define SF_CFG_PF_LINEARISED_PROPOSAL (PF_LINEARISED_PROPOSAL)
+#else
+#define SF_CFG_PF_LINEARISED_PROPOSAL 0
+#endif
 
 #elif SF_METHOD_PART == SF_METHOD_PART_PARAMETERS
 // Its run-time parameters: type, name (member of sf_config::Parameters and FilterParameters,
@@ -45,6 +51,7 @@ SF_METHOD_PARAMETER(int, number_of_particles, 1000, SF_CFG_NUMBER_OF_PARTICLES)
 SF_METHOD_PARAMETER(unsigned, random_seed, 42, SF_CFG_RANDOM_SEED)
 SF_METHOD_PARAMETER(double, resampling_threshold, 0.5, SF_CFG_RESAMPLING_THRESHOLD)
 SF_METHOD_PARAMETER(bool, pf_shared_dead_reckoning, false, (SF_CFG_PF_SHARED_DEAD_RECKONING) != 0)
+SF_METHOD_PARAMETER(bool, pf_linearised_proposal, false, (SF_CFG_PF_LINEARISED_PROPOSAL) != 0)
 
 #elif SF_METHOD_PART == SF_METHOD_PART_TUNING
 // Why the noise identification (tuning/noise_tuning.hpp) refuses it.
@@ -66,6 +73,9 @@ SF_METHOD_TUNING(PARTICLE_FILTER_SIR,
 #endif
 #if defined(PF_SHARED_DEAD_RECKONING)
 #pragma GCC warning "PF_SHARED_DEAD_RECKONING is not used by the chosen METHOD and is ignored"
+#endif
+#if defined(PF_LINEARISED_PROPOSAL)
+#pragma GCC warning "PF_LINEARISED_PROPOSAL is not used by the chosen METHOD and is ignored"
 #endif
 
 #elif SF_METHOD_PART == SF_METHOD_PART_CHECKS && METHOD == PARTICLE_FILTER_SIR
@@ -90,6 +100,12 @@ static_assert((PF_SHARED_DEAD_RECKONING) == 0 || (PF_SHARED_DEAD_RECKONING) == 1
               "one Gaussian shared by the particles) or 0 (per particle), found '"
               SF_PP_STR(PF_SHARED_DEAD_RECKONING) "'");
 #endif
+#if defined(PF_LINEARISED_PROPOSAL)
+static_assert((PF_LINEARISED_PROPOSAL) == 0 || (PF_LINEARISED_PROPOSAL) == 1,
+              "PF_LINEARISED_PROPOSAL: expected 1 (draw each particle from the Kalman posterior "
+              "of its prediction) or 0 (from the transition), found '"
+              SF_PP_STR(PF_LINEARISED_PROPOSAL) "'");
+#endif
 // clang-format on
 
 #elif SF_METHOD_PART == SF_METHOD_PART_BINDING && METHOD == PARTICLE_FILTER_SIR
@@ -105,6 +121,7 @@ inline Filter makeFilter(const sf_config::Parameters& p) {
   pf.seed = p.random_seed;
   pf.resamplingThreshold = p.resampling_threshold;
   pf.sharedDeadReckoning = p.pf_shared_dead_reckoning;
+  if (p.pf_linearised_proposal) pf.proposal = estimation::ParticleProposal::Linearised;
 #if defined(POSE_OUT)
   // A published pose whose heading is an angle: its mean over the particles is taken on SE(2),
   // where poses spread along an arc average to a point of the arc (planar_pose_mean.hpp).
