@@ -233,4 +233,80 @@ TEST(FusionCoreStamps, RefusesANegativeOrNonFiniteLag) {
   EXPECT_THROW(Core(makeTrain(), options), estimation::ParameterError);
 }
 
+/// The speed input without stamps at 10 Hz, sent 41 ms into each period (as the Pioneer's
+/// wheels, 40-43 ms into the bag's 100 ms cycle), value 1 + j / 2 in period j, with the clock
+/// read every 2 ms (rosbag play's /clock at 1 kHz, -r 2). A value arrives at the first reading
+/// after it was sent; while the node stalls (readings 0.62 .. 0.82 s) nothing is read, and the
+/// two values sent meanwhile arrive after the reading 0.82 s, as roscpp receives them after
+/// the jumped /clock. Lag 0.3 s: the schedule starts one lag before the first reading (0 s),
+/// so three periods without values come first; the estimates up to the period ending at 1 s.
+std::vector<Core::Estimate> stalledCadenceRun(bool cadence) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.maxMeasurementLag = 0.3;
+  options.unstampedCadence = cadence;
+  Core core(makeTrain(), options);
+  Collector out;
+  int sent = 0;
+  std::vector<double> backlog;
+  for (int step = 0; step <= 651; ++step) {
+    const double t = 0.002 * step;
+    if (sent < 10 && t >= 0.041 + 0.1 * sent) backlog.push_back(1.0 + 0.5 * sent++);
+    if (t > 0.62 && t < 0.82) continue;
+    core.advanceTo(t, out);
+    for (const double v : backlog) EXPECT_EQ(core.addMeasurement(0, t, v), Rejection::None);
+    backlog.clear();
+  }
+  return out.estimates;
+}
+
+// Issue 38 D10: a node stalled under load read an unstamped value after roscpp's clock had
+// jumped past the period it was sent in; placed at its arrival it joined the next period's
+// value (AVERAGE merged them) and its own period had none. Placed by its input's cadence (the
+// 100 ms its values came at), each value counts for the period it was sent in, as in the
+// offline replay: the reference is the train given value 1 + j / 2 in every period j.
+TEST(FusionCoreStamps, AnUnstampedValueReadAfterAClockJumpGoesWhereItsCadencePutsIt) {
+  constexpr std::size_t kEmpty = 3;  // the periods ending at -0.2, -0.1 and 0 s
+  const std::vector<Core::Estimate> atArrival = stalledCadenceRun(false);
+  ASSERT_EQ(atArrival.size(), kEmpty + 10);
+  EXPECT_EQ(atArrival[kEmpty + 6].presentInputs, 0) << "the defect this test is about";
+  const std::vector<Core::Estimate> estimates = stalledCadenceRun(true);
+  ASSERT_EQ(estimates.size(), kEmpty + 10);
+  Train reference = makeTrain();
+  for (std::size_t k = 0; k < estimates.size(); ++k) {
+    const double j = static_cast<double>(k) - static_cast<double>(kEmpty);
+    reference.estimate(k < kEmpty ? Measurement<2>::missing() : speedOnly(1.0 + 0.5 * j));
+    EXPECT_NEAR(estimates[k].time, 0.1 * (j + 1.0), 1e-9);
+    expectSameBelief(estimates[k], reference);
+  }
+}
+
+// The cadence only moves a value into a period still open: with the stall longer than the
+// lag (0.2 s stall, no lag) the late values stay at their arrival, as without the option.
+TEST(FusionCoreStamps, ACadenceTimeInAnEstimatedPeriodIsNotUsed) {
+  for (const bool cadence : {false, true}) {
+    Core::Options options;
+    options.period = kPeriod;
+    options.unstampedCadence = cadence;
+    Core core(makeTrain(), options);
+    Collector out;
+    core.advanceTo(0.0, out);
+    for (int j = 0; j < 5; ++j) {
+      core.advanceTo(0.041 + 0.1 * j, out);
+      core.addMeasurement(0, 0.041 + 0.1 * j, 1.0);
+    }
+    core.advanceTo(0.641, out);  // the value sent at 0.541 s arrives after the jump
+    core.addMeasurement(0, 0.641, 3.0);
+    core.addMeasurement(0, 0.641, 5.0);
+    core.advanceTo(0.7, out);
+    ASSERT_EQ(out.estimates.size(), 7u);
+    EXPECT_EQ(out.estimates[5].presentInputs, 0);
+    Train reference = makeTrain();
+    for (int j = 0; j < 5; ++j) reference.estimate(speedOnly(1.0));
+    reference.estimate(Measurement<2>::missing());
+    reference.estimate(speedOnly(4.0));  // 3 and 5 averaged in the period of their arrival
+    expectSameBelief(out.estimates[6], reference);
+  }
+}
+
 }  // namespace
