@@ -244,6 +244,7 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
   ++c.received;
   c.lastArrival = now;
   noteReading(now);
+  if (options_.unstampedCadence) cadences_[static_cast<std::size_t>(input)].noteDelivery(now);
   if (!std::isfinite(value)) {
     ++c.nonFinite;
     return Rejection::NonFinite;
@@ -269,7 +270,7 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
   if (byStamp) {
     time = stamp;
   } else if (options_.unstampedCadence && std::isnan(stamp)) {
-    time = cadenceTime(input, arrival);
+    time = cadenceTime(input, arrival, now);
   }
   bool estimated = false, beyond = false;
   const std::uint64_t k = placeValue(time, estimated, beyond);
@@ -355,11 +356,11 @@ double FusionCoreBase::arrivalTime(double now, double stamp) const {
   return now < time ? time : now;
 }
 
-double FusionCoreBase::cadenceTime(Index input, double arrival) {
+double FusionCoreBase::cadenceTime(Index input, double arrival, double now) {
   ArrivalCadence& cadence = cadences_[static_cast<std::size_t>(input)];
   const double expected = cadence.lateExpected(arrival);
   double time = arrival;
-  if (!std::isnan(expected)) {
+  if (!std::isnan(expected) && othersSilentSince(input, expected, now)) {
     bool estimated = false, beyond = false, arrivalEstimated = false, arrivalBeyond = false;
     const std::uint64_t k = ring_->openPeriodOf(expected, estimated, beyond);
     if (!estimated && k < ring_->openPeriodOf(arrival, arrivalEstimated, arrivalBeyond)) {
@@ -368,6 +369,16 @@ double FusionCoreBase::cadenceTime(Index input, double arrival) {
   }
   cadence.note(arrival, time);
   return time;
+}
+
+bool FusionCoreBase::othersSilentSince(Index input, double t, double now) const {
+  bool evidence = false;
+  for (std::size_t j = 0; j < cadences_.size(); ++j) {
+    if (j == static_cast<std::size_t>(input) || !cadences_[j].delivered()) continue;
+    if (!(cadences_[j].deliveredBefore(now) < t)) return false;
+    evidence = true;
+  }
+  return evidence;
 }
 
 std::uint64_t FusionCoreBase::queuedAhead() const {

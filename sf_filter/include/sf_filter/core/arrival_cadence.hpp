@@ -3,6 +3,8 @@
 // its backlog after roscpp's clock already jumped, issue 38 D10 - can be placed where its
 // sensor's rhythm says it was sent. Such a value carries no other evidence: its receipt time
 // is an upper bound, and the order between its connection and /clock's is lost in a backlog.
+// Every input keeps its deliveries too: other inputs silent since the predicted time are what
+// tells a stalled delivery from a sensor that skipped a value.
 #pragma once
 
 #include <algorithm>
@@ -22,18 +24,23 @@ class ArrivalCadence {
 
   /// The time the cadence predicts for a value arriving at `arrival` (the previous value's
   /// placement plus the median interval) if the value is later than that by more than half an
-  /// interval (a late delivery, not jitter); NaN otherwise or while the cadence is unknown.
+  /// interval (a late delivery, not jitter); NaN otherwise, while the cadence is unknown, and
+  /// when the previous value arrived less than half an interval before the prediction and
+  /// not in the same backlog (the same arrival): then the input is on time again, and a
+  /// prediction from a value placed early (a skipped value taken for a late one) would carry
+  /// the error on.
   double lateExpected(double arrival) const {
     if (count_ < kMinIntervals) return std::numeric_limits<double>::quiet_NaN();
     const double interval = median();
     const double expected = lastTime_ + interval;
-    if (!(interval > 0.0) || !(arrival - expected > 0.5 * interval)) {
+    const bool onTimeAgain = lastArrival_ != arrival && lastArrival_ > expected - 0.5 * interval;
+    if (!(interval > 0.0) || !(arrival - expected > 0.5 * interval) || onTimeAgain) {
       return std::numeric_limits<double>::quiet_NaN();
     }
     return expected;
   }
 
-  /// A value that arrived at `arrival` was placed at `time`.
+  /// A value of this input that arrived at `arrival` was placed at `time`.
   void note(double arrival, double time) {
     if (arrival > lastArrival_) {  // -inf before the first: no interval
       if (!std::isinf(lastArrival_)) {
@@ -44,6 +51,19 @@ class ArrivalCadence {
       lastArrival_ = arrival;
     }
     lastTime_ = time;
+  }
+
+  /// A value of this input (stamped or not) was received at the clock reading `now`.
+  void noteDelivery(double now) {
+    if (now <= newestDelivery_) return;
+    priorDelivery_ = newestDelivery_;
+    newestDelivery_ = now;
+  }
+  /// Whether this input delivered anything yet.
+  bool delivered() const { return !std::isinf(newestDelivery_); }
+  /// The newest delivery before `now` (one at `now` is part of the same backlog); -inf if none.
+  double deliveredBefore(double now) const {
+    return newestDelivery_ == now ? priorDelivery_ : newestDelivery_;
   }
 
   void clear() { *this = ArrivalCadence{}; }
@@ -60,6 +80,8 @@ class ArrivalCadence {
   int count_ = 0, next_ = 0;
   double lastArrival_ = -std::numeric_limits<double>::infinity();
   double lastTime_ = 0.0;
+  double newestDelivery_ = -std::numeric_limits<double>::infinity();
+  double priorDelivery_ = -std::numeric_limits<double>::infinity();
 };
 
 }  // namespace sf_filter

@@ -253,10 +253,14 @@ class FusionCoreBase {
   /// or while two inputs' stamps say that the clock stands still, no earlier than its own stamp
   /// (a stamped value) or the newest stamp (anything else).
   double arrivalTime(double now, double stamp) const;
-  /// The time an unstamped value of input `input` aligned by arrival at `arrival` belongs to
-  /// (Options::unstampedCadence): its arrival, or the time its input's cadence predicts when
-  /// it came late and that period is still open. Notes the value in the cadence.
-  double cadenceTime(Index input, double arrival);
+  /// The time an unstamped value of input `input` aligned by arrival at `arrival` (received
+  /// at `now`) belongs to (Options::unstampedCadence): its arrival, or the time its input's
+  /// cadence predicts when it came late, every other input was silent since (a stalled
+  /// delivery, not a skipped value) and that period is still open. Notes the value.
+  double cadenceTime(Index input, double arrival, double now);
+  /// Whether every other input that delivered at all delivered nothing from time t until the
+  /// values received at `now`, and at least one did deliver: a stall, vouched for by others.
+  bool othersSilentSince(Index input, double t, double now) const;
   void clearLeadStamps();
   /// A clock reading (advanceTo's, or an arrival's): one later than all before means the clock
   /// moves, and the lead stamps are forgotten.
