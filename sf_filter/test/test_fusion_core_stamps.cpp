@@ -4,9 +4,11 @@
 // and counted, inputs aligned by arrival and controls keep using arrival time.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "train_core.hpp"
@@ -231,6 +233,106 @@ TEST(FusionCoreStamps, RefusesANegativeOrNonFiniteLag) {
   EXPECT_THROW(Core(makeTrain(), options), estimation::ParameterError);
   options.maxMeasurementLag = std::numeric_limits<double>::infinity();
   EXPECT_THROW(Core(makeTrain(), options), estimation::ParameterError);
+}
+
+/// The speed input without stamps at 10 Hz, sent 41 ms into each period (as the Pioneer's
+/// wheels, 40-43 ms into the bag's 100 ms cycle), value 1 + j / 2 in period j, and the
+/// acceleration 0 stamped at 100 Hz (as its IMU), with the clock read every 2 ms (rosbag
+/// play's /clock at 1 kHz, -r 2). A value arrives at the first reading after it was sent;
+/// while the node stalls (readings after `stallFrom` and before `stallTo`) nothing is read, and
+/// what was sent meanwhile arrives after the reading `stallTo`, as roscpp receives it after
+/// the jumped /clock (the acceleration first). The speed value of period `skipped` is never
+/// sent. The schedule starts one lag before the first reading (0 s): with the lag 0.3 s three
+/// periods without values come first. The estimates up to the period ending at 1 s.
+struct CadenceRun {
+  bool cadence = true;
+  double lag = 0.3;
+  double stallFrom = 0.62, stallTo = 0.82;
+  int skipped = -1;
+};
+
+std::vector<Core::Estimate> runCadence(const CadenceRun& run) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.maxMeasurementLag = run.lag;
+  options.unstampedCadence = run.cadence;
+  Core core(makeTrain(), options);
+  Collector out;
+  int speeds = 0, accelerations = 0;
+  std::vector<std::pair<int, double>> backlog;  // (input, stamp or speed value)
+  for (int step = 0; step <= static_cast<int>(std::lround((1.002 + run.lag) / 0.002)); ++step) {
+    const double t = 0.002 * step;
+    for (; 0.005 + 0.01 * accelerations <= t; ++accelerations) {
+      backlog.emplace_back(1, 0.005 + 0.01 * accelerations);
+    }
+    for (; speeds < 10 && 0.041 + 0.1 * speeds <= t; ++speeds) {
+      if (speeds != run.skipped) backlog.emplace_back(0, 1.0 + 0.5 * speeds);
+    }
+    if (t > run.stallFrom && t < run.stallTo) continue;
+    core.advanceTo(t, out);
+    std::stable_partition(backlog.begin(), backlog.end(),
+                          [](const auto& v) { return v.first == 1; });
+    for (const auto& [input, v] : backlog) {
+      const Rejection r = input == 1 ? core.addMeasurement(1, t, 0.0, std::nullopt, v)
+                                     : core.addMeasurement(0, t, v);
+      EXPECT_EQ(r, Rejection::None);
+    }
+    backlog.clear();
+  }
+  return out.estimates;
+}
+
+// Issue 38 D10: a node stalled under load read an unstamped value after roscpp's clock had
+// jumped past the period it was sent in; placed at its arrival it joined the next period's
+// value (AVERAGE merged them) and its own period had none. Placed by its input's cadence (the
+// 100 ms its values came at; the acceleration, delivered until the stall and not during it,
+// vouches for the stall), each value counts for the period it was sent in, as in the offline
+// replay: the reference is the train given the speed 1 + j / 2 in every period j, with the
+// acceleration 0 except in the period the stall covers whole ([0.7, 0.8) s), whose
+// accelerations arrived (by arrival) in the period after the stall.
+TEST(FusionCoreStamps, AnUnstampedValueReadAfterAClockJumpGoesWhereItsCadencePutsIt) {
+  constexpr std::size_t kEmpty = 3;  // the periods ending at -0.2, -0.1 and 0 s
+  CadenceRun run;
+  run.cadence = false;
+  const std::vector<Core::Estimate> atArrival = runCadence(run);
+  ASSERT_EQ(atArrival.size(), kEmpty + 10);
+  // the defect this test is about: the speeds of [0.6, 0.7) and [0.7, 0.8) s both missing
+  EXPECT_EQ(atArrival[kEmpty + 6].presentInputs, 1);  // the acceleration read at 0.62 s
+  EXPECT_EQ(atArrival[kEmpty + 7].presentInputs, 0);
+  run.cadence = true;
+  const std::vector<Core::Estimate> estimates = runCadence(run);
+  ASSERT_EQ(estimates.size(), kEmpty + 10);
+  Train reference = makeTrain();
+  for (std::size_t k = 0; k < estimates.size(); ++k) {
+    const double j = static_cast<double>(k) - static_cast<double>(kEmpty);
+    const bool stalled = j == 7.0;
+    reference.estimate(k < kEmpty ? Measurement<2>::missing()
+                       : stalled  ? speedOnly(1.0 + 0.5 * j)
+                                  : speedAndAcceleration(1.0 + 0.5 * j, 0.0));
+    EXPECT_NEAR(estimates[k].time, 0.1 * (j + 1.0), 1e-9);
+    expectSameBelief(estimates[k], reference);
+  }
+}
+
+// The cadence moves nothing when the evidence is missing: a value the sensor skipped (the
+// 200 ms gap at 21.64 s of bags/pioneer_seed1.bag's wheels) while the acceleration kept
+// arriving, and a stall longer than the lag (the period of the prediction already estimated).
+// The estimates are those of the values placed at their arrival.
+TEST(FusionCoreStamps, ASkippedValueOrAnEstimatedPeriodKeepsTheArrival) {
+  CadenceRun skipped;
+  skipped.stallFrom = skipped.stallTo = 2.0;  // no stall
+  skipped.skipped = 5;
+  CadenceRun beyondLag;
+  beyondLag.lag = 0.0;
+  for (CadenceRun run : {skipped, beyondLag}) {
+    const std::vector<Core::Estimate> estimates = runCadence(run);
+    run.cadence = false;
+    const std::vector<Core::Estimate> atArrival = runCadence(run);
+    ASSERT_EQ(estimates.size(), atArrival.size());
+    for (std::size_t k = 0; k < estimates.size(); ++k) {
+      EXPECT_EQ(estimates[k].state, atArrival[k].state) << k;
+    }
+  }
 }
 
 }  // namespace

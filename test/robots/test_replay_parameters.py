@@ -93,6 +93,8 @@ class ReplayParametersTest(unittest.TestCase):
                 ("frame_id: ''\n", "parameter ~frame_id: '' is not a tf2 frame name"),
                 ("periods_on_clock_grid: 1\n",
                  "parameter ~periods_on_clock_grid: expected true or false, found"),
+                ("unstamped_cadence: yes please\n",
+                 "parameter ~unstamped_cadence: expected true or false, found"),
                 ("[1, 2]\n", "expected a dictionary of private parameters")):
             with self.subTest(text=text):
                 proc, out = self.replay(self.bag, "--params", self.yaml(text))

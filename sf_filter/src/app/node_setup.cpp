@@ -13,11 +13,11 @@
 
 #include "app/app_support.hpp"
 #include "sf_filter/definition/node_definition.hpp"
+#include "sf_filter/io/extractor_parameters.hpp"
 #include "sf_filter/io/ros_parameters.hpp"
 #include "sf_filter/node/frame_aligner.hpp"
 #include "sf_filter/node/fusion_node.hpp"
 #include "sf_filter/node/fusion_node_instance.hpp"
-#include "sf_filter/io/extractor_parameters.hpp"
 #include "sf_filter/node/gps_parameters.hpp"
 
 namespace sf_filter::app {
@@ -82,6 +82,7 @@ class StartedFusionNode final : public FusionNodeInstance {
     options.nisWindow = nisWindowPeriods(faults, parameters.estimation_period_ms);
     options.nisTolerance = faults.nisTolerance;
     options.periodsOnClockGrid = faults.periodsOnClockGrid;
+    options.unstampedCadence = faults.unstampedCadence;
     const std::string baseFrame = aligner_ ? aligner_->baseFrame() : def.baseFrame;
     node_.emplace(nh, pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
                   aligner_ ? &*aligner_ : nullptr, faults.diagnosticPeriod,

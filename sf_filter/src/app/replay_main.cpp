@@ -41,6 +41,7 @@ FusionCoreOptions replayCoreOptions(const ReplayCommand& c) {
   options.nisWindow = nisWindowPeriods(c.nis, c.periodMs);
   options.nisTolerance = c.nis.nisTolerance;
   options.periodsOnClockGrid = c.nis.periodsOnClockGrid;
+  options.unstampedCadence = c.nis.unstampedCadence;
   if (!c.tune) return options;
   // The cost sums over the values that reach the filter: a gate would let the optimiser lower
   // it by gating values away, so the identification runs without gates; the NIS needs its

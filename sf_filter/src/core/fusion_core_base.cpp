@@ -125,6 +125,7 @@ FusionCoreBase::FusionCoreBase(const FusionCoreOptions& options, Index inputs, I
     ring_->aligners.emplace_back(inputOptions(i).alignment, inputOptions(i).angle);
   }
   leadStamps_.assign(static_cast<std::size_t>(inputs), -std::numeric_limits<double>::infinity());
+  cadences_.assign(static_cast<std::size_t>(inputs), ArrivalCadence{});
   // A power of two, so that the slot of a period is a bit mask away. Beyond the periods the
   // lag keeps open, maxQueuedPeriods slots hold values that arrive ahead of a stalled clock.
   const auto needed =
@@ -243,6 +244,7 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
   ++c.received;
   c.lastArrival = now;
   noteReading(now);
+  if (options_.unstampedCadence) cadences_[static_cast<std::size_t>(input)].noteDelivery(now);
   if (!std::isfinite(value)) {
     ++c.nonFinite;
     return Rejection::NonFinite;
@@ -264,7 +266,12 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
   }
   const bool byStamp = o.alignByStamp && !std::isnan(stamp);
   const double arrival = arrivalTime(now, stamp);
-  const double time = byStamp ? stamp : arrival;
+  double time = arrival;
+  if (byStamp) {
+    time = stamp;
+  } else if (options_.unstampedCadence && std::isnan(stamp)) {
+    time = cadenceTime(input, arrival, now);
+  }
   bool estimated = false, beyond = false;
   const std::uint64_t k = placeValue(time, estimated, beyond);
   if (byStamp && estimated) {
@@ -347,6 +354,31 @@ double FusionCoreBase::arrivalTime(double now, double stamp) const {
   // Stalled: a stamped value at its stamp, anything else after the newest stamp.
   const double time = std::isnan(stamp) ? leadStamp_ : stamp;
   return now < time ? time : now;
+}
+
+double FusionCoreBase::cadenceTime(Index input, double arrival, double now) {
+  ArrivalCadence& cadence = cadences_[static_cast<std::size_t>(input)];
+  const double expected = cadence.lateExpected(arrival);
+  double time = arrival;
+  if (!std::isnan(expected) && othersSilentSince(input, expected, now)) {
+    bool estimated = false, beyond = false, arrivalEstimated = false, arrivalBeyond = false;
+    const std::uint64_t k = ring_->openPeriodOf(expected, estimated, beyond);
+    if (!estimated && k < ring_->openPeriodOf(arrival, arrivalEstimated, arrivalBeyond)) {
+      time = expected;
+    }
+  }
+  cadence.note(arrival, time);
+  return time;
+}
+
+bool FusionCoreBase::othersSilentSince(Index input, double t, double now) const {
+  bool evidence = false;
+  for (std::size_t j = 0; j < cadences_.size(); ++j) {
+    if (j == static_cast<std::size_t>(input) || !cadences_[j].delivered()) continue;
+    if (!(cadences_[j].deliveredBefore(now) < t)) return false;
+    evidence = true;
+  }
+  return evidence;
 }
 
 std::uint64_t FusionCoreBase::queuedAhead() const {
@@ -512,6 +544,7 @@ void FusionCoreBase::clearInputs() {
   present_ = substituted_ = 0;
   consecutiveFailures_ = 0;
   ring_->newestPlaced = 0;
+  for (ArrivalCadence& cadence : cadences_) cadence.clear();
   clearLeadStamps();
 }
 

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 #include <sf_estimation/types.hpp>
 
+#include "sf_filter/core/arrival_cadence.hpp"
 #include "sf_filter/core/fusion_core_options.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/core/fusion_statistics.hpp"
@@ -252,6 +253,14 @@ class FusionCoreBase {
   /// or while two inputs' stamps say that the clock stands still, no earlier than its own stamp
   /// (a stamped value) or the newest stamp (anything else).
   double arrivalTime(double now, double stamp) const;
+  /// The time an unstamped value of input `input` aligned by arrival at `arrival` (received
+  /// at `now`) belongs to (Options::unstampedCadence): its arrival, or the time its input's
+  /// cadence predicts when it came late, every other input was silent since (a stalled
+  /// delivery, not a skipped value) and that period is still open. Notes the value.
+  double cadenceTime(Index input, double arrival, double now);
+  /// Whether every other input that delivered at all delivered nothing from time t until the
+  /// values received at `now`, and at least one did deliver: a stall, vouched for by others.
+  bool othersSilentSince(Index input, double t, double now) const;
   void clearLeadStamps();
   /// A clock reading (advanceTo's, or an arrival's): one later than all before means the clock
   /// moves, and the lead stamps are forgotten.
@@ -270,6 +279,7 @@ class FusionCoreBase {
   /// (-inf: none since the clock last moved). Stamps stand in for a stalled clock.
   std::vector<double> leadStamps_;
   double leadStamp_ = -std::numeric_limits<double>::infinity();  ///< the largest of them
+  std::vector<ArrivalCadence> cadences_;  ///< per input (Options::unstampedCadence)
   int leaders_ = 0;  ///< inputs with a lead stamp: two or more mean the clock stands still
   /// The latest clock reading seen, by readClock() or as an arrival time.
   double reading_ = -std::numeric_limits<double>::infinity();

@@ -43,6 +43,17 @@ struct FusionCoreOptions {
   /// in the period the replay does (a phase shift of 3 ms moved a 6-minute skid-steer track by
   /// up to 0.28 m, doc/real_robot.md).
   bool periodsOnClockGrid = false;
+  /// Where a value without a stamp, aligned by arrival, goes when it arrives late. false: the
+  /// period of its arrival. true: a value arriving more than half its input's cadence (the
+  /// median of its recent arrival intervals) after the time the cadence predicts (the previous
+  /// value's placement plus that interval), in a later period, goes to the predicted time if
+  /// every other input that delivered anything was silent from then until this value's
+  /// arrival (a stalled delivery, not a skipped value) and that period is still open
+  /// (maxMeasurementLag keeps periods open). A node stalled under load reads the backlog of
+  /// such an input after roscpp's clock already jumped past the period it was sent in; placed
+  /// at its arrival it joins the next period's value (issue 38 D10, doc/reliability.md). The
+  /// offline replay, whose arrivals are the recorded times, uses the same rule.
+  bool unstampedCadence = false;
   /// One entry per input, or none: every input AVERAGE, by arrival time, without gate.
   std::vector<InputOptions> inputs;
   /// How long after its end a period stays open for stamped values [s] (fusion_core.hpp).

@@ -17,6 +17,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <ros/node_handle.h>
@@ -388,6 +389,9 @@ struct FaultSettings {
   /// ~periods_on_clock_grid: period ends on whole multiples of the period in clock time
   /// (FusionCoreOptions::periodsOnClockGrid).
   bool periodsOnClockGrid = false;
+  /// ~unstamped_cadence: a late unstamped value goes where its input's cadence puts it
+  /// (FusionCoreOptions::unstampedCadence).
+  bool unstampedCadence = false;
 };
 
 /// The NIS window's default span. Shorter windows see the regimes of a real robot's noise
@@ -447,6 +451,7 @@ inline void loadInputFaultParameters(const ParameterSource& pnh, std::vector<Inp
 ///   ~nis_tolerance      factor 1 .. 100 (nis_window.hpp), default 2
 ///   ~diagnostic_period  s, 0.01 .. 3600, between diagnostic messages
 ///   ~periods_on_clock_grid  true: period ends on multiples of the period in clock time
+///   ~unstamped_cadence  true: a late unstamped value is placed by its input's cadence
 inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
                                          std::vector<InputOptions>& inputs,
                                          const InputCapabilities& can) {
@@ -485,12 +490,15 @@ inline FaultSettings loadFaultParameters(const ParameterSource& pnh,
         settings.diagnosticPeriod <= kMaxDiagnosticPeriodSeconds)) {
     refuse("diagnostic_period", "expected a number of seconds from 0.01 to 3600");
   }
-  XmlRpc::XmlRpcValue grid;
-  if (pnh.get("periods_on_clock_grid", grid)) {
-    if (grid.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
-      refuse("periods_on_clock_grid", "expected true or false, found " + detail::describe(grid));
+  for (const auto& [name, flag] :
+       {std::pair<const char*, bool*>{"periods_on_clock_grid", &settings.periodsOnClockGrid},
+        {"unstamped_cadence", &settings.unstampedCadence}}) {
+    XmlRpc::XmlRpcValue value;
+    if (!pnh.get(name, value)) continue;
+    if (value.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
+      refuse(name, "expected true or false, found " + detail::describe(value));
     }
-    settings.periodsOnClockGrid = static_cast<bool>(grid);
+    *flag = static_cast<bool>(value);
   }
   return settings;
 }
@@ -581,6 +589,7 @@ inline const std::vector<std::string>& knownParameters() {
                        "nis_tolerance",
                        "diagnostic_period",
                        "periods_on_clock_grid",
+                       "unstamped_cadence",
                        "frame_id",
                        "child_frame_id",
                        "publish_tf",
