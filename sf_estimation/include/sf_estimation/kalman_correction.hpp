@@ -174,7 +174,8 @@ bool settleBelief(Vector<N>& x, Matrix<N, N>& P, const AngleMask<N>& angleStates
   symmetrize(P);
   if (!x.allFinite() || !P.allFinite()) rejectStep(method, "the estimate became non-finite");
   const bool repaired = repairCovariance(P);
-  if (!P.allFinite()) rejectStep(method, "the covariance repair failed");
+  // An unrepaired P is the one just found finite.
+  if (repaired && !P.allFinite()) rejectStep(method, "the covariance repair failed");
   angleStates.wrap(x);
   return repaired;
 }
