@@ -63,16 +63,21 @@ bool positiveDefinite(const Matrix<N, N>& A) {
   Matrix<N, N> W(n, n);  // below the diagonal: L D, the column before its scaling by 1 / D
   Vector<N> inverse(n);  // 1 / D
   Vector<N> l(n);        // row k of L
+  // Unrolled for a filter's sizes, so that the factor stays in registers between the columns.
+#pragma GCC unroll 8
   for (Index k = 0; k < n; ++k) {
     double pivot = A(k, k);
+#pragma GCC unroll 8
     for (Index j = 0; j < k; ++j) {
       l(j) = W(k, j) * inverse(j);
       pivot -= l(j) * W(k, j);
     }
     if (pivot <= 0.0) return false;
     inverse(k) = 1.0 / pivot;
+#pragma GCC unroll 8
     for (Index i = k + 1; i < n; ++i) {
       double sum = A(i, k);
+#pragma GCC unroll 8
       for (Index j = 0; j < k; ++j) sum -= W(i, j) * l(j);
       W(i, k) = sum;
     }
