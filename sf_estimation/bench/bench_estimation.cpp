@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <new>
-#include <random>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -29,6 +28,7 @@
 #include "sf_estimation/particle_filter.hpp"
 #include "sf_estimation/unscented_kalman_filter.hpp"
 #include "support/allocation_counter.hpp"
+#include "support/nav3_drive.hpp"
 
 namespace {
 
@@ -36,13 +36,11 @@ using namespace estimation;
 using models::Nav3Ctrl;
 using models::Nav3Reduced;
 
-constexpr double kPeriod = 0.1;           // T [s]
-constexpr double kRadius = 0.3;           // R [m]
-constexpr std::size_t kDriveSteps = 400;  // 40 s of driving, replayed in a loop
+using sf_bench::kPeriod;
+using sf_bench::kRadius;
 
 // -----------------------------------------------------------------------------
-// Inputs: a simulated drive of the nav3ctrl model (smoothly varying speed and turn rate),
-// observed with the sensor noise of R. nav3red observes the same quantities.
+// Inputs: the simulated drive of support/nav3_drive.hpp, as each path takes them.
 // -----------------------------------------------------------------------------
 struct Drive {
   std::vector<Vector<2>> controls;
@@ -51,22 +49,12 @@ struct Drive {
 };
 
 Drive simulateDrive() {
-  const Nav3Ctrl model{kPeriod, kRadius};
-  const Vector<4> sigma = models::nav3MeasurementNoise().diagonal().cwiseSqrt();
-  std::mt19937_64 engine(7);
-  std::normal_distribution<double> normal;
+  const sf_bench::Nav3Drive simulated = sf_bench::simulateNav3Drive();
   Drive drive;
-  Vector<7> x = Vector<7>::Zero();
-  for (std::size_t k = 0; k < kDriveSteps; ++k) {
+  for (std::size_t k = 0; k < simulated.controls.size(); ++k) {
     const double t = kPeriod * static_cast<double>(k);
-    const Vector<2> u(0.6 + 0.4 * std::sin(0.15 * t), 0.5 * std::sin(0.4 * t));
-    Vector<7> next;
-    model.transition(x, u, next);
-    x = next;
-    Vector<4> z;
-    model.observation(x, z);
-    for (int i = 0; i < 4; ++i) z(i) += sigma(i) * normal(engine);
-
+    const Vector<2>& u = simulated.controls[k];
+    const Vector<4>& z = simulated.readings[k];
     drive.controls.push_back(u);
     drive.measurements.push_back(Measurement<4>::complete(z));
     Input controlInput, measurementInput;

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include "scalar_models.hpp"
 #include "sf_estimation/estimator_factory.hpp"
@@ -50,6 +51,34 @@ TEST(CovarianceRepair, NearestPositiveSemiDefiniteByHand) {
   EXPECT_NEAR(
       (negative - Matrix<2, 2>(Eigen::Vector2d(0.0, 1.0).asDiagonal())).cwiseAbs().maxCoeff(), 0.0,
       1e-15);
+}
+
+// The check of every new covariance (probability::positiveDefinite, square-root-free) against
+// the eigenvalues: true for positive definite matrices of a filter's sizes, false for a
+// singular one and for one whose only negative direction shows in its last pivot.
+TEST(CovarianceRepair, PositiveDefiniteCheckAgreesWithTheEigenvalues) {
+  std::mt19937_64 engine(3);
+  std::normal_distribution<double> normal;
+  for (int trial = 0; trial < 200; ++trial) {
+    Matrix<7, 7> B;
+    for (Index i = 0; i < 7; ++i)
+      for (Index j = 0; j < 7; ++j) B(i, j) = normal(engine);
+    Matrix<7, 7> P = B * B.transpose();
+    // Shifted so that the smallest eigenvalue is +-0.1: definite or clearly indefinite.
+    const double smallest = Eigen::SelfAdjointEigenSolver<Matrix<7, 7>>(P).eigenvalues()(0);
+    const double shift = (trial % 2 == 0 ? 0.1 : -0.1) - smallest;
+    P += shift * Matrix<7, 7>::Identity();
+    const double least = Eigen::SelfAdjointEigenSolver<Matrix<7, 7>>(P).eigenvalues()(0);
+    EXPECT_EQ(estimation::probability::positiveDefinite(P), least > 0.0) << "trial " << trial;
+  }
+  Matrix<2, 2> singular;
+  singular << 1, 1, 1, 1;  // eigenvalues 2 and 0
+  EXPECT_FALSE(estimation::probability::positiveDefinite(singular));
+  Matrix<3, 3> lastPivotNegative;  // pivots 4, 1, -1: the leading 2x2 block is definite
+  lastPivotNegative << 4, 2, 0, 2, 2, 1, 0, 1, 0;
+  EXPECT_FALSE(estimation::probability::positiveDefinite(lastPivotNegative));
+  lastPivotNegative(2, 2) = 2;  // pivots 4, 1, 1
+  EXPECT_TRUE(estimation::probability::positiveDefinite(lastPivotNegative));
 }
 
 TEST(CovarianceRepair, IndefiniteUnscentedPredictionIsProjected) {

@@ -379,9 +379,9 @@ class BatchMapSmoother {
 };
 
 /// The batch smoother of a Kalman filter: its A, B, H, Q, R and angles.
-template <int N, int M, int L>
-BatchMapSmoother<LinearStateSpace<N, M, L>> batchSmootherFor(const KalmanFilter<N, M, L>& filter,
-                                                             BatchMapOptions options = {}) {
+template <int N, int M, int L, class Layout>
+BatchMapSmoother<LinearStateSpace<N, M, L>> batchSmootherFor(
+    const KalmanFilter<N, M, L, Layout>& filter, BatchMapOptions options = {}) {
   return {LinearStateSpace<N, M, L>{filter.transitionMatrix(), filter.controlMatrix(),
                                     filter.observationMatrix()},
           filter.processNoise(),

@@ -41,9 +41,8 @@ class ExtendedKalmanFilter
     if (z.anyAvailable()) {
       const Index m = this->measurementSize();
       Matrix<M, N> H(m, n);
-      observationJacobian(model_, x, H);
       Vector<M> expected(m);
-      model_.observation(x, expected);
+      observationJacobian(model_, x, H, &expected);
       Vector<M> y = z.value - expected;
       this->angleMeasurements_.wrap(y);
       neutraliseMissing(z, y, H);
@@ -62,8 +61,7 @@ class ExtendedKalmanFilter
     Matrix<N, N> P(n, n);
     predict(x, P);
     Matrix<M, N> H(m, n);
-    observationJacobian(model_, x, H);
-    model_.observation(x, out.mean);
+    observationJacobian(model_, x, H, &out.mean);
     this->angleMeasurements_.wrap(out.mean);
     projectCovariance<N, M>(H, P, out.covariance);
     out.noise = this->R_;
@@ -79,8 +77,7 @@ class ExtendedKalmanFilter
   void predict(Vector<N>& x, Matrix<N, N>& P) const {
     const Index n = this->stateSize();
     Matrix<N, N> A(n, n);
-    transitionJacobian(model_, this->x_, this->u_, A);
-    model_.transition(this->x_, this->u_, x);
+    transitionJacobian(model_, this->x_, this->u_, A, &x);
     propagateCovariance<N>(A, this->P_, this->Q_, P);
   }
 

@@ -18,11 +18,12 @@ namespace detail {
 template <class Model, class = void>
 struct HasTransitionJacobian : std::false_type {};
 template <class Model>
-struct HasTransitionJacobian<
-    Model, std::void_t<decltype(std::declval<const Model&>().transitionJacobian(
-               std::declval<const Vector<Model::StateSize>&>(),
-               std::declval<const Vector<Model::ControlSize>&>(),
-               std::declval<Matrix<Model::StateSize, Model::StateSize>&>()))>> : std::true_type {};
+struct HasTransitionJacobian<Model,
+                             std::void_t<decltype(std::declval<const Model&>().transitionJacobian(
+                                 std::declval<const Vector<Model::StateSize>&>(),
+                                 std::declval<const Vector<Model::ControlSize>&>(),
+                                 std::declval<Matrix<Model::StateSize, Model::StateSize>&>()))>>
+    : std::true_type {};
 
 template <class Model, class = void>
 struct HasObservationJacobian : std::false_type {};
@@ -46,11 +47,17 @@ void seedDerivatives(const Vector<ADVector::RowsAtCompileTime>& x, ADVector& see
   }
 }
 
-/// Copies the derivative rows of an AutoDiff result into a Jacobian. Entries that do not
-/// depend on x (constants, controls) may carry an empty derivative vector.
+/// Copies the derivative rows of an AutoDiff result into a Jacobian, and its values into
+/// `plain` when given. Entries that do not depend on x (constants, controls) may carry an
+/// empty derivative vector.
 template <class ADVector, class JacobianType>
-void extractJacobian(const ADVector& values, Index cols, JacobianType& jacobian) {
+void extractJacobian(const ADVector& values, Index cols, JacobianType& jacobian,
+                     Vector<ADVector::RowsAtCompileTime>* plain = nullptr) {
   jacobian.resize(values.size(), cols);
+  if (plain) {
+    plain->resize(values.size());
+    for (Index i = 0; i < values.size(); ++i) (*plain)(i) = values(i).value();
+  }
   for (Index i = 0; i < values.size(); ++i) {
     const auto& d = values(i).derivatives();
     if (d.size() == cols) {
@@ -63,30 +70,37 @@ void extractJacobian(const ADVector& values, Index cols, JacobianType& jacobian)
 
 }  // namespace detail
 
-/// A = df/dx at (x, u).
+/// A = df/dx at (x, u), and f(x, u) in `next` when it is given. Without the model's own
+/// Jacobian both come from one pass of automatic differentiation: AutoDiffScalar computes each
+/// value by the same double operations as the plain evaluation, so `next` is that evaluation's
+/// bit for bit, and the EKF need not run the model a second time.
 template <class Model>
 void transitionJacobian(const Model& model, const Vector<Model::StateSize>& x,
                         const Vector<Model::ControlSize>& u,
-                        Matrix<Model::StateSize, Model::StateSize>& A) {
+                        Matrix<Model::StateSize, Model::StateSize>& A,
+                        Vector<Model::StateSize>* next = nullptr) {
   if constexpr (detail::HasTransitionJacobian<Model>::value) {
     model.transitionJacobian(x, u, A);
+    if (next) model.transition(x, u, *next);
   } else {
     constexpr int N = Model::StateSize;
     using ADScalar = Eigen::AutoDiffScalar<Vector<N>>;
-    Eigen::Matrix<ADScalar, N, 1> xa, next;
+    Eigen::Matrix<ADScalar, N, 1> xa, out;
     detail::seedDerivatives(x, xa);
-    next.resize(x.size());
-    model.transition(xa, u, next);
-    detail::extractJacobian(next, x.size(), A);
+    out.resize(x.size());
+    model.transition(xa, u, out);
+    detail::extractJacobian(out, x.size(), A, next);
   }
 }
 
-/// H = dh/dx at x.
+/// H = dh/dx at x, and h(x) in `expected` when it is given (as transitionJacobian).
 template <class Model>
 void observationJacobian(const Model& model, const Vector<Model::StateSize>& x,
-                         Matrix<Model::MeasurementSize, Model::StateSize>& H) {
+                         Matrix<Model::MeasurementSize, Model::StateSize>& H,
+                         Vector<Model::MeasurementSize>* expected = nullptr) {
   if constexpr (detail::HasObservationJacobian<Model>::value) {
     model.observationJacobian(x, H);
+    if (expected) model.observation(x, *expected);
   } else {
     constexpr int N = Model::StateSize;
     constexpr int M = Model::MeasurementSize;
@@ -96,7 +110,7 @@ void observationJacobian(const Model& model, const Vector<Model::StateSize>& x,
     detail::seedDerivatives(x, xa);
     z.resize(model.measurementSize());
     model.observation(xa, z);
-    detail::extractJacobian(z, x.size(), H);
+    detail::extractJacobian(z, x.size(), H, expected);
   }
 }
 

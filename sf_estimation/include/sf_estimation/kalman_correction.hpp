@@ -52,11 +52,15 @@ void neutraliseMissing(const Measurement<M>& z, Vector<M>& innovation, RowsType&
 /// columns of K (contiguous N-vectors).
 template <int N, int M>
 void kalmanGain(const Matrix<N, M>& crossCovariance, const Matrix<M, M>& S, Matrix<N, M>& K) {
+  // The loops are unrolled for the grid's sizes: rolled, every entry of L and D went through
+  // the stack between the columns, a store and a reload in each step of the chain.
   const Index m = S.rows();
   Matrix<M, M> LD(m, m);  // L below the diagonal, D on it; only S's lower part is read
   Vector<M> scaled(m);    // row k of L times D
+#pragma GCC unroll 8
   for (Index k = 0; k < m; ++k) {
     double pivot = S(k, k);
+#pragma GCC unroll 8
     for (Index j = 0; j < k; ++j) {
       scaled(j) = LD(k, j) * LD(j, j);
       pivot -= scaled(j) * LD(k, j);
@@ -65,19 +69,26 @@ void kalmanGain(const Matrix<N, M>& crossCovariance, const Matrix<M, M>& S, Matr
       throw NumericalError("innovation covariance is not positive definite; step rejected");
     }
     LD(k, k) = pivot;
+#pragma GCC unroll 8
     for (Index i = k + 1; i < m; ++i) {
       double sum = S(i, k);
+#pragma GCC unroll 8
       for (Index j = 0; j < k; ++j) sum -= LD(i, j) * scaled(j);
       LD(i, k) = sum / pivot;
     }
   }
   // K L D L^T = crossCovariance.
   K = crossCovariance;
+#pragma GCC unroll 8
   for (Index i = 0; i < m; ++i) {  // K <- K L^-T
+#pragma GCC unroll 8
     for (Index j = 0; j < i; ++j) K.col(i) -= LD(i, j) * K.col(j);
   }
+#pragma GCC unroll 8
   for (Index i = 0; i < m; ++i) K.col(i) /= LD(i, i);  // K <- K D^-1
-  for (Index i = m - 1; i >= 0; --i) {                 // K <- K L^-1
+#pragma GCC unroll 8
+  for (Index i = m - 1; i >= 0; --i) {  // K <- K L^-1
+#pragma GCC unroll 8
     for (Index j = i + 1; j < m; ++j) K.col(i) -= LD(j, i) * K.col(j);
   }
   if (!K.allFinite()) throw NumericalError("Kalman gain is not finite; step rejected");
@@ -174,7 +185,8 @@ bool settleBelief(Vector<N>& x, Matrix<N, N>& P, const AngleMask<N>& angleStates
   symmetrize(P);
   if (!x.allFinite() || !P.allFinite()) rejectStep(method, "the estimate became non-finite");
   const bool repaired = repairCovariance(P);
-  if (!P.allFinite()) rejectStep(method, "the covariance repair failed");
+  // An unrepaired P is the one just found finite.
+  if (repaired && !P.allFinite()) rejectStep(method, "the covariance repair failed");
   angleStates.wrap(x);
   return repaired;
 }

@@ -1,14 +1,72 @@
 // Kalman filter (thesis Algorithm 3.1) for the linear model x' = A x + B u, z = H x.
 #pragma once
 
+#include <type_traits>
+
 #include "sf_estimation/abstract_kalman_filter.hpp"
 #include "sf_estimation/kalman_correction.hpp"
+#include "sf_estimation/manifold/se2.hpp"
+#include "sf_estimation/manifold/state_layout.hpp"
 #include "sf_estimation/measurement_prediction.hpp"
 
 namespace estimation {
 
-template <int N, int M, int L = 0>
+namespace kalman_layout {
+
+template <class>
+inline constexpr bool kRefused = false;
+
+/// A block of the plain Kalman filter's layout: x' = A x + B u is linear in R^n, so only vector
+/// blocks fit; a rotation is refused at compile time, by name (doc/manifolds.md).
+template <class Block, class = void>
+struct Accepted {
+  static_assert(Block::IsFlat,
+                "KalmanFilter: the state layout has a block that is not a VectorBlock; a linear "
+                "Kalman filter holds vector entries only: use ManifoldExtendedKalmanFilter or "
+                "ManifoldUnscentedKalmanFilter");
+};
+template <class V>
+struct Accepted<manifold::So2Block, V> {
+  static_assert(kRefused<V>,
+                "KalmanFilter: the state layout has an So2Block (an SO(2) angle), which a linear "
+                "Kalman filter cannot hold: use ManifoldExtendedKalmanFilter or "
+                "ManifoldUnscentedKalmanFilter");
+};
+template <class V>
+struct Accepted<manifold::So3Block, V> {
+  static_assert(kRefused<V>,
+                "KalmanFilter: the state layout has an So3Block (an SO(3) unit quaternion), which "
+                "a linear Kalman filter cannot hold: use ManifoldExtendedKalmanFilter or "
+                "ManifoldUnscentedKalmanFilter");
+};
+template <class V>
+struct Accepted<manifold::Se2Block, V> {
+  static_assert(kRefused<V>,
+                "KalmanFilter: the state layout has an Se2Block (an SE(2) pose), which a linear "
+                "Kalman filter cannot hold: use ManifoldExtendedKalmanFilter or "
+                "ManifoldUnscentedKalmanFilter");
+};
+
+/// Whether Layout (void: N plain entries) suits a KalmanFilter of N states; each block is
+/// checked above, so that the first error names the refused block.
+template <class Layout, int N>
+struct Check {
+  static constexpr bool value = std::is_void_v<Layout>;
+};
+template <int N, class... Blocks>
+struct Check<manifold::StateLayout<Blocks...>, N> {
+  static constexpr bool value =
+      ((sizeof(Accepted<Blocks>) > 0) && ...) && manifold::StateLayout<Blocks...>::StoredSize == N;
+};
+
+}  // namespace kalman_layout
+
+/// Layout: the state's layout (manifold/state_layout.hpp) when given; it must be flat (vector
+/// blocks only) and of N entries. void, the default, is N plain entries for any N.
+template <int N, int M, int L = 0, class Layout = void>
 class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
+  static_assert(kalman_layout::Check<Layout, N>::value,
+                "KalmanFilter: Layout must be a StateLayout of vector blocks of N entries");
   using Base = AbstractKalmanFilter<N, M, L>;
 
  public:

@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 
 #include "sf_estimation/parameter_checks.hpp"
+#include "sf_estimation/probability/cholesky.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
 #include "sf_estimation/types.hpp"
 
@@ -65,15 +66,14 @@ constexpr double kCovarianceTolerance = 1e-9;
 bool repairIndefiniteCovariance(Eigen::Ref<Eigen::MatrixXd> P);
 
 /// Makes a finite symmetric P positive semi-definite if it is not (see the rules above).
-/// Returns true if P was changed. Costs one Cholesky factorisation when P is positive
-/// definite (the usual case), one LDLT more when it is only semi-definite.
+/// Returns true if P was changed. Costs one square-root-free Cholesky factorisation when P is
+/// positive definite (the usual case), one pivoted LDLT more when it is only semi-definite.
 template <int N>
 bool repairCovariance(Matrix<N, N>& P) {
   if (P.rows() == 0) return false;
-  // A Cholesky factor exists only for a positive definite matrix; it is much cheaper than the
-  // pivoted LDLT, which is needed only to judge a singular P.
-  Matrix<N, N> factor = P;
-  if (probability::choleskyInPlace(factor)) return false;
+  // The unpivoted factorisation exists only for a positive definite matrix; it is much
+  // cheaper than the pivoted LDLT, which is needed only to judge a singular P.
+  if (probability::positiveDefinite(P)) return false;
   return repairIndefiniteCovariance(P);
 }
 

@@ -136,8 +136,8 @@ struct LinearisedPrediction {
 };
 
 /// The smoother of a Kalman filter: its A, B, Q and angle states.
-template <int N, int M, int L>
-RtsSmoother<LinearPrediction<N, L>> smootherFor(const KalmanFilter<N, M, L>& filter) {
+template <int N, int M, int L, class Layout>
+RtsSmoother<LinearPrediction<N, L>> smootherFor(const KalmanFilter<N, M, L, Layout>& filter) {
   return {LinearPrediction<N, L>{filter.transitionMatrix(), filter.controlMatrix(),
                                  filter.processNoise()},
           filter.angleStates()};

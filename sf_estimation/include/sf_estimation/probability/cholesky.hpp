@@ -51,5 +51,39 @@ bool choleskyInPlace(Matrix<N, N>& A) {
   return true;
 }
 
+/// Whether the symmetric A (its lower triangle is read) is positive definite, by the test of
+/// choleskyInPlace (every pivot > 0) without its square roots: the pivots of A = L D L^T are the
+/// squares of the Cholesky diagonal. A filter checks every new covariance this way; at these
+/// sizes the check costs latency, and a square root per column was most of it. The pivots
+/// round differently from choleskyInPlace's, so the two could disagree only about a matrix
+/// within rounding of singular, which the repair (numerical_repairs.hpp) then judges anyway.
+template <int N>
+bool positiveDefinite(const Matrix<N, N>& A) {
+  const Index n = A.rows();
+  Matrix<N, N> W(n, n);  // below the diagonal: L D, the column before its scaling by 1 / D
+  Vector<N> inverse(n);  // 1 / D
+  Vector<N> l(n);        // row k of L
+  // Unrolled for a filter's sizes, so that the factor stays in registers between the columns.
+#pragma GCC unroll 8
+  for (Index k = 0; k < n; ++k) {
+    double pivot = A(k, k);
+#pragma GCC unroll 8
+    for (Index j = 0; j < k; ++j) {
+      l(j) = W(k, j) * inverse(j);
+      pivot -= l(j) * W(k, j);
+    }
+    if (pivot <= 0.0) return false;
+    inverse(k) = 1.0 / pivot;
+#pragma GCC unroll 8
+    for (Index i = k + 1; i < n; ++i) {
+      double sum = A(i, k);
+#pragma GCC unroll 8
+      for (Index j = 0; j < k; ++j) sum -= W(i, j) * l(j);
+      W(i, k) = sum;
+    }
+  }
+  return true;
+}
+
 }  // namespace probability
 }  // namespace estimation

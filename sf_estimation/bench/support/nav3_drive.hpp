@@ -1,0 +1,48 @@
+// The simulated drive that the step benchmarks replay (bench_estimation.cpp, and the side-by-
+// side run against mherb/kalman in peer/): the nav3ctrl model driven with smoothly varying
+// speed and turn rate, observed with the sensor noise of R. nav3red observes the same
+// quantities.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <random>
+#include <vector>
+
+#include "sf_estimation/models/navigation.hpp"
+
+namespace sf_bench {
+
+constexpr double kPeriod = 0.1;           // T [s]
+constexpr double kRadius = 0.3;           // R [m]
+constexpr std::size_t kDriveSteps = 400;  // 40 s of driving, replayed in a loop
+
+struct Nav3Drive {
+  std::vector<estimation::Vector<2>> controls;  // (v, omega) commands
+  std::vector<estimation::Vector<4>> readings;  // gyro, accelerometer, wheels
+};
+
+inline Nav3Drive simulateNav3Drive() {
+  using estimation::Vector;
+  const estimation::models::Nav3Ctrl model{kPeriod, kRadius};
+  const Vector<4> sigma = estimation::models::nav3MeasurementNoise().diagonal().cwiseSqrt();
+  std::mt19937_64 engine(7);
+  std::normal_distribution<double> normal;
+  Nav3Drive drive;
+  Vector<7> x = Vector<7>::Zero();
+  for (std::size_t k = 0; k < kDriveSteps; ++k) {
+    const double t = kPeriod * static_cast<double>(k);
+    const Vector<2> u(0.6 + 0.4 * std::sin(0.15 * t), 0.5 * std::sin(0.4 * t));
+    Vector<7> next;
+    model.transition(x, u, next);
+    x = next;
+    Vector<4> z;
+    model.observation(x, z);
+    for (int i = 0; i < 4; ++i) z(i) += sigma(i) * normal(engine);
+    drive.controls.push_back(u);
+    drive.readings.push_back(z);
+  }
+  return drive;
+}
+
+}  // namespace sf_bench

@@ -1,0 +1,9 @@
+// EXPECT: has an So3Block
+// A plain Kalman filter is linear in R^n: a layout with a rotation is refused at compile time,
+// naming the block (kalman_filter.hpp).
+#include "sf_estimation/kalman_filter.hpp"
+
+using namespace estimation;
+
+using Layout = manifold::StateLayout<manifold::So3Block, manifold::VectorBlock<3>>;
+template class estimation::KalmanFilter<7, 2, 0, Layout>;
