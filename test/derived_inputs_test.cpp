@@ -85,7 +85,7 @@ TEST(DerivedInputs, ImuYawAndItsCovariance) {
   EXPECT_FALSE(sink.values[1].variance);
   EXPECT_NEAR(sink.values[2].value, M_PI, 1e-12);
   EXPECT_FALSE(sink.values[2].variance);
-  EXPECT_EQ(sink.covarianceFallbacks(0), 2u);
+  EXPECT_EQ(sink.state.covarianceFallbacks(0), 2u);
 }
 
 TEST(DerivedInputs, OdometryDifferentialAgainstHandComputedSteps) {
@@ -129,6 +129,8 @@ class EngineSink final : public sf_filter::MessageSink {
                                 const std::array<double, 3>&, int) override {
     return std::nullopt;
   }
+
+  sf_filter::InputState state;  ///< what the readers keep between messages
 
  private:
   sf_filter::FusionEngine& engine_;

@@ -67,12 +67,12 @@ TEST(GpsInput, StatusDatumYawOffsetAndCovariance) {
   const auto d = sf_filter::generated::nodeDefinition();
   const sf_filter::TopicReader& fix = readerOf(d, "/fix");
   RecordingSink sink;
-  sink.gps().setOptions({std::nullopt, kPi / 2});  // odom x points north
+  sink.state.gps().setOptions({std::nullopt, kPi / 2});  // odom x points north
 
   feed(fix, navSatFix(10.0, 1.0, -1), sink, 0.0);  // STATUS_NO_FIX: dropped, not the datum
   EXPECT_TRUE(sink.values.empty());
-  EXPECT_EQ(sink.gps().noFix(kEastInput), 1u);
-  EXPECT_EQ(sink.gps().noFix(kNorthInput), 1u);
+  EXPECT_EQ(sink.state.gps().noFix(kEastInput), 1u);
+  EXPECT_EQ(sink.state.gps().noFix(kNorthInput), 1u);
 
   feed(fix, navSatFix(kLat, 2.0), sink, 0.0);  // the datum
   ASSERT_EQ(sink.values.size(), 2u);
@@ -94,8 +94,8 @@ TEST(GpsInput, StatusDatumYawOffsetAndCovariance) {
   ASSERT_EQ(sink.values.size(), 2u);
   EXPECT_FALSE(sink.values[0].variance);
   EXPECT_FALSE(sink.values[1].variance);
-  EXPECT_EQ(sink.covarianceFallbacks(kEastInput), 1u);
-  EXPECT_EQ(sink.covarianceFallbacks(kNorthInput), 1u);
+  EXPECT_EQ(sink.state.covarianceFallbacks(kEastInput), 1u);
+  EXPECT_EQ(sink.state.covarianceFallbacks(kNorthInput), 1u);
   EXPECT_EQ(sink.blocks.size(), 2u);  // the two fixes of known covariance, not this one
 }
 
@@ -103,7 +103,7 @@ TEST(GpsInput, CovarianceOfEastAndNorthReachesTheSinkTurned) {
   const auto d = sf_filter::generated::nodeDefinition();
   const sf_filter::TopicReader& fix = readerOf(d, "/fix");
   RecordingSink sink;
-  sink.gps().setOptions({std::nullopt, kPi / 6});  // c = sqrt 3 / 2, s = 1 / 2
+  sink.state.gps().setOptions({std::nullopt, kPi / 6});  // c = sqrt 3 / 2, s = 1 / 2
   const double c = std::sqrt(3.0) / 2, s = 0.5;
   feed(fix, navSatFix(kLat, 1.0), sink, 0.0);  // the datum
   sink.values.clear();
@@ -137,7 +137,7 @@ TEST(GpsInput, CovarianceOfEastAndNorthReachesTheSinkTurned) {
   EXPECT_NEAR(sink.blocks[1].covariance[0], kScale * (c * c + 2 * s * s), 1e-14);
   EXPECT_NEAR(sink.blocks[1].covariance[3], kScale * (s * s + 2 * c * c), 1e-14);
   EXPECT_NEAR(sink.blocks[1].covariance[1], kScale * c * s, 1e-14);
-  EXPECT_EQ(sink.covarianceFallbacks(kEastInput), 0u);
+  EXPECT_EQ(sink.state.covarianceFallbacks(kEastInput), 0u);
 }
 
 TEST(GpsInput, AFirstFixNotOnTheEarthIsNotTheDatum) {
@@ -149,11 +149,12 @@ TEST(GpsInput, AFirstFixNotOnTheEarthIsNotTheDatum) {
   feed(fix, navSatFix(91.0, 1.0), sink, 0.0);
   EXPECT_TRUE(sink.values.empty());
   EXPECT_TRUE(sink.blocks.empty());
-  EXPECT_EQ(sink.gps().implausibleFixes(kEastInput), 1u);
-  EXPECT_EQ(sink.gps().implausibleReason(kNorthInput), "latitude 91 outside [-90, 90] degrees");
+  EXPECT_EQ(sink.state.gps().implausibleFixes(kEastInput), 1u);
+  EXPECT_EQ(sink.state.gps().implausibleReason(kNorthInput),
+            "latitude 91 outside [-90, 90] degrees");
   feed(fix, navSatFix(kLat, 2.0), sink, 0.0);
-  ASSERT_TRUE(sink.gps().datum());
-  EXPECT_EQ(sink.gps().datum()->latitude, kLat);
+  ASSERT_TRUE(sink.state.gps().datum());
+  EXPECT_EQ(sink.state.gps().datum()->latitude, kLat);
   sink.values.clear();
   sink.blocks.clear();
   feed(fix, navSatFix(hundredMetresNorth(), 3.0), sink, 0.0);

@@ -81,7 +81,7 @@ TEST(MagneticHeading, ReaderGivesHandComputedHeadings) {
   // Facing north-west (135 deg) without declination: b = (B sin 135, B cos 135).
   feed(reader, magnetometer(135 * kDeg, 0.0, 1.0), sink, 1.0);
   // The same field read with ~magnetic_declination 10 deg east: the robot faces 125 deg.
-  sink.extractorParameters() = sf_filter::loadExtractorParameters(
+  sink.state.extractorParameters() = sf_filter::loadExtractorParameters(
       MapParameters({{"magnetic_declination", 10 * kDeg}}), d.extractorParameters);
   feed(reader, magnetometer(135 * kDeg, 0.0, 1.1), sink, 1.1);
   // A field with a known covariance: sigma_x = sigma_y = 1 uT over |b| = 20 uT, so the heading's
@@ -98,7 +98,7 @@ TEST(MagneticHeading, ReaderGivesHandComputedHeadings) {
   EXPECT_NEAR(sink.values[2].value, -170 * kDeg, 1e-12);
   ASSERT_TRUE(sink.values[2].variance);
   EXPECT_NEAR(*sink.values[2].variance, 0.0025, 1e-15);
-  EXPECT_EQ(sink.covarianceFallbacks(0), 2u);
+  EXPECT_EQ(sink.state.covarianceFallbacks(0), 2u);
 }
 
 TEST(MagneticHeading, DeclinationOutOfRangeIsRefused) {
@@ -136,6 +136,7 @@ class EngineSink final : public sf_filter::MessageSink {
                                 const std::array<double, 3>&, int) override {
     return std::nullopt;
   }
+  sf_filter::InputState state;  ///< what the readers keep between messages
 
  private:
   sf_filter::FusionEngine& engine_;
@@ -150,7 +151,7 @@ TEST(MagneticHeading, FilterFollowsATurnAcrossTheSeam) {
   options.inputs = d.inputOptions;
   auto engine = d.makeEngine(d.defaultParameters(d.estimationPeriodMs), options);
   EngineSink sink(*engine);
-  sink.extractorParameters().set("magnetic_declination", -12 * kDeg);
+  sink.state.extractorParameters().set("magnetic_declination", -12 * kDeg);
   const TopicReader& mag = readerOf(d, "imu/mag");
   const TopicReader& gyro = readerOf(d, "imu/data");
   const double omega = 0.5, yaw0 = 2.8;

@@ -12,6 +12,7 @@
 
 #include <ros/serialization.h>
 
+#include "sf_filter/definition/input_state.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_definition.hpp"
 
@@ -55,6 +56,7 @@ class RecordingSink final : public sf_filter::MessageSink {
   }
   std::vector<Value> values;
   std::vector<Block> blocks;
+  sf_filter::InputState state;  ///< what the readers keep between messages
 };
 
 template <class M>
@@ -73,12 +75,12 @@ inline const sf_filter::TopicReader& readerOf(const sf_filter::NodeDefinition& d
   throw std::runtime_error("no reader for " + topic);
 }
 
-/// Hands `message`, serialized, to `reader` as received at `now`.
-template <class M>
-void feed(const sf_filter::TopicReader& reader, const M& message, sf_filter::MessageSink& sink,
-          double now) {
+/// Hands `message`, serialized, to `reader` as received at `now` (a Sink with its InputState
+/// `state`).
+template <class M, class Sink>
+void feed(const sf_filter::TopicReader& reader, const M& message, Sink& sink, double now) {
   const std::vector<std::uint8_t> bytes = serialized(message);
-  reader.read(bytes.data(), static_cast<std::uint32_t>(bytes.size()), sink, now);
+  reader.read(bytes.data(), static_cast<std::uint32_t>(bytes.size()), sink, sink.state, now);
 }
 
 }  // namespace sf_test

@@ -30,4 +30,5 @@
 #include <sf_estimation/filters.hpp>
 
 #include "sf_filter/core/fusion_engine_of.hpp"
+#include "sf_filter/definition/input_state.hpp"
 #include "sf_filter/definition/node_definition.hpp"

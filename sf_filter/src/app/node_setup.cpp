@@ -87,8 +87,9 @@ class StartedFusionNode final : public FusionNodeInstance {
     node_.emplace(nh, pnh, def.makeEngine(parameters, options), describe(def, baseFrame),
                   aligner_ ? &*aligner_ : nullptr, faults.diagnosticPeriod,
                   loadOutputParameters(params));
-    node_->gps().setOptions(loadGpsParameters(params));
-    node_->extractorParameters() = loadExtractorParameters(params, def.extractorParameters);
+    node_->inputState().gps().setOptions(loadGpsParameters(params));
+    node_->inputState().extractorParameters() =
+        loadExtractorParameters(params, def.extractorParameters);
     for (const TopicReader& reader : def.topics) node_->subscribe(reader);
     node_->start();
   }

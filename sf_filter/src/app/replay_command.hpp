@@ -64,8 +64,8 @@ struct ReplayOutcome {
   const ReplaySummary& summary;
   const FusionEngine& core;
   const FusionStatistics& statistics;  ///< the core's, after the run
-  const MessageSink& sink;
-  const ReplayFrameAligner* aligner;  ///< nullptr without FRAME_ALIGNED_INPUTS
+  const InputState& inputs;            ///< the replay's, after the run
+  const ReplayFrameAligner* aligner;   ///< nullptr without FRAME_ALIGNED_INPUTS
   double wallSeconds;
 };
 

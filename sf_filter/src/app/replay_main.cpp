@@ -117,16 +117,16 @@ int replayBag(const ReplayCommand& c, const NodeDefinition& def) {
     rotation.emplace(*aligner);
     connectAligner(replay, *aligner, *rotation, c.staticTransforms);
   }
-  replay.gps().setOptions(c.gpsOptions);
-  replay.extractorParameters() = c.extractorParameters;
+  replay.inputState().gps().setOptions(c.gpsOptions);
+  replay.inputState().extractorParameters() = c.extractorParameters;
   subscribeTopics(replay, c, def);
   const auto start = std::chrono::steady_clock::now();
   const ReplaySummary s = replay.run();
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const FusionStatistics statistics = replay.core().statistics();
-  const ReplayOutcome outcome{s,   replay.core(), statistics, replay, aligner ? &*aligner : nullptr,
-                              wall};
+  const ReplayOutcome outcome{
+      s, replay.core(), statistics, replay.inputState(), aligner ? &*aligner : nullptr, wall};
   printReplaySummary(c, def, outcome);
   if (c.tune) return tuneFromEvents(c, def, events, engineOptions, parameters, tunedFile);
   return strictStatus(c, def, outcome);

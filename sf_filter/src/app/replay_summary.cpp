@@ -17,7 +17,7 @@ namespace {
 std::uint64_t droppedBeforeCore(const NodeDefinition& def, const ReplayOutcome& o) {
   std::uint64_t n = o.aligner ? o.aligner->droppedTotal() : 0;
   for (std::size_t i = 0; i < def.description.inputs.size(); ++i) {
-    n += o.sink.gps().implausibleFixes(i);
+    n += o.inputs.gps().implausibleFixes(i);
   }
   return n;
 }
@@ -58,18 +58,18 @@ void printInputCounters(const std::string& name, const ReplayOutcome& o,
 
 /// The GPS inputs' fixes without a valid status and unknown covariances (for the inputs that
 /// received a fix).
-void printGpsCounters(const std::string& name, const MessageSink& sink,
+void printGpsCounters(const std::string& name, const InputState& state,
                       const std::vector<std::string>& inputs) {
   for (std::size_t i = 0; i < inputs.size(); ++i) {
-    if (!sink.gps().receivedFix(i)) continue;
+    if (!state.gps().receivedFix(i)) continue;
     const auto input = static_cast<Index>(i);
-    std::cout << name << ": input " << i << " (GPS): " << sink.gps().noFix(i)
+    std::cout << name << ": input " << i << " (GPS): " << state.gps().noFix(i)
               << " fixes dropped without a fix (status < STATUS_FIX), "
-              << sink.gps().implausibleFixes(i) << " dropped as not on the Earth"
-              << (sink.gps().implausibleFixes(i)
-                      ? " (newest: " + sink.gps().implausibleReason(i) + ")"
+              << state.gps().implausibleFixes(i) << " dropped as not on the Earth"
+              << (state.gps().implausibleFixes(i)
+                      ? " (newest: " + state.gps().implausibleReason(i) + ")"
                       : std::string())
-              << ", " << sink.covarianceFallbacks(input)
+              << ", " << state.covarianceFallbacks(input)
               << " with an unknown covariance (header R used)" << std::endl;
   }
 }
@@ -141,7 +141,7 @@ void printReplaySummary(const ReplayCommand& c, const NodeDefinition& def, const
   printSmoothing(c, o);
   printInputCounters(name, o, def.description.inputs);
   printNis(name, o.core, def.description.inputs);
-  printGpsCounters(name, o.sink, def.description.inputs);
+  printGpsCounters(name, o.inputs, def.description.inputs);
   if (o.aligner) printAlignment(c, *o.aligner);
 }
 

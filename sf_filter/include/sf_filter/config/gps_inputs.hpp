@@ -14,8 +14,8 @@
 //   template <int I> struct GpsDerivation {   // how TOPICS_IN entry I is read
 //     static constexpr bool gps;              //   a GPS input
 //     static constexpr bool valid;            //   false when a check below failed
-//     static constexpr int axis;              //   0 EAST (odom x), 1 NORTH (odom y), 2 UP (z)
-//     template <class Message> static sf_filter::gps::Fix fix(const Message&); };
+//     static constexpr int axis; };           //   0 EAST (odom x), 1 NORTH (odom y), 2 UP (z)
+// The fix is read by the GPS input extractor (generated/input_extractors.hpp).
 //
 // GPS_COVARIANCE_SCALE (optional, default 1) multiplies the covariance of every fix before it
 // reaches the filter: a header that models the receiver's slowly changing error as a state
@@ -34,8 +34,6 @@
 #include <cstddef>
 #include <type_traits>
 #include <utility>
-
-#include "sf_filter/gps/gps_inputs.hpp"
 
 namespace sf_config {
 namespace gps_detail {
@@ -140,20 +138,6 @@ struct GpsDerivation {
       gps && gps_detail::IsNavSatFix<typename detail::InputMessageOf<I>::type>::value &&
       derived_detail::kDerivedEntries[gps ? derived_detail::entryOf(I) : 0].mode ==
           derived_detail::Absolute;
-
-  template <class Message>
-  static sf_filter::gps::Fix fix(const Message& m) {
-    sf_filter::gps::Fix f;
-    f.status = static_cast<int>(m.status.status);
-    f.latitude = static_cast<double>(m.latitude);
-    f.longitude = static_cast<double>(m.longitude);
-    f.altitude = static_cast<double>(m.altitude);
-    for (std::size_t k = 0; k < f.covariance.size(); ++k) {
-      f.covariance[k] = static_cast<double>(m.position_covariance[k]);
-    }
-    f.covarianceType = static_cast<int>(m.position_covariance_type);
-    return f;
-  }
 };
 
 }  // namespace sf_config

@@ -25,26 +25,34 @@
 //   frame_aligned     member, axis         FRAME_ALIGNED_INPUTS ((i)(member)(axis))
 //   derived           quantity, mode       DERIVED_INPUTS ((i)(quantity)(mode))
 //   covariance        member, entry        INPUT_COVARIANCE ((i)(member)(entry))
+//   covariance_block  block, member, row   INPUT_COVARIANCE_BLOCK entry of the records with
+//                                          this block number (0 to 3), in record order:
+//                                          ((i j ...)(member)(row_i row_j ...))
 // Record i is input i (the order of INPUTS is the measurement order). The name is the input's
 // name in diagnostics, logs and the ~input_* parameters (a C++ identifier, unique).
 //
 // Checked here (static_assert, message starting with "INPUTS"): the record's form, unknown
 // options, an option's argument count, an option given twice, a name used twice or not an
 // identifier, and observe / observation_row / jacobian_row / variance on some records but not
-// on others, or missing where METHOD requires them. A header defining INPUTS and one of the
-// macros it generates fails with an #error naming both. Mistakes in an option's value (a
-// negative gate, an unknown policy) are reported by the checks of the generated macro, e.g.
-// "INPUT_GATE entry 1", counting the entries of that macro from 0.
+// on others, or missing where METHOD requires them, a covariance_block's block number outside
+// 0 to 3 or its member other than the block's first record's. A header defining INPUTS and one
+// of the macros it generates fails with an #error naming both (INPUT_COVARIANCE_BLOCK only when
+// a record gives covariance_block: without, the index-addressed blocks still apply). Mistakes
+// in an option's value (a negative gate, an unknown policy) are reported by the checks of the
+// generated macro, e.g. "INPUT_GATE entry 1", counting the entries of that macro from 0.
 #pragma once
 
 #if defined(INPUTS)
 
 #include <boost/preprocessor/arithmetic/add.hpp>
 #include <boost/preprocessor/control/expr_iif.hpp>
+#include <boost/preprocessor/control/if.hpp>
 #include <boost/preprocessor/facilities/is_empty.hpp>
 #include <boost/preprocessor/logical/bitor.hpp>
 #include <boost/preprocessor/logical/not.hpp>
 #include <boost/preprocessor/punctuation/remove_parens.hpp>
+#include <boost/preprocessor/repetition/repeat.hpp>
+#include <boost/preprocessor/seq/seq.hpp>
 #include <boost/preprocessor/seq/fold_left.hpp>
 #include <boost/preprocessor/seq/for_each.hpp>
 #include <boost/preprocessor/seq/rest_n.hpp>
@@ -102,10 +110,11 @@
 #define SF_INPUTS_OPTION_frame_aligned (12, 3, 3, "(frame_aligned, member, axis)")
 #define SF_INPUTS_OPTION_derived (13, 3, 3, "(derived, quantity, mode)")
 #define SF_INPUTS_OPTION_covariance (14, 3, 3, "(covariance, member, entry)")
-#define SF_INPUTS_OPTION_SF_INPUTS_END (15, 1, 1, "")  // marks the end of a record
+#define SF_INPUTS_OPTION_covariance_block (15, 4, 4, "(covariance_block, block, member, row)")
+#define SF_INPUTS_OPTION_SF_INPUTS_END (16, 1, 1, "")  // marks the end of a record
 #define SF_INPUTS_OPTION_NAMES                                                                     \
   "observe, observation_row, jacobian_row, variance, variance_field, alignment, gate, timeout, "   \
-  "range, by_stamp, angle, frame_aligned, derived, covariance"
+  "range, by_stamp, angle, frame_aligned, derived, covariance, covariance_block"
 #define SF_INPUTS_OBSERVE 1
 #define SF_INPUTS_OBSERVATION_ROW 2
 #define SF_INPUTS_JACOBIAN_ROW 3
@@ -120,6 +129,7 @@
 #define SF_INPUTS_FRAME_ALIGNED 12
 #define SF_INPUTS_DERIVED 13
 #define SF_INPUTS_COVARIANCE 14
+#define SF_INPUTS_COVARIANCE_BLOCK 15
 
 /// The option table entry of an option tuple (kw, ...), or (0, 0, 99, "") if kw is unknown.
 #define SF_INPUTS_ENTRY(option)                                                                    \
@@ -207,6 +217,31 @@
    BOOST_PP_IIF(SF_INPUTS_HAS(SF_INPUTS_VARIANCE_FIELD, R), SF_INPUTS_VARIANCE_FIELD_OF,           \
                 SF_PP_NOTHING)(R))
 #define SF_INPUTS_VARIANCE_FIELD_OF(R) (SF_INPUTS_ARG0(SF_INPUTS_VARIANCE_FIELD, R))
+
+/// The covariance blocks: records with (covariance_block, k, member, row), k from 0 to
+/// SF_INPUTS_MAX_BLOCKS - 1, form INPUT_COVARIANCE_BLOCK's entry for k (if any record has k).
+#define SF_INPUTS_MAX_BLOCKS 4
+#define SF_INPUTS_BLOCKS BOOST_PP_REPEAT(SF_INPUTS_MAX_BLOCKS, SF_INPUTS_BLOCK_ENTRY, ~)
+#define SF_INPUTS_BLOCK_ENTRY(z, k, data)                                                          \
+  BOOST_PP_IIF(BOOST_PP_IS_EMPTY(SF_INPUTS_BLOCK_SEQ(k, 0)), SF_PP_NOTHING,                        \
+               SF_INPUTS_BLOCK_ENTRY_I)(k)
+#define SF_INPUTS_BLOCK_ENTRY_I(k)                                                                 \
+  ((SF_INPUTS_BLOCK_SEQ(k, 0))(SF_INPUTS_BLOCK_MEMBER(k))(SF_INPUTS_BLOCK_SEQ(k, 2)))
+#define SF_INPUTS_BLOCK_MEMBER(k) BOOST_PP_SEQ_HEAD(SF_INPUTS_BLOCK_SEQ(k, 1))
+/// Per record of block k: (i) (what 0), (member) (what 1) or (row) (what 2).
+#define SF_INPUTS_BLOCK_SEQ(k, what) BOOST_PP_SEQ_FOR_EACH_I(SF_INPUTS_BLOCK_OP, (k, what), INPUTS)
+#define SF_INPUTS_BLOCK_OP(r, data, i, record)                                                     \
+  SF_INPUTS_BLOCK_OP_I(BOOST_PP_TUPLE_ELEM(2, 0, data), BOOST_PP_TUPLE_ELEM(2, 1, data), i,        \
+                       SF_INPUTS_R(record))
+#define SF_INPUTS_BLOCK_OP_I(k, what, i, R)                                                        \
+  BOOST_PP_IIF(SF_INPUTS_IN_BLOCK(k, R), SF_INPUTS_BLOCK_ITEM, SF_PP_NOTHING)(what, i, R)
+#define SF_INPUTS_BLOCK_ITEM(what, i, R)                                                           \
+  (BOOST_PP_IF(what, BOOST_PP_SEQ_ELEM(what, SF_INPUTS_ARGS(SF_INPUTS_COVARIANCE_BLOCK, R)), i))
+/// 1 if R has (covariance_block, k, ...).
+#define SF_INPUTS_IN_BLOCK(k, R)                                                                   \
+  BOOST_PP_IIF(SF_INPUTS_HAS(SF_INPUTS_COVARIANCE_BLOCK, R), SF_INPUTS_BLOCK_IS,                   \
+               0 SF_PP_NOTHING)(k, R)
+#define SF_INPUTS_BLOCK_IS(k, R) BOOST_PP_EQUAL(SF_INPUTS_ARG0(SF_INPUTS_COVARIANCE_BLOCK, R), k)
 
 #define SF_INPUTS_POSITIONAL_OK(R)                                                                 \
   BOOST_PP_BITAND(BOOST_PP_BITAND(SF_INPUTS_IS_ONE(0, R), SF_INPUTS_IS_ONE(1, R)),                 \
@@ -309,6 +344,13 @@ BOOST_PP_REPEAT(BOOST_PP_SEQ_SIZE(INPUTS), SF_INPUTS_CHECK_POSITIONAL, ~)
 #if SF_INPUTS_ANY(SF_INPUTS_COVARIANCE)
 #define INPUT_COVARIANCE SF_INPUTS_LIST(SF_INPUTS_COVARIANCE)
 #endif
+#if SF_INPUTS_ANY(SF_INPUTS_COVARIANCE_BLOCK) && defined(INPUT_COVARIANCE_BLOCK)
+#error INPUTS records give (covariance_block, block, member, row) and INPUT_COVARIANCE_BLOCK is defined too: give the blocks on the records or in INPUT_COVARIANCE_BLOCK, not both
+#define SF_CFG_FATAL
+#define SF_CFG_STOP
+#elif SF_INPUTS_ANY(SF_INPUTS_COVARIANCE_BLOCK) && !BOOST_PP_IS_EMPTY(SF_INPUTS_BLOCKS)
+#define INPUT_COVARIANCE_BLOCK SF_INPUTS_BLOCKS  // (none if every block number is out of range)
+#endif
 
 /// The record names as string literals, in input order (detail/input_names.hpp).
 #define SF_INPUTS_NAMES BOOST_PP_SEQ_FOR_EACH_I(SF_INPUTS_NAMES_OP, ~, INPUTS)
@@ -337,7 +379,9 @@ BOOST_PP_REPEAT(BOOST_PP_SEQ_SIZE(INPUTS), SF_INPUTS_CHECK_POSITIONAL, ~)
                         "(observation_row, (h0)(h1)...)")                                          \
   SF_INPUTS_CHECK_EVERY(i, R, ids, SF_INPUTS_JACOBIAN_ROW, SF_INPUTS_EVERY_JACOBIAN_ROW,           \
                         "(jacobian_row, (d0)(d1)...)")                                             \
-  SF_INPUTS_CHECK_EVERY(i, R, ids, SF_INPUTS_VARIANCE, SF_INPUTS_EVERY_VARIANCE, "(variance, R_ii)")
+  SF_INPUTS_CHECK_EVERY(i, R, ids, SF_INPUTS_VARIANCE, SF_INPUTS_EVERY_VARIANCE, "(variance, R_ii)") \
+  BOOST_PP_IIF(SF_INPUTS_HAS(SF_INPUTS_COVARIANCE_BLOCK, R), SF_INPUTS_CHECK_BLOCK,                \
+               SF_PP_NOTHING)(i, R, SF_INPUTS_ARGS(SF_INPUTS_COVARIANCE_BLOCK, R))
 
 
 /// The option ids of R, (std::initializer_list<int>{id, ...}) (the end marker included).
@@ -365,6 +409,21 @@ BOOST_PP_REPEAT(BOOST_PP_SEQ_SIZE(INPUTS), SF_INPUTS_CHECK_POSITIONAL, ~)
                     ::sf_config::input_records::countBefore(ids, k, BOOST_PP_TUPLE_ELEM(4, 0, entry)) == 0, \
                 "INPUTS record " SF_PP_STR(i) " (" SF_PP_STR(SF_INPUTS_NAME(R))                    \
                 "): option '" SF_PP_STR(option) "' is given a second time");
+
+/// A record's (covariance_block, k, member, row): k names one of the blocks, and the member is
+/// the one of the block's first record (the block reads one covariance array).
+#define SF_INPUTS_CHECK_BLOCK(i, R, args)                                                          \
+  static_assert(BOOST_PP_SEQ_ELEM(0, args) >= 0 &&                                                 \
+                    BOOST_PP_SEQ_ELEM(0, args) < SF_INPUTS_MAX_BLOCKS,                             \
+                "INPUTS record " SF_PP_STR(i) " (" SF_PP_STR(SF_INPUTS_NAME(R)) "): block '"       \
+                SF_PP_STR(BOOST_PP_SEQ_ELEM(0, args)) "' of (covariance_block, block, member, "    \
+                "row) is not one of 0 to 3 (records with the same block number share one "         \
+                "INPUT_COVARIANCE_BLOCK entry)");                                                  \
+  static_assert(std::string_view(SF_PP_STR(BOOST_PP_SEQ_ELEM(1, args))) ==                         \
+                    std::string_view(SF_PP_STR(SF_INPUTS_BLOCK_MEMBER(BOOST_PP_SEQ_ELEM(0, args)))), \
+                "INPUTS record " SF_PP_STR(i) " (" SF_PP_STR(SF_INPUTS_NAME(R)) "): the member '"  \
+                SF_PP_STR(BOOST_PP_SEQ_ELEM(1, args)) "' of its covariance_block is not the one "  \
+                "of the block's first record; a block reads one covariance array");
 
 /// A record without option ID although NEEDED (some record gives it, or METHOD requires it).
 #define SF_INPUTS_CHECK_EVERY(i, R, ids, ID, NEEDED, FORM)                                         \

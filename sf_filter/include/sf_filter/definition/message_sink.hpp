@@ -6,17 +6,15 @@
 
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <sf_estimation/types.hpp>
 
-#include "sf_filter/config/extractors/extractor.hpp"
-#include "sf_filter/gps/gps_inputs.hpp"
-
 namespace sf_filter {
+
+class InputState;  // definition/input_state.hpp: what reading keeps between messages
 
 /// Receives what a topic reader takes out of one message.
 class MessageSink {
@@ -42,44 +40,6 @@ class MessageSink {
   virtual std::optional<double> rotated(estimation::Index input, const std::string& frame,
                                         std::uint32_t sec, std::uint32_t nsec,
                                         const std::array<double, 3>& vector, int axis) = 0;
-
-  /// The extractor of DERIVED_INPUTS input `input`, of kind Kind (config/extractors/kinds.hpp;
-  /// one per input, created on first use): kept by the sink, so that every node and replay run
-  /// starts anew (a differential input's previous pose).
-  template <class Kind>
-  Kind& extractor(estimation::Index input) {
-    const auto i = static_cast<std::size_t>(input);
-    if (extractors_.size() <= i) extractors_.resize(i + 1);
-    if (!extractors_[i]) extractors_[i] = std::make_unique<Kind>();
-    return static_cast<Kind&>(*extractors_[i]);  // an input is read by one kind only
-  }
-  /// The extractor kinds' private parameters given to the node or replay (defaults if not).
-  sf_config::extractors::ParameterValues& extractorParameters() { return parameters_; }
-  const sf_config::extractors::ParameterValues& extractorParameters() const { return parameters_; }
-  /// Counts a message of `input` whose covariance was unknown (INPUT_COVARIANCE: all zero or
-  /// -1 first), so that the header's R was used.
-  void countCovarianceFallback(estimation::Index input) {
-    const auto i = static_cast<std::size_t>(input);
-    if (covarianceFallbacks_.size() <= i) covarianceFallbacks_.resize(i + 1, 0);
-    ++covarianceFallbacks_[i];
-  }
-  /// Messages of `input` whose unknown covariance fell back to the header's R.
-  std::uint64_t covarianceFallbacks(estimation::Index input) const {
-    const auto i = static_cast<std::size_t>(input);
-    return i < covarianceFallbacks_.size() ? covarianceFallbacks_[i] : 0;
-  }
-  /// Forgets the extractors' state, e.g. the previous poses of the differential inputs (after
-  /// a reset of the estimate).
-  void forgetExtractorState() { extractors_.clear(); }
-  /// The GPS inputs' datum, yaw offset and counters (DERIVED_INPUTS EAST, NORTH, UP).
-  gps::GpsInputs& gps() { return gps_; }
-  const gps::GpsInputs& gps() const { return gps_; }
-
- private:
-  std::vector<std::unique_ptr<sf_config::extractors::ExtractorState>> extractors_;
-  sf_config::extractors::ParameterValues parameters_;
-  std::vector<std::uint64_t> covarianceFallbacks_;
-  gps::GpsInputs gps_;
 };
 
 /// One subscribed topic: its message type and the reader of its serialized messages.
@@ -89,9 +49,10 @@ struct TopicReader {
   std::string md5sum;
   std::string definition;  ///< the full message definition (rosbag connection header)
   bool controls = false;   ///< the topic feeds TOPICS_IN_CTRL, not TOPICS_IN
-  /// Deserializes one message and hands every field used from it to `sink`. Throws
-  /// std::runtime_error when the bytes are not a message of this type.
-  void (*read)(const std::uint8_t* data, std::uint32_t size, MessageSink& sink,
+  /// Deserializes one message and hands every input read from it to `sink`, the extractors
+  /// keeping their state in `state`. Throws std::runtime_error when the bytes are not a
+  /// message of this type.
+  void (*read)(const std::uint8_t* data, std::uint32_t size, MessageSink& sink, InputState& state,
                double now) = nullptr;
 };
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sf_filter/config/extractors/extractor.hpp"
 #include "sf_filter/core/fusion_core_options.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/core/input_overrides.hpp"

@@ -40,6 +40,7 @@
 #include "sf_filter/config/extractors/quaternion_angles.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/core/message_arrival.hpp"
+#include "sf_filter/definition/input_state.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/io/estimate_writer.hpp"
@@ -159,6 +160,11 @@ class FusionNode final : public MessageSink {
 
   const FusionEngine& core() const { return core_; }
 
+  /// What reading the inputs keeps between messages (extractors, GPS datum and counters,
+  /// covariance fallbacks), this run's.
+  InputState& inputState() { return inputState_; }
+  const InputState& inputState() const { return inputState_; }
+
  private:
   /// POSE_OUT: robot_localization's set_pose topics and service.
   void advertisePose() {
@@ -197,19 +203,19 @@ class FusionNode final : public MessageSink {
     diagnostics_.addLossSource(wrongType);
     // A GPS input's fixes without a valid status (gps::GpsInputs).
     InputLossSource noFix;
-    noFix.count = [this](std::size_t i) { return gps().noFix(i); };
+    noFix.count = [this](std::size_t i) { return inputState_.gps().noFix(i); };
     noFix.reason = [](std::size_t) { return std::string("GPS fix status below STATUS_FIX"); };
     diagnostics_.addLossSource(noFix);
     // A GPS input's fixes whose position is not on the Earth (gps::implausible).
     InputLossSource implausibleFix;
-    implausibleFix.count = [this](std::size_t i) { return gps().implausibleFixes(i); };
+    implausibleFix.count = [this](std::size_t i) { return inputState_.gps().implausibleFixes(i); };
     implausibleFix.reason = [this](std::size_t i) {
-      return "GPS fix not on the Earth: " + gps().implausibleReason(i);
+      return "GPS fix not on the Earth: " + inputState_.gps().implausibleReason(i);
     };
     diagnostics_.addLossSource(implausibleFix);
     // INPUT_COVARIANCE: messages whose covariance was unknown (all zero, -1 first) used R.
     diagnostics_.addInputValue("covariance unknown, header R used", [this](std::size_t i) {
-      const std::uint64_t n = covarianceFallbacks(static_cast<Index>(i));
+      const std::uint64_t n = inputState_.covarianceFallbacks(static_cast<Index>(i));
       return n ? std::to_string(n) : std::string();
     });
     if (aligner_) {
@@ -253,7 +259,7 @@ class FusionNode final : public MessageSink {
     ros::serialization::OStream stream(buffer_.data(), msg->size());
     msg->write(stream);
     try {
-      reader.read(buffer_.data(), msg->size(), *this, now);
+      reader.read(buffer_.data(), msg->size(), *this, inputState_, now);
     } catch (const ros::Exception& e) {
       ROS_ERROR_THROTTLE(5.0, "topic %s: a message could not be decoded: %s", reader.topic.c_str(),
                          e.what());
@@ -660,6 +666,7 @@ class FusionNode final : public MessageSink {
     publish(e);
   };
   std::vector<std::uint8_t> buffer_;  ///< the message being read, serialized
+  InputState inputState_;
   /// Messages of another type received on a topic.
   struct WrongType {
     std::uint64_t count = 0;

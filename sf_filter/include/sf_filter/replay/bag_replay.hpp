@@ -38,6 +38,7 @@
 
 #include "sf_filter/core/fusion_engine.hpp"
 #include "sf_filter/core/replay_clock.hpp"
+#include "sf_filter/definition/input_state.hpp"
 #include "sf_filter/definition/message_sink.hpp"
 #include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/io/estimate_writer.hpp"
@@ -246,6 +247,10 @@ class BagReplay final : public MessageSink {
     bagFile.commit();
     return summary_;
   }
+  /// What reading the inputs keeps between messages (extractors, GPS datum and counters,
+  /// covariance fallbacks), this run's.
+  InputState& inputState() { return inputState_; }
+  const InputState& inputState() const { return inputState_; }
 
   const FusionEngine& core() const { return core_; }
 
@@ -294,7 +299,7 @@ class BagReplay final : public MessageSink {
     buffer_.resize(m.size());
     ros::serialization::OStream stream(buffer_.data(), m.size());
     m.write(stream);
-    reader.read(buffer_.data(), m.size(), *this, now);
+    reader.read(buffer_.data(), m.size(), *this, inputState_, now);
   }
 
   static constexpr const char* kTf = "/tf";
@@ -697,6 +702,7 @@ class BagReplay final : public MessageSink {
   std::map<std::string, std::vector<TopicReader>> readers_;
   ReplayRotation* rotation_ = nullptr;
   std::vector<std::uint8_t> buffer_;  ///< the message being read, serialized
+  InputState inputState_;
   std::map<std::string, ExpectedType> expectedTypes_;
   TransformSink transformSink_;
   ReplaySummary summary_;

@@ -2,7 +2,7 @@
 //
 // An extractor kind is one class (one header in config/extractors/, one line in kinds.hpp):
 //
-//   class MyKind : public ExtractorState {       // one object per input, kept by the sink
+//   class MyKind : public ExtractorState {       // one object per input, kept per run
 //    public:
 //     static constexpr std::array<std::string_view, K> kQuantities{"MY_QUANTITY", ...};
 //     static constexpr std::array<bool, K> kAngle{true, ...};  // angle inputs (ANGLE_INPUTS)
@@ -17,8 +17,9 @@
 // message (its header, its covariance arrays). sample() turns one message into the input's
 // value and variance (nullopt: the header's R), or nothing (the message gives no value). The
 // object is the kind's state (a previous pose, ...): the node and the replay each keep one per
-// input in their MessageSink, so every run starts anew. The node and the replay call every kind
-// the same way (generated/node_definition_of.hpp, readInput).
+// input in their InputState (definition/input_state.hpp), so every run starts anew. The node
+// and the replay call every kind, and every other input, the same way
+// (generated/input_extractors.hpp, DerivedInput and readInput).
 // ROS-free and header-only.
 #pragma once
 
@@ -48,7 +49,7 @@ struct ExtractorParameter {
   std::string_view meaning;  ///< e.g. "radians in [-pi, pi]", for the error message
 };
 
-/// The values of the kinds' parameters a node or replay was given (kept by the sink; checked
+/// The values of the kinds' parameters a node or replay was given (kept by its InputState; checked
 /// against the ranges where they are read, io/extractor_parameters.hpp).
 class ParameterValues {
  public:

@@ -20,8 +20,9 @@ namespace sf_config {
 namespace extractors {
 
 /// Extractor kind EAST, NORTH, UP of a sensor_msgs/NavSatFix: the fix about the datum in the
-/// odom frame. Its inputs are read together, with their covariance block, by the GPS path
-/// (config/gps_inputs.hpp, gps/gps_inputs.hpp: the datum is shared by the topic's inputs).
+/// odom frame. Its inputs are read by generated/input_extractors.hpp's GpsInput and handed
+/// over together with their covariance block (GpsGroup): the datum (gps/gps_inputs.hpp) is
+/// shared by the topic's inputs, and the checks are config/gps_inputs.hpp's.
 struct GpsPosition : ExtractorState {
   static constexpr std::array<std::string_view, 3> kQuantities{"EAST", "NORTH", "UP"};
   static constexpr std::array<bool, 3> kAngle{false, false, false};
