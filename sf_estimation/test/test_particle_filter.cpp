@@ -407,6 +407,29 @@ TEST(ParticleFilterRejection, NumericalErrorInsideAStepRestoresTheEngine) {
   EXPECT_EQ(a.state(), b.state());
 }
 
+TEST(ParticleFilterBelief, SetBeliefDrawsTheParticlesAnewOrChangesNothing) {
+  ParticleFilterSIR<MovingTrain> pf(MovingTrain{}, Matrix<2, 2>::Identity() * 0.01,
+                                    Matrix<2, 2>::Identity(), Vector<2>::Zero(),
+                                    Matrix<2, 2>::Identity(), parameters(20000, 3));
+  Matrix<2, 2> P;
+  P << 0.04, 0.01, 0.01, 0.09;
+  pf.setBelief(Vector<2>(2.0, -1.0), P);
+  // The sample mean's standard deviation is sqrt(P_ii / N): 0.0014 and 0.0021.
+  EXPECT_NEAR(pf.state()(0), 2.0, 5.0 * std::sqrt(0.04 / 20000));
+  EXPECT_NEAR(pf.state()(1), -1.0, 5.0 * std::sqrt(0.09 / 20000));
+  // A sample variance's standard deviation is P_ii sqrt(2 / N): 4e-4 and 9e-4.
+  EXPECT_NEAR(pf.covariance()(0, 0), 0.04, 5.0 * 0.04 * std::sqrt(2.0 / 20000));
+  EXPECT_NEAR(pf.covariance()(1, 1), 0.09, 5.0 * 0.09 * std::sqrt(2.0 / 20000));
+  EXPECT_DOUBLE_EQ(pf.effectiveSampleSize(), 20000.0);
+  const auto particles = pf.particles();
+  const Vector<2> x = pf.state();
+  Matrix<2, 2> bad = P;
+  bad(0, 1) = 0.5;  // not symmetric
+  EXPECT_THROW(pf.setBelief(Vector<2>(0.0, 0.0), bad), estimation::ParameterError);
+  EXPECT_EQ(pf.particles(), particles);
+  EXPECT_EQ(pf.state(), x);
+}
+
 TEST(ParticleFilterParametersCheck, RefusesInvalidParameters) {
   const Matrix<1, 1> one = Matrix<1, 1>::Constant(1.0);
   EXPECT_THROW(ParticleFilterSIR<RandomWalk>(RandomWalk{}, one, one, Vector<1>::Zero(), one,

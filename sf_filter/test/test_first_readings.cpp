@@ -2,10 +2,13 @@
 // INITIAL_STATE_FROM_INPUTS): a state variable takes its input's first aligned value before the
 // step of the first period that has one, with its covariance kept; later periods and other
 // inputs do not touch it; a reset arms it again; bad indices are refused. The reference is the
-// same Kalman filter whose belief is set by hand.
+// same Kalman filter whose belief is set by hand. A particle filter takes the reading's own
+// variance instead (its reference: the same particle filter set by hand).
 #include <gtest/gtest.h>
 
 #include <sf_estimation/errors.hpp>
+#include <sf_estimation/models/moving_train.hpp>
+#include <sf_estimation/particle_filter.hpp>
 
 #include "train_core.hpp"
 
@@ -79,6 +82,50 @@ TEST(FirstReadings, RefusesIndicesOutsideTheStateOrTheInputs) {
   EXPECT_THROW(Core(makeTrain(), options), estimation::ParameterError);
   options.initialFromInputs = {{0, -1}};
   EXPECT_THROW(Core(makeTrain(), options), estimation::ParameterError);
+}
+
+using TrainPf = estimation::ParticleFilterSIR<estimation::models::MovingTrain>;
+
+TrainPf makeTrainPf() {
+  estimation::ParticleFilterParameters params;
+  params.particles = 4000;
+  params.seed = 5;
+  const Matrix<2, 2> Q = Matrix<2, 2>::Identity() * 0.01;
+  return TrainPf(estimation::models::MovingTrain{}, Q, trainR(), Vector<2>(0, 0),
+                 Matrix<2, 2>::Identity(), params);
+}
+
+TEST(FirstReadings, AParticleFilterStartsFromTheReadingsOwnVariance) {
+  Core::Options options;
+  options.period = kPeriod;
+  options.initialFromInputs.push_back({1, 1});
+  sf_filter::FusionCore<TrainPf> core(makeTrainPf(), options);
+  std::vector<sf_filter::FusionCore<TrainPf>::Estimate> out;
+  auto collect = [&](const auto& e) { out.push_back(e); };
+  core.advanceTo(0.0, collect);
+  core.addMeasurement(1, 0.05, 0.7);
+  core.advanceTo(0.1, collect);
+  ASSERT_EQ(out.size(), 1u);
+  // By hand: the acceleration at the reading with R's 0.2, uncorrelated, then the step.
+  TrainPf reference = makeTrainPf();
+  Vector<2> x = reference.state();
+  Matrix<2, 2> P = reference.covariance();
+  x(1) = 0.7;
+  P(0, 1) = P(1, 0) = 0.0;
+  P(1, 1) = 0.2;
+  reference.setBelief(x, P);
+  reference.estimate(accelerationOnly(0.7));
+  EXPECT_EQ(out[0].state, reference.state());
+  EXPECT_EQ(out[0].covariance, reference.covariance());
+  // The reading is weighed by particles that already lie around it: the weights stay even.
+  EXPECT_GT(reference.effectiveSampleSize(), 0.5 * 4000);
+  // Kept P0 (variance 1 against R 0.2): the first step leaves far fewer effective particles.
+  TrainPf kept = makeTrainPf();
+  Vector<2> y = kept.state();
+  y(1) = 0.7;
+  kept.setBelief(y, kept.covariance());
+  kept.estimate(accelerationOnly(0.7));
+  EXPECT_LT(kept.effectiveSampleSize(), reference.effectiveSampleSize() - 0.05 * 4000);
 }
 
 }  // namespace

@@ -156,6 +156,38 @@ class ParticleFilterSIR {
   /// Steps whose measurement made every particle weight vanish (numerical_repairs.hpp).
   const NumericalRepairs& numericalRepairs() const { return repairs_; }
 
+  const Matrix<M, M>& measurementNoise() const { return R_; }
+
+  /// The belief is a sample: a reading far outside its spread leaves a few particles with all
+  /// the weight, so a belief set from a reading (the node's first readings) starts from the
+  /// reading's own variance instead of keeping P (sf_filter's FusionCore).
+  static constexpr bool kSampledBelief = true;
+
+  /// Draws the particles anew from N(x, P) with equal weights (the node's set_pose and first
+  /// readings; the shared dead-reckoned block takes x and P as they are). Throws
+  /// ParameterError for a wrong size, a non-finite x or a P that is not a covariance
+  /// (requireCovariance), leaving the filter (its engine included) as it was.
+  void setBelief(const Vector<N>& x, const Matrix<N, N>& P) {
+    const std::string method = "ParticleFilterSIR";
+    requireSize(method, "x", x, stateSize(), 1);
+    requireCovariance(method, "P", P, stateSize(), false);
+    const probability::RandomEngine savedEngine = engine_;
+    try {
+      drawGaussianParticles(engine_, x, P, scratch_, noise_);
+    } catch (...) {
+      engine_ = savedEngine;
+      throw;
+    }
+    particles_.swap(scratch_);
+    angleStates_.wrap(particles_);
+    logWeights_.setConstant(-std::log(static_cast<double>(particleCount())));
+    weights_.setConstant(1.0 / static_cast<double>(particleCount()));
+    updateMoments();
+    setSharedBlock(x, P);
+    effectiveSampleSize_ = static_cast<double>(particleCount());
+    resampled_ = false;
+  }
+
   void setControl(const Vector<L>& u) {
     validateControl(u, controlSize());
     u_ = u;
@@ -169,15 +201,7 @@ class ParticleFilterSIR {
     logWeights_.setConstant(-std::log(static_cast<double>(particleCount())));
     weights_.setConstant(1.0 / static_cast<double>(particleCount()));
     updateMoments();
-    if (anyDeadReckoned_) {
-      // The shared Gaussian starts as given, not as the sample of it.
-      for (Index r = 0; r < stateSize(); ++r) {
-        if (!deadReckoned_(r)) continue;
-        state_(r) = x0_(r);
-        covariance_.row(r) = P0_.row(r);
-        covariance_.col(r) = P0_.col(r);
-      }
-    }
+    setSharedBlock(x0_, P0_);
     effectiveSampleSize_ = static_cast<double>(particleCount());
     resampled_ = false;
   }
@@ -382,6 +406,18 @@ class ParticleFilterSIR {
       }
       if (nonzeros > 1) noisePerRow_ = false;
     }
+  }
+
+  /// The shared dead-reckoned block starts as given, not as the sample of it.
+  void setSharedBlock(const Vector<N>& x, const Matrix<N, N>& P) {
+    if (!anyDeadReckoned_) return;
+    for (Index r = 0; r < stateSize(); ++r) {
+      if (!deadReckoned_(r)) continue;
+      state_(r) = x(r);
+      covariance_.row(r) = P.row(r);
+      covariance_.col(r) = P.col(r);
+    }
+    angleStates_.wrap(state_);
   }
 
   /// sharedSpread_ = D S S^T D^T + Q on the dead-reckoned block (zero elsewhere): the shared

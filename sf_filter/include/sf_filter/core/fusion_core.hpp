@@ -52,8 +52,11 @@
 // aligned value of its input in the first period that has one, set into the belief before that
 // period's step with its covariance kept, so that the step predicts with it and weighs the
 // reading once; the gates of that period have already been checked against the initial state.
-// Armed again by every reset and filter restart. Filters without setBelief (the particle
-// filter, the averaging methods) start from the initial state as before.
+// Armed again by every reset and filter restart. Filters without setBelief (the averaging
+// methods) start from the initial state as before. A sampled belief (the particle filter,
+// kSampledBelief) takes the reading's own variance for such a variable instead of keeping P:
+// particles spread by P0 around a reading far more accurate than P0 would leave a few of them
+// with all the weight in the first step.
 #pragma once
 
 #include <algorithm>
@@ -94,6 +97,12 @@ struct CanSetBelief<F,
                     std::void_t<decltype(std::declval<F&>().setBelief(
                         std::declval<const F&>().state(), std::declval<const F&>().covariance()))>>
     : std::true_type {};
+
+/// Whether the filter's belief is a sample (kSampledBelief: the particle filter).
+template <class F, class = void>
+struct HasSampledBelief : std::false_type {};
+template <class F>
+struct HasSampledBelief<F, std::enable_if_t<F::kSampledBelief>> : std::true_type {};
 
 /// The fusion core of one filter type: FusionCoreBase (compiled once) does the scheduling,
 /// checks and alignment; this template adds only the filter and its fixed-size step.
@@ -203,7 +212,8 @@ class FusionCore : public FusionCoreBase {
   }
 
   /// Replaces the filter's belief (set_pose); the last estimate shows it at once. Only for
-  /// filters with setBelief (the Kalman filter family).
+  /// filters with setBelief (the Kalman filter family, and the particle filter, which draws its
+  /// particles anew).
   template <class State, class Covariance>
   void setBelief(const State& x, const Covariance& P) {
     filter_.setBelief(x, P);
@@ -298,16 +308,22 @@ class FusionCore : public FusionCoreBase {
       if (firstReadingsLeft_ == 0) return false;
       bool changed = false;
       estimation::Vector<N> x = filter_.state();
+      estimation::Matrix<N, N> P = filter_.covariance();
       for (std::size_t k = 0; k < firstReadingsDue_.size(); ++k) {
         const Options::FirstReading& f = options().initialFromInputs[k];
         const PeriodEntry& e = periodEntries()[static_cast<std::size_t>(f.input)];
         if (!firstReadingsDue_[k] || !e.measured) continue;
         x(f.state) = e.value;
+        if constexpr (HasSampledBelief<Filter>::value) {
+          P.row(f.state).setZero();
+          P.col(f.state).setZero();
+          P(f.state, f.state) = e.variance.value_or(filter_.measurementNoise()(f.input, f.input));
+        }
         firstReadingsDue_[k] = false;
         --firstReadingsLeft_;
         changed = true;
       }
-      if (changed) filter_.setBelief(x, filter_.covariance());
+      if (changed) filter_.setBelief(x, P);
       return changed;
     } else {
       return false;
