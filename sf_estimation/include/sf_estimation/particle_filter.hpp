@@ -10,8 +10,10 @@
 // of a value per particle: each step every particle is moved from the shared mean, the new mean
 // is the particles' weighted mean and the covariance adds, to the particles' spread, the shared
 // covariance carried through f (central differences along its square root, as the divided
-// difference filter does) and Q. Only the dead-reckoned block changes; nothing is lost to path
-// degeneracy, as the particles' own pose is the path of a few ancestors.
+// difference filter does) and Q. Carried per particle, a dead-reckoned pose is the path of the
+// few ancestors resampling leaves (path degeneracy); shared, it is moved by all particles.
+// With ParticleProposal::Linearised the particles are drawn from each one's Kalman posterior
+// instead of the transition (particle_proposal.hpp).
 #pragma once
 
 #include <algorithm>
