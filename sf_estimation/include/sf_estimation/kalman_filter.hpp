@@ -61,6 +61,21 @@ struct Check<manifold::StateLayout<Blocks...>, N> {
 
 }  // namespace kalman_layout
 
+/// out = A x + B u. Without controls B is N x 0, and Eigen's product over its empty (null)
+/// storage offsets a null pointer, undefined behaviour the sanitizer build reports (N = 3): then
+/// it is not formed, and the empty product's +0 is added as the full expression adds it (a -0
+/// entry of A x becomes +0), so both forms give the same bits.
+template <int N, int L>
+void linearTransition(const Matrix<N, N>& A, const Vector<N>& x, const Matrix<N, L>& B,
+                      const Vector<L>& u, Vector<N>& out) {
+  if constexpr (L == 0) {
+    out.noalias() = A * x;
+    out.array() += 0.0;
+  } else {
+    out = A * x + B * u;
+  }
+}
+
 /// Layout: the state's layout (manifold/state_layout.hpp) when given; it must be flat (vector
 /// blocks only) and of N entries. void, the default, is N plain entries for any N.
 template <int N, int M, int L = 0, class Layout = void>
@@ -123,7 +138,7 @@ class KalmanFilter : public AbstractKalmanFilter<N, M, L> {
  private:
   /// Time update of the current belief: x(k|k-1) = A x + B u, P(k|k-1) = A P A^T + Q.
   void predict(Vector<N>& x, Matrix<N, N>& P) const {
-    x = A_ * this->x_ + B_ * this->u_;
+    linearTransition<N, L>(A_, this->x_, B_, this->u_, x);
     propagateCovariance<N>(A_, this->P_, this->Q_, P);
   }
 

@@ -109,7 +109,7 @@ struct LinearPrediction {
 
   void predict(const Vector<N>& x, const Matrix<N, N>& P, const Vector<L>& u,
                OneStepPrediction<N>& out) const {
-    out.x = A * x + B * u;
+    linearTransition<N, L>(A, x, B, u, out.x);
     propagateCovariance<N>(A, P, Q, out.P);
     out.cross = P * A.transpose();
   }
