@@ -38,6 +38,7 @@
 
 #include <boost/preprocessor/facilities/is_empty.hpp>
 #include <boost/preprocessor/tuple/elem.hpp>
+#include <boost/preprocessor/tuple/enum.hpp>
 
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/option_entries.hpp"
@@ -62,17 +63,14 @@
 #endif
 
 // --- INPUT_ALIGNMENT ------------------------------------------------------------------------------
-#define SF_AL_FORMAT                                                                               \
-  "((index)(AVERAGE)), ((index)(LAST)), ((index)(SAMPLED)), "                                      \
-  "((index)(HOLD)(LAGRANGE|BEZIER|TAYLOR)(order)[(variance)]) or "                                 \
-  "((index)(FILL)(omega)(N)[(variance)])"
-
 #if defined(INPUT_ALIGNMENT)
-SF_PP_CHECK_LIST("INPUT_ALIGNMENT", 2, 5, SF_AL_FORMAT, INPUT_ALIGNMENT)
-#define SF_AL_OK SF_PP_IS_LIST(2, 5, INPUT_ALIGNMENT)
-#else
-#define SF_AL_OK 0
+SF_PP_CHECK_LIST("INPUT_ALIGNMENT", 2, 5,
+                 "((index)(AVERAGE)), ((index)(LAST)), ((index)(SAMPLED)), "
+                 "((index)(HOLD)(LAGRANGE|BEZIER|TAYLOR)(order)[(variance)]) or "
+                 "((index)(FILL)(omega)(N)[(variance)])",
+                 INPUT_ALIGNMENT)
 #endif
+#define SF_AL_OK SF_PP_IS_LIST(2, 5, INPUT_ALIGNMENT)
 
 // Policy names: (id, fewest elements, most elements, form of the entry). A name is recognized
 // by pasting it to SF_AL_KIND_: an unknown name gives an identifier, not a tuple.
@@ -97,8 +95,9 @@ SF_PP_CHECK_LIST("INPUT_ALIGNMENT", 2, 5, SF_AL_FORMAT, INPUT_ALIGNMENT)
 // Message prefix naming an entry, e.g. "INPUT_ALIGNMENT entry 1 ((2)(HOLD)(SPLINE)(1))".
 #define SF_AL_PREFIX(MACRO, k, entry) MACRO " entry " SF_PP_STR(k) " (" SF_PP_STR(entry) ")"
 
-// The input index of an entry of INPUT_ALIGNMENT or INPUT_GATE, checked (range, listed once).
-#define SF_AL_INDEX_MEMBERS(MACRO, FIRST, k, index)                                                \
+// The input index of an entry of a per-input option, checked (range, listed once: INDICES is
+// the option's index list in input_alignment_detail, see SF_OPTION_INDICES).
+#define SF_AL_INDEX_MEMBERS(MACRO, INDICES, k, index)                                                \
   static constexpr auto configured_index = index;                                                  \
   static constexpr int input_index = static_cast<int>(configured_index);                           \
   static_assert(std::is_integral<decltype(configured_index)>::value && configured_index >= 0 &&   \
@@ -107,7 +106,7 @@ SF_PP_CHECK_LIST("INPUT_ALIGNMENT", 2, 5, SF_AL_FORMAT, INPUT_ALIGNMENT)
                 "' is out of range, expected an integer from 0 to " SF_PP_STR(BOOST_PP_DEC(SF_CFG_M)) \
                 " (the TOPICS_IN entry; " SF_CFG_M_WHY ")");                                       \
   static_assert(input_index < 0 || input_index >= kMeasurementSize ||                             \
-                    input_alignment_detail::FIRST(input_index) == k,                               \
+                    detail::entryNaming(input_alignment_detail::INDICES, input_index) == k,                               \
                 MACRO " entry " SF_PP_STR(k) ": input " SF_PP_STR(index)                           \
                 " is already listed in an earlier entry; list each input once");
 
@@ -120,6 +119,22 @@ SF_PP_CHECK_LIST("INPUT_ALIGNMENT", 2, 5, SF_AL_FORMAT, INPUT_ALIGNMENT)
                 "measurement variance of the substitutes; leave it out to use R)");
 #define SF_AL_VARIANCE_GIVEN(entry) std::optional<double>(static_cast<double>(BOOST_PP_SEQ_ELEM(4, entry)))
 #define SF_AL_VARIANCE_NONE(entry) std::optional<double>()
+
+// An entry ((index)(value)) of a per-input option whose value is a positive finite number
+// (INPUT_GATE, INPUT_TIMEOUT): struct STRUCT<k> with its checked input_index and `value`. As
+// SF_OPTION_ENTRIES' ENTRY: data = (STRUCT, MACRO, INDICES, WHAT, HINT).
+#define SF_POSITIVE_ENTRY_OP(r, data, k, entry) SF_POSITIVE_ENTRY(BOOST_PP_TUPLE_ENUM(data), k, entry)
+#define SF_POSITIVE_ENTRY(...) SF_POSITIVE_ENTRY_I(__VA_ARGS__)
+#define SF_POSITIVE_ENTRY_I(STRUCT, MACRO, INDICES, WHAT, HINT, k, entry)                          \
+  struct BOOST_PP_CAT(STRUCT, k) {                                                                 \
+    SF_AL_INDEX_MEMBERS(MACRO, INDICES, k, BOOST_PP_SEQ_ELEM(0, entry))                            \
+    static constexpr auto configured_value = BOOST_PP_SEQ_ELEM(1, entry);                          \
+    static_assert(std::is_arithmetic<decltype(configured_value)>::value && configured_value > 0 && \
+                      configured_value < std::numeric_limits<double>::infinity(),                  \
+                  SF_AL_PREFIX(MACRO, k, entry) ": " WHAT " '" SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry)) \
+                  "' must be a positive finite number" HINT);                                      \
+    static constexpr double value = static_cast<double>(configured_value);                         \
+  };
 
 #define SF_AL_ENTRY(r, data, k, entry)                                                             \
   BOOST_PP_IIF(SF_AL_KNOWN(entry), SF_AL_ENTRY_KNOWN, SF_AL_ENTRY_UNKNOWN)(k, entry)
@@ -142,8 +157,8 @@ SF_PP_CHECK_LIST("INPUT_ALIGNMENT", 2, 5, SF_AL_FORMAT, INPUT_ALIGNMENT)
 
 #define SF_AL_ENTRY_SIMPLE(k, entry, FACTORY)                                                      \
   struct BOOST_PP_CAT(AlignmentEntry, k) : input_alignment_detail::EntryBase {                     \
-    SF_AL_INDEX_MEMBERS("INPUT_ALIGNMENT", firstAlignmentEntry, k, BOOST_PP_SEQ_ELEM(0, entry))    \
-    static constexpr ::sf_filter::AlignmentPolicy policy = ::sf_filter::AlignmentPolicy::FACTORY(); \
+    SF_AL_INDEX_MEMBERS("INPUT_ALIGNMENT", kAlignmentIndices, k, BOOST_PP_SEQ_ELEM(0, entry))      \
+    static constexpr ::sf_filter::AlignmentPolicy value = ::sf_filter::AlignmentPolicy::FACTORY(); \
   };
 #define SF_AL_ENTRY_KIND_0(k, entry) SF_AL_ENTRY_SIMPLE(k, entry, average)
 #define SF_AL_ENTRY_KIND_1(k, entry) SF_AL_ENTRY_SIMPLE(k, entry, last)
@@ -160,7 +175,7 @@ SF_PP_CHECK_LIST("INPUT_ALIGNMENT", 2, 5, SF_AL_FORMAT, INPUT_ALIGNMENT)
   };
 #define SF_AL_ENTRY_HOLD(k, entry)                                                                 \
   struct BOOST_PP_CAT(AlignmentEntry, k) : input_alignment_detail::EntryBase {                     \
-    SF_AL_INDEX_MEMBERS("INPUT_ALIGNMENT", firstAlignmentEntry, k, BOOST_PP_SEQ_ELEM(0, entry))    \
+    SF_AL_INDEX_MEMBERS("INPUT_ALIGNMENT", kAlignmentIndices, k, BOOST_PP_SEQ_ELEM(0, entry))      \
     SF_AL_VARIANCE_MEMBERS(k, entry)                                                               \
     static constexpr auto configured_order = BOOST_PP_SEQ_ELEM(3, entry);                          \
     static_assert(std::is_integral<decltype(configured_order)>::value && configured_order >= 0 &&  \
@@ -168,14 +183,14 @@ SF_PP_CHECK_LIST("INPUT_ALIGNMENT", 2, 5, SF_AL_FORMAT, INPUT_ALIGNMENT)
                   SF_AL_PREFIX("INPUT_ALIGNMENT", k, entry) ": HOLD order '"                       \
                   SF_PP_STR(BOOST_PP_SEQ_ELEM(3, entry)) "' is not an integer from 0 to 15 (0 "    \
                   "zero-order hold, 1 first-order hold, ...)");                                    \
-    static constexpr ::sf_filter::AlignmentPolicy policy = ::sf_filter::AlignmentPolicy::hold(     \
+    static constexpr ::sf_filter::AlignmentPolicy value = ::sf_filter::AlignmentPolicy::hold(     \
         ::sf_filter::HoldPrimitive::BOOST_PP_TUPLE_ELEM(1, 0, SF_AL_PRIMITIVE_INFO(entry)),        \
         static_cast<int>(configured_order), variance);                                             \
   };
 
 #define SF_AL_ENTRY_KIND_4(k, entry)                                                               \
   struct BOOST_PP_CAT(AlignmentEntry, k) : input_alignment_detail::EntryBase {                     \
-    SF_AL_INDEX_MEMBERS("INPUT_ALIGNMENT", firstAlignmentEntry, k, BOOST_PP_SEQ_ELEM(0, entry))    \
+    SF_AL_INDEX_MEMBERS("INPUT_ALIGNMENT", kAlignmentIndices, k, BOOST_PP_SEQ_ELEM(0, entry))      \
     SF_AL_VARIANCE_MEMBERS(k, entry)                                                               \
     static constexpr auto configured_omega = BOOST_PP_SEQ_ELEM(2, entry);                          \
     static constexpr auto configured_samples = BOOST_PP_SEQ_ELEM(3, entry);                        \
@@ -193,32 +208,15 @@ SF_PP_CHECK_LIST("INPUT_ALIGNMENT", 2, 5, SF_AL_FORMAT, INPUT_ALIGNMENT)
                   SF_AL_PREFIX("INPUT_ALIGNMENT", k, entry) ": FILL needs the filter's predicted " \
                   "measurement h(x(k|k-1)), which " SF_CFG_METHOD_NAME " does not give; choose a " \
                   "model-based METHOD or another policy");                                         \
-    static constexpr ::sf_filter::AlignmentPolicy policy = ::sf_filter::AlignmentPolicy::fill(     \
+    static constexpr ::sf_filter::AlignmentPolicy value = ::sf_filter::AlignmentPolicy::fill(     \
         static_cast<double>(configured_omega), static_cast<int>(configured_samples), variance);    \
   };
 
 // --- INPUT_GATE -----------------------------------------------------------------------------------
-#define SF_GATE_FORMAT "((input index)(chi-square threshold)), e.g. ((1)(9.0))"
 #if defined(INPUT_GATE)
-SF_PP_CHECK_LIST("INPUT_GATE", 2, 2, SF_GATE_FORMAT, INPUT_GATE)
-#define SF_GATE_OK SF_PP_IS_LIST(2, 2, INPUT_GATE)
-#else
-#define SF_GATE_OK 0
+SF_PP_CHECK_LIST("INPUT_GATE", 2, 2, "((input index)(chi-square threshold)), e.g. ((1)(9.0))", INPUT_GATE)
 #endif
-
-#define SF_GATE_ENTRY(r, data, k, entry)                                                           \
-  struct BOOST_PP_CAT(GateEntry, k) {                                                              \
-    SF_AL_INDEX_MEMBERS("INPUT_GATE", firstGateEntry, k, BOOST_PP_SEQ_ELEM(0, entry))              \
-    static constexpr auto configured_threshold = BOOST_PP_SEQ_ELEM(1, entry);                      \
-    static_assert(std::is_arithmetic<decltype(configured_threshold)>::value &&                     \
-                      configured_threshold > 0 &&                                                  \
-                      configured_threshold < std::numeric_limits<double>::infinity(),              \
-                  SF_AL_PREFIX("INPUT_GATE", k, entry) ": threshold '"                             \
-                  SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry)) "' must be a positive finite number "     \
-                  "(the chi-square quantile with 1 degree of freedom, e.g. 3.84 for 95 %, 6.63 "   \
-                  "for 99 %, 9 for 3 sigma)");                                                     \
-    static constexpr double threshold = static_cast<double>(configured_threshold);                 \
-  };
+#define SF_GATE_OK SF_PP_IS_LIST(2, 2, INPUT_GATE)
 
 // --- ALIGN_BY_STAMP -------------------------------------------------------------------------------
 #if defined(ALIGN_BY_STAMP)
@@ -235,92 +233,40 @@ static_assert(false, "ALIGN_BY_STAMP: expected a sequence of input indices, each
 
 #define SF_STAMP_ENTRY(r, data, k, index)                                                          \
   struct BOOST_PP_CAT(StampEntry, k) {                                                             \
-    SF_AL_INDEX_MEMBERS("ALIGN_BY_STAMP", firstStampEntry, k, index)                               \
+    SF_AL_INDEX_MEMBERS("ALIGN_BY_STAMP", kStampIndices, k, index)                               \
     using Message = typename ::sf_config::detail::InputMessageOf<input_index>::type;               \
     static_assert(::sf_config::detail::isUnknownMessage<Message>() ||                              \
                       ::sf_config::detail::HasHeaderStamp<Message>::value,                         \
                   "ALIGN_BY_STAMP entry " SF_PP_STR(k) ": the message type of TOPICS_IN entry "    \
                   SF_PP_STR(index) " has no header.stamp; only stamped messages can be aligned "   \
                   "by stamp");                                                                     \
+    static constexpr bool value = true;                                                            \
   };
 
 #define SF_AL_INDEX_OP(r, data, k, entry) BOOST_PP_COMMA_IF(k) static_cast<int>(BOOST_PP_SEQ_ELEM(0, entry))
 #define SF_STAMP_INDEX_OP(r, data, k, index) BOOST_PP_COMMA_IF(k) static_cast<int>(index)
-#define SF_AL_APPLY(r, ARRAY, k, entry)                                                            \
-  if (BOOST_PP_CAT(AlignmentEntry, k)::input_index >= 0 && BOOST_PP_CAT(AlignmentEntry, k)::input_index < kMeasurementSize) { \
-    ARRAY[static_cast<std::size_t>(BOOST_PP_CAT(AlignmentEntry, k)::input_index)] = BOOST_PP_CAT(AlignmentEntry, k)::policy;   \
-  }
-#define SF_GATE_APPLY(r, ARRAY, k, entry)                                                          \
-  if (BOOST_PP_CAT(GateEntry, k)::input_index >= 0 && BOOST_PP_CAT(GateEntry, k)::input_index < kMeasurementSize) {           \
-    ARRAY[static_cast<std::size_t>(BOOST_PP_CAT(GateEntry, k)::input_index)] = BOOST_PP_CAT(GateEntry, k)::threshold;          \
-  }
-#define SF_STAMP_APPLY(r, ARRAY, k, index)                                                         \
-  if (BOOST_PP_CAT(StampEntry, k)::input_index >= 0 && BOOST_PP_CAT(StampEntry, k)::input_index < kMeasurementSize) {         \
-    ARRAY[static_cast<std::size_t>(BOOST_PP_CAT(StampEntry, k)::input_index)] = true;                            \
-  }
-
 // clang-format on
 
 namespace sf_config {
 namespace input_alignment_detail {
 
-#if SF_AL_OK
-inline constexpr int kAlignmentIndices[] = {
-    BOOST_PP_SEQ_FOR_EACH_I(SF_AL_INDEX_OP, ~, INPUT_ALIGNMENT)};
-constexpr int firstAlignmentEntry(int input) {
-  return detail::entryNaming(kAlignmentIndices, input);
-}
-#endif
-#if SF_GATE_OK
-inline constexpr int kGateIndices[] = {BOOST_PP_SEQ_FOR_EACH_I(SF_AL_INDEX_OP, ~, INPUT_GATE)};
-constexpr int firstGateEntry(int input) { return detail::entryNaming(kGateIndices, input); }
-#endif
-#if SF_STAMP_OK
-inline constexpr int kStampIndices[] = {
-    BOOST_PP_SEQ_FOR_EACH_I(SF_STAMP_INDEX_OP, ~, ALIGN_BY_STAMP)};
-constexpr int firstStampEntry(int input) { return detail::entryNaming(kStampIndices, input); }
-#endif
+SF_OPTION_INDICES(SF_AL_OK, kAlignmentIndices, SF_AL_INDEX_OP, INPUT_ALIGNMENT)
+SF_OPTION_INDICES(SF_GATE_OK, kGateIndices, SF_AL_INDEX_OP, INPUT_GATE)
+SF_OPTION_INDICES(SF_STAMP_OK, kStampIndices, SF_STAMP_INDEX_OP, ALIGN_BY_STAMP)
 
 /// What a malformed entry contributes: nothing (its mistake was reported).
 struct EntryBase {
   static constexpr int input_index = -1;
-  static constexpr ::sf_filter::AlignmentPolicy policy{};
+  static constexpr ::sf_filter::AlignmentPolicy value{};
 };
 
-#if SF_AL_OK
-BOOST_PP_SEQ_FOR_EACH_I(SF_AL_ENTRY, ~, INPUT_ALIGNMENT)
-#endif
-#if SF_GATE_OK
-BOOST_PP_SEQ_FOR_EACH_I(SF_GATE_ENTRY, ~, INPUT_GATE)
-#endif
-#if SF_STAMP_OK
-BOOST_PP_SEQ_FOR_EACH_I(SF_STAMP_ENTRY, ~, ALIGN_BY_STAMP)
-#endif
-
-constexpr std::array<::sf_filter::AlignmentPolicy, kMeasurementSize> makeAlignment() {
-  std::array<::sf_filter::AlignmentPolicy, kMeasurementSize> policies{};
-#if SF_AL_OK
-  BOOST_PP_SEQ_FOR_EACH_I(SF_AL_APPLY, policies, INPUT_ALIGNMENT)
-#endif
-  return policies;
-}
-
-constexpr std::array<double, kMeasurementSize> makeGateThresholds() {
-  std::array<double, kMeasurementSize> thresholds{};
-  for (double& t : thresholds) t = std::numeric_limits<double>::infinity();
-#if SF_GATE_OK
-  BOOST_PP_SEQ_FOR_EACH_I(SF_GATE_APPLY, thresholds, INPUT_GATE)
-#endif
-  return thresholds;
-}
-
-constexpr std::array<bool, kMeasurementSize> makeAlignByStamp() {
-  std::array<bool, kMeasurementSize> byStamp{};
-#if SF_STAMP_OK
-  BOOST_PP_SEQ_FOR_EACH_I(SF_STAMP_APPLY, byStamp, ALIGN_BY_STAMP)
-#endif
-  return byStamp;
-}
+SF_OPTION_ENTRIES(SF_AL_OK, SF_AL_ENTRY, ~, INPUT_ALIGNMENT)
+SF_OPTION_ENTRIES(SF_GATE_OK, SF_POSITIVE_ENTRY_OP,
+                  (GateEntry, "INPUT_GATE", kGateIndices, "threshold",
+                   " (the chi-square quantile with 1 degree of freedom, e.g. 3.84 for 95 %, 6.63 "
+                   "for 99 %, 9 for 3 sigma)"),
+                  INPUT_GATE)
+SF_OPTION_ENTRIES(SF_STAMP_OK, SF_STAMP_ENTRY, ~, ALIGN_BY_STAMP)
 
 template <std::size_t... I>
 constexpr std::array<bool, kMeasurementSize> makeInputHasStamp(std::index_sequence<I...>) {
@@ -329,34 +275,21 @@ constexpr std::array<bool, kMeasurementSize> makeInputHasStamp(std::index_sequen
 
 }  // namespace input_alignment_detail
 
-constexpr bool kHasInputAlignment =
-#if defined(INPUT_ALIGNMENT)
-    true;
-#else
-    false;
-#endif
-constexpr bool kHasInputGate =
-#if defined(INPUT_GATE)
-    true;
-#else
-    false;
-#endif
-constexpr bool kHasAlignByStamp =
-#if defined(ALIGN_BY_STAMP)
-    true;
-#else
-    false;
-#endif
+constexpr bool kHasInputAlignment = SF_AL_OK;
+constexpr bool kHasInputGate = SF_GATE_OK;
+constexpr bool kHasAlignByStamp = SF_STAMP_OK;
 
 /// INPUT_ALIGNMENT per input (TOPICS_IN order); AVERAGE for inputs it does not list.
 inline constexpr std::array<::sf_filter::AlignmentPolicy, kMeasurementSize> kInputAlignment =
-    input_alignment_detail::makeAlignment();
+    SF_OPTION_VALUES(::sf_filter::AlignmentPolicy, kMeasurementSize, ::sf_filter::AlignmentPolicy{},
+                     SF_AL_OK, input_alignment_detail::AlignmentEntry, INPUT_ALIGNMENT);
 /// INPUT_GATE per input; infinity for inputs without gate.
 inline constexpr std::array<double, kMeasurementSize> kGateThresholds =
-    input_alignment_detail::makeGateThresholds();
+    SF_OPTION_VALUES(double, kMeasurementSize, std::numeric_limits<double>::infinity(),
+                     SF_GATE_OK, input_alignment_detail::GateEntry, INPUT_GATE);
 /// ALIGN_BY_STAMP per input.
-inline constexpr std::array<bool, kMeasurementSize> kAlignByStamp =
-    input_alignment_detail::makeAlignByStamp();
+inline constexpr std::array<bool, kMeasurementSize> kAlignByStamp = SF_OPTION_VALUES(
+    bool, kMeasurementSize, false, SF_STAMP_OK, input_alignment_detail::StampEntry, ALIGN_BY_STAMP);
 /// Whether each input's message type has header.stamp.
 inline constexpr std::array<bool, kMeasurementSize> kInputHasStamp =
     input_alignment_detail::makeInputHasStamp(std::make_index_sequence<kMeasurementSize>{});

@@ -27,39 +27,21 @@
 // clang-format off
 
 // --- INPUT_TIMEOUT --------------------------------------------------------------------------------
-#define SF_TIMEOUT_FORMAT "((input index)(timeout in ms)), e.g. ((0)(500))"
 #if defined(INPUT_TIMEOUT)
-SF_PP_CHECK_LIST("INPUT_TIMEOUT", 2, 2, SF_TIMEOUT_FORMAT, INPUT_TIMEOUT)
-#define SF_TIMEOUT_OK SF_PP_IS_LIST(2, 2, INPUT_TIMEOUT)
-#else
-#define SF_TIMEOUT_OK 0
+SF_PP_CHECK_LIST("INPUT_TIMEOUT", 2, 2, "((input index)(timeout in ms)), e.g. ((0)(500))", INPUT_TIMEOUT)
 #endif
-
-#define SF_TIMEOUT_ENTRY(r, data, k, entry)                                                        \
-  struct BOOST_PP_CAT(TimeoutEntry, k) {                                                           \
-    SF_AL_INDEX_MEMBERS("INPUT_TIMEOUT", firstTimeoutEntry, k, BOOST_PP_SEQ_ELEM(0, entry))        \
-    static constexpr auto configured_timeout = BOOST_PP_SEQ_ELEM(1, entry);                        \
-    static_assert(std::is_arithmetic<decltype(configured_timeout)>::value &&                       \
-                      configured_timeout > 0 &&                                                    \
-                      configured_timeout < std::numeric_limits<double>::infinity(),                \
-                  SF_AL_PREFIX("INPUT_TIMEOUT", k, entry) ": timeout '"                            \
-                  SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry)) "' must be a positive finite number of "  \
-                  "milliseconds (leave the input out for no timeout)");                            \
-    static constexpr double timeout_ms = static_cast<double>(configured_timeout);                  \
-  };
+#define SF_TIMEOUT_OK SF_PP_IS_LIST(2, 2, INPUT_TIMEOUT)
 
 // --- INPUT_RANGE ----------------------------------------------------------------------------------
-#define SF_RANGE_FORMAT "((input index)(minimum)(maximum)), e.g. ((0)(-5.0)(5.0))"
 #if defined(INPUT_RANGE)
-SF_PP_CHECK_LIST("INPUT_RANGE", 3, 3, SF_RANGE_FORMAT, INPUT_RANGE)
-#define SF_RANGE_OK SF_PP_IS_LIST(3, 3, INPUT_RANGE)
-#else
-#define SF_RANGE_OK 0
+SF_PP_CHECK_LIST("INPUT_RANGE", 3, 3, "((input index)(minimum)(maximum)), e.g. ((0)(-5.0)(5.0))",
+                 INPUT_RANGE)
 #endif
+#define SF_RANGE_OK SF_PP_IS_LIST(3, 3, INPUT_RANGE)
 
 #define SF_RANGE_ENTRY(r, data, k, entry)                                                          \
   struct BOOST_PP_CAT(RangeEntry, k) {                                                             \
-    SF_AL_INDEX_MEMBERS("INPUT_RANGE", firstRangeEntry, k, BOOST_PP_SEQ_ELEM(0, entry))            \
+    SF_AL_INDEX_MEMBERS("INPUT_RANGE", kRangeIndices, k, BOOST_PP_SEQ_ELEM(0, entry))              \
     static constexpr auto configured_minimum = BOOST_PP_SEQ_ELEM(1, entry);                        \
     static constexpr auto configured_maximum = BOOST_PP_SEQ_ELEM(2, entry);                        \
     static_assert(std::is_arithmetic<decltype(configured_minimum)>::value &&                       \
@@ -75,17 +57,8 @@ SF_PP_CHECK_LIST("INPUT_RANGE", 3, 3, SF_RANGE_FORMAT, INPUT_RANGE)
                   SF_AL_PREFIX("INPUT_RANGE", k, entry) ": minimum '"                              \
                   SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry)) "' must be less than maximum '"           \
                   SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry)) "'");                                     \
+    static constexpr InputRange value{minimum, maximum};                                           \
   };
-
-#define SF_TIMEOUT_APPLY(r, ARRAY, k, entry)                                                       \
-  if (BOOST_PP_CAT(TimeoutEntry, k)::input_index >= 0 && BOOST_PP_CAT(TimeoutEntry, k)::input_index < kMeasurementSize) {     \
-    ARRAY[static_cast<std::size_t>(BOOST_PP_CAT(TimeoutEntry, k)::input_index)] = BOOST_PP_CAT(TimeoutEntry, k)::timeout_ms;   \
-  }
-#define SF_RANGE_APPLY(r, ARRAY, k, entry)                                                         \
-  if (BOOST_PP_CAT(RangeEntry, k)::input_index >= 0 && BOOST_PP_CAT(RangeEntry, k)::input_index < kMeasurementSize) {         \
-    ARRAY[static_cast<std::size_t>(BOOST_PP_CAT(RangeEntry, k)::input_index)] =                    \
-        InputRange{BOOST_PP_CAT(RangeEntry, k)::minimum, BOOST_PP_CAT(RangeEntry, k)::maximum};    \
-  }
 
 // clang-format on
 
@@ -97,17 +70,10 @@ struct InputRange {
   double maximum = std::numeric_limits<double>::infinity();
 };
 
-// The index checks of SF_AL_INDEX_MEMBERS look their "first entry of this input" functions up
-// in input_alignment_detail.
+// The index lists SF_AL_INDEX_MEMBERS checks "listed once" against.
 namespace input_alignment_detail {
-#if SF_TIMEOUT_OK
-inline constexpr int kTimeoutIndices[] = {BOOST_PP_SEQ_FOR_EACH_I(SF_AL_INDEX_OP, ~, INPUT_TIMEOUT)};
-constexpr int firstTimeoutEntry(int input) { return detail::entryNaming(kTimeoutIndices, input); }
-#endif
-#if SF_RANGE_OK
-inline constexpr int kRangeIndices[] = {BOOST_PP_SEQ_FOR_EACH_I(SF_AL_INDEX_OP, ~, INPUT_RANGE)};
-constexpr int firstRangeEntry(int input) { return detail::entryNaming(kRangeIndices, input); }
-#endif
+SF_OPTION_INDICES(SF_TIMEOUT_OK, kTimeoutIndices, SF_AL_INDEX_OP, INPUT_TIMEOUT)
+SF_OPTION_INDICES(SF_RANGE_OK, kRangeIndices, SF_AL_INDEX_OP, INPUT_RANGE)
 }  // namespace input_alignment_detail
 
 namespace input_faults_detail {
@@ -123,50 +89,24 @@ constexpr double numberOrZero(const T& value) {
   }
 }
 
-#if SF_TIMEOUT_OK
-BOOST_PP_SEQ_FOR_EACH_I(SF_TIMEOUT_ENTRY, ~, INPUT_TIMEOUT)
-#endif
-#if SF_RANGE_OK
-BOOST_PP_SEQ_FOR_EACH_I(SF_RANGE_ENTRY, ~, INPUT_RANGE)
-#endif
-
-constexpr std::array<double, kMeasurementSize> makeTimeouts() {
-  std::array<double, kMeasurementSize> timeouts{};
-  for (double& t : timeouts) t = std::numeric_limits<double>::infinity();
-#if SF_TIMEOUT_OK
-  BOOST_PP_SEQ_FOR_EACH_I(SF_TIMEOUT_APPLY, timeouts, INPUT_TIMEOUT)
-#endif
-  return timeouts;
-}
-
-constexpr std::array<InputRange, kMeasurementSize> makeRanges() {
-  std::array<InputRange, kMeasurementSize> ranges{};
-#if SF_RANGE_OK
-  BOOST_PP_SEQ_FOR_EACH_I(SF_RANGE_APPLY, ranges, INPUT_RANGE)
-#endif
-  return ranges;
-}
+SF_OPTION_ENTRIES(SF_TIMEOUT_OK, SF_POSITIVE_ENTRY_OP,
+                  (TimeoutEntry, "INPUT_TIMEOUT", kTimeoutIndices, "timeout",
+                   " of milliseconds (leave the input out for no timeout)"),
+                  INPUT_TIMEOUT)
+SF_OPTION_ENTRIES(SF_RANGE_OK, SF_RANGE_ENTRY, ~, INPUT_RANGE)
 
 }  // namespace input_faults_detail
 
-constexpr bool kHasInputTimeout =
-#if defined(INPUT_TIMEOUT)
-    true;
-#else
-    false;
-#endif
-constexpr bool kHasInputRange =
-#if defined(INPUT_RANGE)
-    true;
-#else
-    false;
-#endif
+constexpr bool kHasInputTimeout = SF_TIMEOUT_OK;
+constexpr bool kHasInputRange = SF_RANGE_OK;
 
 /// INPUT_TIMEOUT per input [ms]; infinity for inputs without a timeout.
 inline constexpr std::array<double, kMeasurementSize> kInputTimeoutsMs =
-    input_faults_detail::makeTimeouts();
+    SF_OPTION_VALUES(double, kMeasurementSize, std::numeric_limits<double>::infinity(),
+                     SF_TIMEOUT_OK, input_faults_detail::TimeoutEntry, INPUT_TIMEOUT);
 /// INPUT_RANGE per input; (-inf, inf) for inputs without a range.
-inline constexpr std::array<InputRange, kMeasurementSize> kInputRanges =
-    input_faults_detail::makeRanges();
+inline constexpr std::array<InputRange, kMeasurementSize> kInputRanges = SF_OPTION_VALUES(
+    InputRange, kMeasurementSize, InputRange{}, SF_RANGE_OK, input_faults_detail::RangeEntry,
+    INPUT_RANGE);
 
 }  // namespace sf_config

@@ -3,10 +3,36 @@
 // FRAME_ALIGNED_INPUTS, INPUT_COVARIANCE list entries that each name an index; an index is
 // configured by the first entry naming it (a later one is reported as listed twice), and its
 // descriptor is that entry's, or the option's "not listed" type.
+//
+// The shape they all share is written once here: an option macro's entries become entry
+// structs (each with its checked `input_index` and its `value`), listed by SF_OPTION_ENTRIES,
+// and SF_OPTION_VALUES turns them into one value per index.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <tuple>
+
+#include <boost/preprocessor/cat.hpp>
+#include <boost/preprocessor/control/if.hpp>
+#include <boost/preprocessor/punctuation/comma_if.hpp>
+#include <boost/preprocessor/seq/for_each_i.hpp>
+
+// clang-format off
+// The entry structs of an option, `ENTRY(r, DATA, k, entry)` for each entry of SEQ when OK (the
+// macro is well formed), nothing otherwise (its mistake was reported by its form check).
+#define SF_OPTION_ENTRIES(OK, ENTRY, DATA, SEQ) BOOST_PP_IF(OK, BOOST_PP_SEQ_FOR_EACH_I, SF_OPTION_NONE)(ENTRY, DATA, SEQ)
+// `inline constexpr int NAME[]`, the index each entry names (INDEX_OF(r, data, k, entry)), when OK.
+#define SF_OPTION_INDICES(OK, NAME, INDEX_OF, SEQ) BOOST_PP_IF(OK, SF_OPTION_INDICES_I, SF_OPTION_NONE)(NAME, INDEX_OF, SEQ)
+#define SF_OPTION_INDICES_I(NAME, INDEX_OF, SEQ) inline constexpr int NAME[] = {BOOST_PP_SEQ_FOR_EACH_I(INDEX_OF, ~, SEQ)};
+// The per-index array of an option of SIZE indices: UNLISTED where no entry (struct PREFIX<k>)
+// names the index, the entry's `value` where one does.
+#define SF_OPTION_VALUES(T, SIZE, UNLISTED, OK, PREFIX, SEQ)                                       \
+  ::sf_config::detail::valuesByIndex<T, SIZE BOOST_PP_IF(OK, SF_OPTION_TYPES, SF_OPTION_NONE)(PREFIX, SEQ)>(UNLISTED)
+#define SF_OPTION_TYPES(PREFIX, SEQ) BOOST_PP_SEQ_FOR_EACH_I(SF_OPTION_TYPE, PREFIX, SEQ)
+#define SF_OPTION_TYPE(r, PREFIX, k, entry) , BOOST_PP_CAT(PREFIX, k)
+#define SF_OPTION_NONE(...)
+// clang-format on
 
 namespace sf_config {
 namespace detail {
@@ -31,6 +57,19 @@ template <class Entries, class Unlisted>
 struct DescriptorAt<Entries, -1, Unlisted> {
   using type = Unlisted;
 };
+
+/// One value per index: `unlisted`, then each entry's `value` at its `input_index` (an entry
+/// whose index was refused, out of range, contributes nothing: its error is already reported).
+template <class T, int Size, class... Entries>
+constexpr std::array<T, static_cast<std::size_t>(Size)> valuesByIndex(const T& unlisted) {
+  std::array<T, static_cast<std::size_t>(Size)> values{};
+  for (T& v : values) v = unlisted;
+  ((Entries::input_index >= 0 && Entries::input_index < Size
+        ? void(values[static_cast<std::size_t>(Entries::input_index)] = Entries::value)
+        : void()),
+   ...);
+  return values;
+}
 
 }  // namespace detail
 }  // namespace sf_config
