@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
@@ -35,33 +36,25 @@ enum class Rejection {
 };
 
 inline const char* toString(Rejection r) {
-  switch (r) {
-    case Rejection::None:
-      return "accepted";
-    case Rejection::NonFinite:
-      return "value is not finite";
-    case Rejection::BadVariance:
-      return "variance is not finite, positive and at most 1e100";
-    case Rejection::OutOfRange:
-      return "value outside the input's plausible range";
-    case Rejection::OutOfOrder:
-      return "timestamp runs backwards";
-    case Rejection::DuplicateStamp:
-      return "timestamp equal to the previous value's (duplicate)";
-    case Rejection::FutureStamp:
-      return "timestamp too far ahead of the clock";
-    case Rejection::TooLate:
-      return "stamped in a period already estimated (later than the maximum measurement lag)";
-    case Rejection::UnknownInput:
-      return "unknown input index";
-    case Rejection::NonFiniteCovariance:
-      return "covariance block has a non-finite entry";
-    case Rejection::AsymmetricCovariance:
-      return "covariance block is not symmetric (relative asymmetry above 1e-9)";
-    case Rejection::IndefiniteCovariance:
-      return "covariance block is not positive definite";
-  }
-  return "?";
+  static constexpr const char* kReasons[] = {
+      "accepted",                                             // None
+      "value is not finite",                                  // NonFinite
+      "variance is not finite, positive and at most 1e100",   // BadVariance
+      "value outside the input's plausible range",            // OutOfRange
+      "timestamp runs backwards",                             // OutOfOrder
+      "timestamp equal to the previous value's (duplicate)",  // DuplicateStamp
+      "timestamp too far ahead of the clock",                 // FutureStamp
+      "stamped in a period already estimated (later than the maximum measurement lag)",  // TooLate
+      "unknown input index",                                                // UnknownInput
+      "covariance block has a non-finite entry",                            // NonFiniteCovariance
+      "covariance block is not symmetric (relative asymmetry above 1e-9)",  // AsymmetricCovariance
+      "covariance block is not positive definite",                          // IndefiniteCovariance
+  };
+  static_assert(
+      std::size(kReasons) == static_cast<std::size_t>(Rejection::IndefiniteCovariance) + 1,
+      "one name per value");
+  const auto i = static_cast<std::size_t>(r);
+  return i < std::size(kReasons) ? kReasons[i] : "?";
 }
 
 struct InputCounters {

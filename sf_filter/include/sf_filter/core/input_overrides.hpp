@@ -65,6 +65,18 @@ inline void checkIndex(const std::vector<InputOptions>& inputs, long input) {
                                 std::to_string(static_cast<long>(inputs.size()) - 1));
   }
 }
+
+/// `value` for a setting that is a finite number > 0 or 0 for "off" (returned as infinity);
+/// anything else is refused with `rule` (what the setting must be) naming the input.
+inline double positiveOrOff(const std::vector<InputOptions>& inputs, long input, double value,
+                            const InputCapabilities& can, const char* rule) {
+  checkIndex(inputs, input);
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) + ": " + rule +
+                                ", got " + std::to_string(value));
+  }
+  return value > 0.0 ? value : std::numeric_limits<double>::infinity();
+}
 }  // namespace override_detail
 
 /// Sets input `input`'s policy from its text form (alignment_policy.hpp).
@@ -83,20 +95,15 @@ inline void overrideAlignment(std::vector<InputOptions>& inputs, long input,
 /// Sets input `input`'s gate: a chi-square threshold > 0, or 0 for no gate.
 inline void overrideGate(std::vector<InputOptions>& inputs, long input, double threshold,
                          const InputCapabilities& can) {
-  override_detail::checkIndex(inputs, input);
-  if (!(threshold >= 0.0) || !std::isfinite(threshold)) {
-    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
-                                ": gate threshold must be a finite number > 0, or 0 for no "
-                                "gate, got " +
-                                std::to_string(threshold));
-  }
-  if (threshold > 0.0 && !can.canPredict) {
+  const double gate = override_detail::positiveOrOff(
+      inputs, input, threshold, can,
+      "gate threshold must be a finite number > 0, or 0 for no gate");
+  if (std::isfinite(gate) && !can.canPredict) {
     throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
                                 ": a gate needs the predicted measurement of the filter, which "
                                 "this method does not give (0: no gate)");
   }
-  inputs[static_cast<std::size_t>(input)].gateThreshold =
-      threshold > 0.0 ? threshold : std::numeric_limits<double>::infinity();
+  inputs[static_cast<std::size_t>(input)].gateThreshold = gate;
 }
 
 /// Aligns input `input` by header stamp (true) or arrival time (false).
@@ -114,15 +121,10 @@ inline void overrideAlignByStamp(std::vector<InputOptions>& inputs, long input, 
 /// Sets input `input`'s sensor timeout: a finite number of ms > 0, or 0 for no timeout.
 inline void overrideTimeout(std::vector<InputOptions>& inputs, long input, double timeoutMs,
                             const InputCapabilities& can) {
-  override_detail::checkIndex(inputs, input);
-  if (!(timeoutMs >= 0.0) || !std::isfinite(timeoutMs)) {
-    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
-                                ": timeout must be a finite number of ms > 0, or 0 for no "
-                                "timeout, got " +
-                                std::to_string(timeoutMs));
-  }
-  inputs[static_cast<std::size_t>(input)].timeout =
-      timeoutMs > 0.0 ? timeoutMs / 1000.0 : std::numeric_limits<double>::infinity();
+  const double timeout = override_detail::positiveOrOff(
+      inputs, input, timeoutMs, can,
+      "timeout must be a finite number of ms > 0, or 0 for no timeout");
+  inputs[static_cast<std::size_t>(input)].timeout = timeout / 1000.0;  // infinity stays off
 }
 
 /// Sets input `input`'s plausible range [minimum, maximum] (infinite bounds allowed; both

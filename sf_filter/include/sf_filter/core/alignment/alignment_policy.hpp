@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -31,19 +32,11 @@ namespace sf_filter {
 enum class AlignmentKind { Average, Last, Sampled, Hold, Fill };
 
 inline const char* toString(AlignmentKind k) {
-  switch (k) {
-    case AlignmentKind::Average:
-      return "AVERAGE";
-    case AlignmentKind::Last:
-      return "LAST";
-    case AlignmentKind::Sampled:
-      return "SAMPLED";
-    case AlignmentKind::Hold:
-      return "HOLD";
-    case AlignmentKind::Fill:
-      return "FILL";
-  }
-  return "?";
+  static constexpr const char* kNames[] = {"AVERAGE", "LAST", "SAMPLED", "HOLD", "FILL"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(AlignmentKind::Fill) + 1,
+                "one name per value");
+  const auto i = static_cast<std::size_t>(k);
+  return i < std::size(kNames) ? kNames[i] : "?";
 }
 
 struct AlignmentPolicy {
@@ -59,19 +52,12 @@ struct AlignmentPolicy {
   static constexpr AlignmentPolicy sampled() { return of(AlignmentKind::Sampled); }
   static constexpr AlignmentPolicy hold(HoldPrimitive primitive, int order,
                                         std::optional<double> variance = std::nullopt) {
-    AlignmentPolicy p = of(AlignmentKind::Hold);
-    p.primitive = primitive;
-    p.order = order;
-    p.variance = variance;
-    return p;
+    return AlignmentPolicy{AlignmentKind::Hold, primitive, order, 0.0, 0, variance};
   }
   static constexpr AlignmentPolicy fill(double omega, int samples,
                                         std::optional<double> variance = std::nullopt) {
-    AlignmentPolicy p = of(AlignmentKind::Fill);
-    p.omega = omega;
-    p.samples = samples;
-    p.variance = variance;
-    return p;
+    return AlignmentPolicy{
+        AlignmentKind::Fill, HoldPrimitive::Lagrange, 0, omega, samples, variance};
   }
 
   /// HOLD and FILL put a substitute in place of a missing value.

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <array>
+#include <iterator>
 #include <string_view>
 
 #include "sf_filter/core/alignment/sample_history.hpp"
@@ -30,15 +31,11 @@ namespace sf_filter {
 enum class HoldPrimitive { Lagrange, Bezier, Taylor };
 
 inline const char* toString(HoldPrimitive p) {
-  switch (p) {
-    case HoldPrimitive::Lagrange:
-      return "LAGRANGE";
-    case HoldPrimitive::Bezier:
-      return "BEZIER";
-    case HoldPrimitive::Taylor:
-      return "TAYLOR";
-  }
-  return "?";
+  static constexpr const char* kNames[] = {"LAGRANGE", "BEZIER", "TAYLOR"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(HoldPrimitive::Taylor) + 1,
+                "one name per value");
+  const auto i = static_cast<std::size_t>(p);
+  return i < std::size(kNames) ? kNames[i] : "?";
 }
 
 /// The highest hold order the history can hold (kCapacity samples).
