@@ -60,16 +60,12 @@
 
 #if defined(FRAME_ALIGNED_INPUTS)
 SF_PP_CHECK_LIST("FRAME_ALIGNED_INPUTS", 3, 3, SF_FA_FORMAT, FRAME_ALIGNED_INPUTS)
-#define SF_FA_OK SF_PP_IS_LIST(3, 3, FRAME_ALIGNED_INPUTS)
-#else
-#define SF_FA_OK 0
 #endif
+#define SF_FA_OK SF_PP_IS_LIST(3, 3, FRAME_ALIGNED_INPUTS)
 
 // Message prefix naming an entry, e.g. "FRAME_ALIGNED_INPUTS entry 0 ((0)(angular_velocity)(w))".
 #define SF_FA_PREFIX(k, entry) "FRAME_ALIGNED_INPUTS entry " SF_PP_STR(k) " (" SF_PP_STR(entry) ")"
 #define SF_FA_INDEX(entry) static_cast<int>(BOOST_PP_SEQ_ELEM(0, entry))
-#define SF_FA_INDEX_OP(r, data, k, entry) BOOST_PP_COMMA_IF(k) SF_FA_INDEX(entry)
-#define SF_FA_NAME_OP(r, data, k, entry) BOOST_PP_COMMA_IF(k) BOOST_PP_CAT(FrameAligned, k)
 
 // One descriptor per entry: FrameAligned<k>, with a detector of message.<member>.{x, y, z}.
 #define SF_FA_ENTRY(r, data, k, entry)                                                          \
@@ -178,20 +174,11 @@ struct HasStampedHeader<MessageT,
     : std::is_convertible<decltype(std::declval<const MessageT&>().header.frame_id),
                           std::string_view> {};
 
-#if SF_FA_OK
 /// Input index of each FRAME_ALIGNED_INPUTS entry, in order.
-inline constexpr int kAlignedIndices[] = {
-    BOOST_PP_SEQ_FOR_EACH_I(SF_FA_INDEX_OP, ~, FRAME_ALIGNED_INPUTS)};
-#endif
+SF_OPTION_INDICES(SF_FA_OK, kAlignedIndices, SF_FA_INDEX, FRAME_ALIGNED_INPUTS)
 
 /// The first FRAME_ALIGNED_INPUTS entry that lists `input`, -1 if none does.
-constexpr int firstEntryOf([[maybe_unused]] int input) {
-#if SF_FA_OK
-  return detail::entryNaming(kAlignedIndices, input);
-#else
-  return -1;
-#endif
-}
+constexpr int firstEntryOf(int input) { return detail::entryNaming(kAlignedIndices, input); }
 
 }  // namespace alignment_detail
 
@@ -204,19 +191,11 @@ static_assert(alignment_detail::isValidFrameName(kBaseFrame),
 inline constexpr std::string_view kBaseFrame = "";
 #endif
 
-#if defined(FRAME_ALIGNED_INPUTS)
-constexpr bool kHasFrameAlignment = true;
-#else
-constexpr bool kHasFrameAlignment = false;
-#endif
+constexpr bool kHasFrameAlignment = SF_FA_OK;
 
-#if SF_FA_OK
-BOOST_PP_SEQ_FOR_EACH_I(SF_FA_ENTRY, ~, FRAME_ALIGNED_INPUTS)
+SF_OPTION_ENTRIES(SF_FA_OK, SF_FA_ENTRY, ~, FRAME_ALIGNED_INPUTS)
 /// The descriptors FrameAligned0 .. in FRAME_ALIGNED_INPUTS order.
-using FrameAlignedInputs = std::tuple<BOOST_PP_SEQ_FOR_EACH_I(SF_FA_NAME_OP, ~, FRAME_ALIGNED_INPUTS)>;
-#else
-using FrameAlignedInputs = std::tuple<>;
-#endif
+using FrameAlignedInputs = SF_OPTION_TUPLE(SF_FA_OK, FrameAligned, FRAME_ALIGNED_INPUTS);
 
 /// How input I is read: NotFrameAligned, or its FRAME_ALIGNED_INPUTS descriptor.
 template <int I>

@@ -35,15 +35,11 @@
 
 #if defined(INPUT_COVARIANCE)
 SF_PP_CHECK_LIST("INPUT_COVARIANCE", 3, 3, SF_IC_FORMAT, INPUT_COVARIANCE)
-#define SF_IC_OK SF_PP_IS_LIST(3, 3, INPUT_COVARIANCE)
-#else
-#define SF_IC_OK 0
 #endif
+#define SF_IC_OK SF_PP_IS_LIST(3, 3, INPUT_COVARIANCE)
 
 #define SF_IC_PREFIX(k, entry) "INPUT_COVARIANCE entry " SF_PP_STR(k) " (" SF_PP_STR(entry) ")"
 #define SF_IC_INDEX(entry) static_cast<int>(BOOST_PP_SEQ_ELEM(0, entry))
-#define SF_IC_INDEX_OP(r, data, k, entry) BOOST_PP_COMMA_IF(k) SF_IC_INDEX(entry)
-#define SF_IC_NAME_OP(r, data, k, entry) BOOST_PP_COMMA_IF(k) BOOST_PP_CAT(CovarianceEntry, k)
 
 #define SF_IC_ENTRY(r, data, k, entry)                                                             \
   namespace covariance_detail {                                                                    \
@@ -132,19 +128,10 @@ constexpr long staticSize() {
   return StaticSize<T>::value;
 }
 
-#if SF_IC_OK
-inline constexpr int kCovarianceIndices[] = {
-    BOOST_PP_SEQ_FOR_EACH_I(SF_IC_INDEX_OP, ~, INPUT_COVARIANCE)};
-#endif
+SF_OPTION_INDICES(SF_IC_OK, kCovarianceIndices, SF_IC_INDEX, INPUT_COVARIANCE)
 
 /// The first INPUT_COVARIANCE entry of `input`, -1 if none.
-constexpr int firstEntryOf([[maybe_unused]] int input) {
-#if SF_IC_OK
-  return detail::entryNaming(kCovarianceIndices, input);
-#else
-  return -1;
-#endif
-}
+constexpr int firstEntryOf(int input) { return detail::entryNaming(kCovarianceIndices, input); }
 
 template <std::size_t... I>
 constexpr bool hasVarianceFieldOf(int input, std::index_sequence<I...>) {
@@ -162,12 +149,8 @@ struct NoCovarianceSource {
   static constexpr bool valid = false;
 };
 
-#if SF_IC_OK
-BOOST_PP_SEQ_FOR_EACH_I(SF_IC_ENTRY, ~, INPUT_COVARIANCE)
-using CovarianceEntries = std::tuple<BOOST_PP_SEQ_FOR_EACH_I(SF_IC_NAME_OP, ~, INPUT_COVARIANCE)>;
-#else
-using CovarianceEntries = std::tuple<>;
-#endif
+SF_OPTION_ENTRIES(SF_IC_OK, SF_IC_ENTRY, ~, INPUT_COVARIANCE)
+using CovarianceEntries = SF_OPTION_TUPLE(SF_IC_OK, CovarianceEntry, INPUT_COVARIANCE);
 
 /// The INPUT_COVARIANCE source of TOPICS_IN entry I, or NoCovarianceSource.
 template <int I>

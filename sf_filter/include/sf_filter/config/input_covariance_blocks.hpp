@@ -42,14 +42,11 @@
 
 #if defined(INPUT_COVARIANCE_BLOCK)
 SF_PP_CHECK_LIST("INPUT_COVARIANCE_BLOCK", 3, 3, SF_ICB_FORMAT, INPUT_COVARIANCE_BLOCK)
-#define SF_ICB_OK SF_PP_IS_LIST(3, 3, INPUT_COVARIANCE_BLOCK)
-#else
-#define SF_ICB_OK 0
 #endif
+#define SF_ICB_OK SF_PP_IS_LIST(3, 3, INPUT_COVARIANCE_BLOCK)
 
 #define SF_ICB_PREFIX(k, entry) \
   "INPUT_COVARIANCE_BLOCK entry " SF_PP_STR(k) " (" SF_PP_STR(entry) ")"
-#define SF_ICB_NAME_OP(r, data, k, entry) BOOST_PP_COMMA_IF(k) BOOST_PP_CAT(CovarianceBlock, k)
 /// The inputs and rows of an entry, as a brace list; a malformed one gives {-1} (reported).
 #define SF_ICB_SEQ(seq) BOOST_PP_IIF(SF_PP_IS_VECTOR(seq), SF_ICB_SEQ_I, SF_ICB_SEQ_BAD)(seq)
 #define SF_ICB_SEQ_I(seq) {BOOST_PP_SEQ_ENUM(seq)}
@@ -211,15 +208,12 @@ constexpr bool inputsOk(const int (&inputs)[K], int /*block*/) {
 
 #if SF_ICB_OK
 BOOST_PP_SEQ_FOR_EACH_I(SF_ICB_ENTRY, ~, INPUT_COVARIANCE_BLOCK)
-using CovarianceBlocks =
-    std::tuple<BOOST_PP_SEQ_FOR_EACH_I(SF_ICB_NAME_OP, ~, INPUT_COVARIANCE_BLOCK)>;
 namespace covariance_block_detail {
 inline constexpr Span kBlocks[] = {
     BOOST_PP_SEQ_FOR_EACH_I(SF_ICB_INPUTS_OP, ~, INPUT_COVARIANCE_BLOCK)};
 }  // namespace covariance_block_detail
-#else
-using CovarianceBlocks = std::tuple<>;
 #endif
+using CovarianceBlocks = SF_OPTION_TUPLE(SF_ICB_OK, CovarianceBlock, INPUT_COVARIANCE_BLOCK);
 
 /// The INPUT_COVARIANCE_BLOCK entry input `input` belongs to, -1 if none.
 constexpr int blockOf([[maybe_unused]] int input) {

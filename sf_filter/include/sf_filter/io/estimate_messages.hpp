@@ -16,12 +16,19 @@
 
 namespace sf_filter {
 
+/// A message of type Message stamped with the estimate's time, in `frame`.
+template <class Message, class Estimate>
+Message stampedAt(const Estimate& e, const std::string& frame) {
+  Message msg;
+  msg.header.stamp = ros::Time(e.time);
+  msg.header.frame_id = frame;
+  return msg;
+}
+
 template <class Estimate>
 sf_msgs::OutputEntityStamped makeOutputEntity(const Estimate& e, int index,
                                               const std::string& frame) {
-  sf_msgs::OutputEntityStamped msg;
-  msg.header.stamp = ros::Time(e.time);
-  msg.header.frame_id = frame;
+  auto msg = stampedAt<sf_msgs::OutputEntityStamped>(e, frame);
   msg.value = e.state(index);
   msg.variance = e.covariance(index, index);
   return msg;
@@ -31,9 +38,7 @@ template <class Estimate>
 sf_msgs::StateEstimateStamped makeStateEstimate(const Estimate& e, const std::string& method,
                                                 const std::string& frame) {
   const Eigen::Index n = e.state.size();
-  sf_msgs::StateEstimateStamped msg;
-  msg.header.stamp = ros::Time(e.time);
-  msg.header.frame_id = frame;
+  auto msg = stampedAt<sf_msgs::StateEstimateStamped>(e, frame);
   msg.method = method;
   msg.state.assign(e.state.data(), e.state.data() + n);
   msg.covariance.resize(static_cast<std::size_t>(n * n));
@@ -61,9 +66,7 @@ nav_msgs::Odometry makeOdometry(const Estimate& e, const std::array<int, 3>& pos
   const auto [ix, iy, ith] = pose;
   tf2::Quaternion q;
   q.setRPY(0.0, 0.0, e.state(ith));
-  nav_msgs::Odometry odom;
-  odom.header.stamp = ros::Time(e.time);
-  odom.header.frame_id = frame;
+  auto odom = stampedAt<nav_msgs::Odometry>(e, frame);
   odom.child_frame_id = childFrame;
   odom.pose.pose.position.x = e.state(ix);
   odom.pose.pose.position.y = e.state(iy);
@@ -103,9 +106,7 @@ nav_msgs::Odometry makeOdometry(const Estimate& e, const std::array<int, 3>& pos
 template <class Estimate>
 geometry_msgs::AccelWithCovarianceStamped makeAccel(const Estimate& e, int a,
                                                     const std::string& childFrame) {
-  geometry_msgs::AccelWithCovarianceStamped msg;
-  msg.header.stamp = ros::Time(e.time);
-  msg.header.frame_id = childFrame;
+  auto msg = stampedAt<geometry_msgs::AccelWithCovarianceStamped>(e, childFrame);
   msg.accel.accel.linear.x = e.state(a);
   for (int k = 0; k < 6; ++k)
     msg.accel.covariance[static_cast<std::size_t>(k * 7)] = kUnknownVariance;

@@ -243,16 +243,16 @@ static_assert(false, "ALIGN_BY_STAMP: expected a sequence of input indices, each
     static constexpr bool value = true;                                                            \
   };
 
-#define SF_AL_INDEX_OP(r, data, k, entry) BOOST_PP_COMMA_IF(k) static_cast<int>(BOOST_PP_SEQ_ELEM(0, entry))
-#define SF_STAMP_INDEX_OP(r, data, k, index) BOOST_PP_COMMA_IF(k) static_cast<int>(index)
+#define SF_AL_INDEX(entry) static_cast<int>(BOOST_PP_SEQ_ELEM(0, entry))
+#define SF_STAMP_INDEX(index) static_cast<int>(index)
 // clang-format on
 
 namespace sf_config {
 namespace input_alignment_detail {
 
-SF_OPTION_INDICES(SF_AL_OK, kAlignmentIndices, SF_AL_INDEX_OP, INPUT_ALIGNMENT)
-SF_OPTION_INDICES(SF_GATE_OK, kGateIndices, SF_AL_INDEX_OP, INPUT_GATE)
-SF_OPTION_INDICES(SF_STAMP_OK, kStampIndices, SF_STAMP_INDEX_OP, ALIGN_BY_STAMP)
+SF_OPTION_INDICES(SF_AL_OK, kAlignmentIndices, SF_AL_INDEX, INPUT_ALIGNMENT)
+SF_OPTION_INDICES(SF_GATE_OK, kGateIndices, SF_AL_INDEX, INPUT_GATE)
+SF_OPTION_INDICES(SF_STAMP_OK, kStampIndices, SF_STAMP_INDEX, ALIGN_BY_STAMP)
 
 /// What a malformed entry contributes: nothing (its mistake was reported).
 struct EntryBase {

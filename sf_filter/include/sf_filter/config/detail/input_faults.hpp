@@ -72,8 +72,8 @@ struct InputRange {
 
 // The index lists SF_AL_INDEX_MEMBERS checks "listed once" against.
 namespace input_alignment_detail {
-SF_OPTION_INDICES(SF_TIMEOUT_OK, kTimeoutIndices, SF_AL_INDEX_OP, INPUT_TIMEOUT)
-SF_OPTION_INDICES(SF_RANGE_OK, kRangeIndices, SF_AL_INDEX_OP, INPUT_RANGE)
+SF_OPTION_INDICES(SF_TIMEOUT_OK, kTimeoutIndices, SF_AL_INDEX, INPUT_TIMEOUT)
+SF_OPTION_INDICES(SF_RANGE_OK, kRangeIndices, SF_AL_INDEX, INPUT_RANGE)
 }  // namespace input_alignment_detail
 
 namespace input_faults_detail {

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <tuple>
 
 #include <boost/preprocessor/cat.hpp>
@@ -22,9 +23,16 @@
 // The entry structs of an option, `ENTRY(r, DATA, k, entry)` for each entry of SEQ when OK (the
 // macro is well formed), nothing otherwise (its mistake was reported by its form check).
 #define SF_OPTION_ENTRIES(OK, ENTRY, DATA, SEQ) BOOST_PP_IF(OK, BOOST_PP_SEQ_FOR_EACH_I, SF_OPTION_NONE)(ENTRY, DATA, SEQ)
-// `inline constexpr int NAME[]`, the index each entry names (INDEX_OF(r, data, k, entry)), when OK.
-#define SF_OPTION_INDICES(OK, NAME, INDEX_OF, SEQ) BOOST_PP_IF(OK, SF_OPTION_INDICES_I, SF_OPTION_NONE)(NAME, INDEX_OF, SEQ)
-#define SF_OPTION_INDICES_I(NAME, INDEX_OF, SEQ) inline constexpr int NAME[] = {BOOST_PP_SEQ_FOR_EACH_I(INDEX_OF, ~, SEQ)};
+// `inline constexpr int NAME[]`: the index each entry names (INDEX_OF(entry)) when OK, then
+// kNoIndex (so that the array is never empty); detail::entryNaming looks an index up in it.
+#define SF_OPTION_INDICES(OK, NAME, INDEX_OF, SEQ)                                                 \
+  inline constexpr int NAME[] = {BOOST_PP_IF(OK, SF_OPTION_INDEX_LIST, SF_OPTION_NONE)(INDEX_OF, SEQ) ::sf_config::detail::kNoIndex};
+#define SF_OPTION_INDEX_LIST(INDEX_OF, SEQ) BOOST_PP_SEQ_FOR_EACH_I(SF_OPTION_INDEX_ITEM, INDEX_OF, SEQ)
+#define SF_OPTION_INDEX_ITEM(r, INDEX_OF, k, entry) INDEX_OF(entry),
+// std::tuple<PREFIX0, PREFIX1, ...> of an option's entry descriptors; std::tuple<> unless OK.
+#define SF_OPTION_TUPLE(OK, PREFIX, SEQ) std::tuple<BOOST_PP_IF(OK, SF_OPTION_NAME_LIST, SF_OPTION_NONE)(PREFIX, SEQ)>
+#define SF_OPTION_NAME_LIST(PREFIX, SEQ) BOOST_PP_SEQ_FOR_EACH_I(SF_OPTION_NAME_ITEM, PREFIX, SEQ)
+#define SF_OPTION_NAME_ITEM(r, PREFIX, k, entry) BOOST_PP_COMMA_IF(k) BOOST_PP_CAT(PREFIX, k)
 // The per-index array of an option of SIZE indices: UNLISTED where no entry (struct PREFIX<k>)
 // names the index, the entry's `value` where one does.
 #define SF_OPTION_VALUES(T, SIZE, UNLISTED, OK, PREFIX, SEQ)                                       \
@@ -36,6 +44,9 @@
 
 namespace sf_config {
 namespace detail {
+
+/// The end of every option's index list (no input has this index).
+inline constexpr int kNoIndex = std::numeric_limits<int>::min();
 
 /// Position of the first of `listed` (the index each entry names, in order) equal to `index`,
 /// -1 if no entry names it.
