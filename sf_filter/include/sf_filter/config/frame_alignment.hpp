@@ -200,8 +200,7 @@ using FrameAlignedInputs = SF_OPTION_TUPLE(SF_FA_OK, FrameAligned, FRAME_ALIGNED
 /// How input I is read: NotFrameAligned, or its FRAME_ALIGNED_INPUTS descriptor.
 template <int I>
 using FrameAlignment =
-    typename detail::DescriptorAt<FrameAlignedInputs, alignment_detail::firstEntryOf(I),
-                                  NotFrameAligned>::type;
+    detail::DescriptorOf<FrameAlignedInputs, alignment_detail::firstEntryOf(I), NotFrameAligned>;
 
 }  // namespace sf_config
 

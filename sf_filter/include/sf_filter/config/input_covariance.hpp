@@ -155,7 +155,6 @@ using CovarianceEntries = SF_OPTION_TUPLE(SF_IC_OK, CovarianceEntry, INPUT_COVAR
 /// The INPUT_COVARIANCE source of TOPICS_IN entry I, or NoCovarianceSource.
 template <int I>
 using CovarianceSource =
-    typename detail::DescriptorAt<CovarianceEntries, covariance_detail::firstEntryOf(I),
-                                  NoCovarianceSource>::type;
+    detail::DescriptorOf<CovarianceEntries, covariance_detail::firstEntryOf(I), NoCovarianceSource>;
 
 }  // namespace sf_config

@@ -77,6 +77,17 @@ inline double positiveOrOff(const std::vector<InputOptions>& inputs, long input,
   }
   return value > 0.0 ? value : std::numeric_limits<double>::infinity();
 }
+
+/// Refuses `what` (a FILL policy, a gate) for a method without a predicted measurement.
+inline void requirePrediction(const InputCapabilities& can, long input, const std::string& what,
+                              const char* hint = "") {
+  if (!can.canPredict) {
+    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) + ": " + what +
+                                " needs the predicted measurement of the filter, which this "
+                                "method does not give" +
+                                hint);
+  }
+}
 }  // namespace override_detail
 
 /// Sets input `input`'s policy from its text form (alignment_policy.hpp).
@@ -84,11 +95,7 @@ inline void overrideAlignment(std::vector<InputOptions>& inputs, long input,
                               const std::string& text, const InputCapabilities& can) {
   override_detail::checkIndex(inputs, input);
   const AlignmentPolicy policy = parseAlignmentPolicy(text);
-  if (policy.needsPrediction() && !can.canPredict) {
-    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
-                                ": FILL needs the predicted measurement of the filter, which "
-                                "this method does not give");
-  }
+  if (policy.needsPrediction()) override_detail::requirePrediction(can, input, "FILL");
   inputs[static_cast<std::size_t>(input)].alignment = policy;
 }
 
@@ -98,11 +105,8 @@ inline void overrideGate(std::vector<InputOptions>& inputs, long input, double t
   const double gate = override_detail::positiveOrOff(
       inputs, input, threshold, can,
       "gate threshold must be a finite number > 0, or 0 for no gate");
-  if (std::isfinite(gate) && !can.canPredict) {
-    throw std::invalid_argument(can.describe(static_cast<std::size_t>(input)) +
-                                ": a gate needs the predicted measurement of the filter, which "
-                                "this method does not give (0: no gate)");
-  }
+  if (std::isfinite(gate))
+    override_detail::requirePrediction(can, input, "a gate", " (0: no gate)");
   inputs[static_cast<std::size_t>(input)].gateThreshold = gate;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <Eigen/Core>
+#include <boost/preprocessor/control/if.hpp>
 
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
@@ -147,6 +148,14 @@ struct Model {
 #endif  // SF_CFG_IS_MODEL_BASED
 
 // ------------------------------------------------------------------------ KF: LinearModel
+// The body of a LinearModel matrix getter: a ROWS x COLS matrix of zeros, with the entries of
+// the header's matrix M when GIVEN (its entries may use T and the math functions).
+#define SF_CFG_LINEAR_MATRIX(ROWS, COLS, GIVEN, M)                                                 \
+  SF_CFG_MATH_USINGS                                                                               \
+  Eigen::Matrix<double, ROWS, COLS> matrix = Eigen::Matrix<double, ROWS, COLS>::Zero();            \
+  BOOST_PP_IF(GIVEN, SF_PP_ASSIGN_MATRIX, SF_PP_NOTHING)(matrix, M)                                \
+  return matrix;
+
 #if SF_CFG_IS_LINEAR
 
 /// The linear model x(k) = A x(k-1) + B u(k), z(k) = H x(k) of STATE_TRANSITION_MATRIX,
@@ -167,33 +176,19 @@ struct LinearModel {
 
   /// A (n x n) of STATE_TRANSITION_MATRIX.
   Eigen::Matrix<double, StateSize, StateSize> transitionMatrix() const {
-    SF_CFG_MATH_USINGS
-    Eigen::Matrix<double, StateSize, StateSize> matrix =
-        Eigen::Matrix<double, StateSize, StateSize>::Zero();
-    SF_PP_ASSIGN_MATRIX(matrix, STATE_TRANSITION_MATRIX)
-    return matrix;
+    SF_CFG_LINEAR_MATRIX(StateSize, StateSize, 1, STATE_TRANSITION_MATRIX)
   }
 
   /// B (n x l) of CONTROL_INPUT_MATRIX (n x 0 without controls).
   Eigen::Matrix<double, StateSize, ControlSize> controlInputMatrix() const {
-    SF_CFG_MATH_USINGS
-    Eigen::Matrix<double, StateSize, ControlSize> matrix =
-        Eigen::Matrix<double, StateSize, ControlSize>::Zero();
-#if SF_CFG_HAS_CONTROL_INPUT_MATRIX
-    SF_PP_ASSIGN_MATRIX(matrix, CONTROL_INPUT_MATRIX)
-#endif
-    return matrix;
+    SF_CFG_LINEAR_MATRIX(StateSize, ControlSize, SF_CFG_HAS_CONTROL_INPUT_MATRIX,
+                         CONTROL_INPUT_MATRIX)
   }
 
   /// H (m x n) of OBSERVATION_MATRIX.
   Eigen::Matrix<double, MeasurementSize, StateSize> observationMatrix() const {
-    SF_CFG_MATH_USINGS
-    Eigen::Matrix<double, MeasurementSize, StateSize> matrix =
-        Eigen::Matrix<double, MeasurementSize, StateSize>::Zero();
-#if SF_CFG_HAS_OBSERVATION_MATRIX
-    SF_PP_ASSIGN_MATRIX(matrix, OBSERVATION_MATRIX)
-#endif
-    return matrix;
+    SF_CFG_LINEAR_MATRIX(MeasurementSize, StateSize, SF_CFG_HAS_OBSERVATION_MATRIX,
+                         OBSERVATION_MATRIX)
   }
 
   /// next_state = A x + B u.

@@ -68,6 +68,8 @@ template <class Entries, class Unlisted>
 struct DescriptorAt<Entries, -1, Unlisted> {
   using type = Unlisted;
 };
+template <class Entries, int Position, class Unlisted>
+using DescriptorOf = typename DescriptorAt<Entries, Position, Unlisted>::type;
 
 /// One value per index: `unlisted`, then each entry's `value` at its `input_index` (an entry
 /// whose index was refused, out of range, contributes nothing: its error is already reported).

@@ -132,7 +132,6 @@
 #define SF_CFG_LIST_NAME_Input "TOPICS_IN"
 #define SF_CFG_LIST_NAME_Control "TOPICS_IN_CTRL"
 
-#define SF_CFG_CALL_VISITOR(z, i, NAME) visitor(BOOST_PP_CAT(NAME, i){});
 
 // --- TOPICS_IN_CTRL -----------------------------------------------------------------------------
 #define SF_CFG_CONTROL(r, data, i, entry)                                                          \
@@ -190,12 +189,6 @@ using Inputs = std::tuple<BOOST_PP_ENUM_PARAMS(SF_CFG_M, Input)>;
 
 BOOST_PP_SEQ_FOR_EACH_I(SF_CFG_SAME_TOPIC_SAME_TYPE, Input, TOPICS_IN)
 
-/// Calls visitor(Input0{}), visitor(Input1{}), ... in TOPICS_IN order.
-template <class Visitor>
-void forEachInput(Visitor&& visitor) {
-  BOOST_PP_REPEAT(SF_CFG_M, SF_CFG_CALL_VISITOR, Input)
-}
-
 namespace detail {
 /// The message type of input I; UnknownMessage (no checks) when I is out of range, so that an
 /// index mistake is reported once, by the check of the index.
@@ -221,18 +214,8 @@ BOOST_PP_SEQ_FOR_EACH_I(SF_CFG_CONTROL, ~, TOPICS_IN_CTRL)
 using Controls = std::tuple<BOOST_PP_ENUM_PARAMS(SF_CFG_L, Control)>;
 
 BOOST_PP_SEQ_FOR_EACH_I(SF_CFG_SAME_TOPIC_SAME_TYPE, Control, TOPICS_IN_CTRL)
-
-/// Calls visitor(Control0{}), visitor(Control1{}), ... in TOPICS_IN_CTRL order.
-template <class Visitor>
-void forEachControl(Visitor&& visitor) {
-  BOOST_PP_REPEAT(SF_CFG_L, SF_CFG_CALL_VISITOR, Control)
-}
 #else
 using Controls = std::tuple<>;
-
-/// No control inputs: never calls the visitor.
-template <class Visitor>
-void forEachControl(Visitor&&) {}
 #endif
 
 // ---------------------------------------------------------------------------------------- outputs
@@ -248,10 +231,32 @@ constexpr int kOutputCount = BOOST_PP_SEQ_SIZE(TOPICS_OUT);
 /// The output descriptors Output0 .. Output<k-1> as a type list.
 using Outputs = std::tuple<BOOST_PP_ENUM_PARAMS(BOOST_PP_SEQ_SIZE(TOPICS_OUT), Output)>;
 
+namespace detail {
+/// Calls visitor(D{}) for each descriptor type D of the tuple, in order.
+template <class Descriptors, class Visitor, std::size_t... I>
+void visitEach([[maybe_unused]] Visitor& visitor, std::index_sequence<I...>) {
+  (visitor(std::tuple_element_t<I, Descriptors>{}), ...);
+}
+template <class Descriptors, class Visitor>
+void visitEach(Visitor& visitor) {
+  visitEach<Descriptors>(visitor, std::make_index_sequence<std::tuple_size_v<Descriptors>>{});
+}
+}  // namespace detail
+
+/// Calls visitor(Input0{}), visitor(Input1{}), ... in TOPICS_IN order.
+template <class Visitor>
+void forEachInput(Visitor&& visitor) {
+  detail::visitEach<Inputs>(visitor);
+}
+/// Calls visitor(Control0{}), ... in TOPICS_IN_CTRL order (never without controls).
+template <class Visitor>
+void forEachControl(Visitor&& visitor) {
+  detail::visitEach<Controls>(visitor);
+}
 /// Calls visitor(Output0{}), visitor(Output1{}), ... in TOPICS_OUT order.
 template <class Visitor>
 void forEachOutput(Visitor&& visitor) {
-  BOOST_PP_REPEAT(BOOST_PP_SEQ_SIZE(TOPICS_OUT), SF_CFG_CALL_VISITOR, Output)
+  detail::visitEach<Outputs>(visitor);
 }
 
 }  // namespace sf_config
