@@ -194,13 +194,11 @@ inline constexpr std::string_view kBaseFrame = "";
 constexpr bool kHasFrameAlignment = SF_FA_OK;
 
 SF_OPTION_ENTRIES(SF_FA_OK, SF_FA_ENTRY, ~, FRAME_ALIGNED_INPUTS)
-/// The descriptors FrameAligned0 .. in FRAME_ALIGNED_INPUTS order.
-using FrameAlignedInputs = SF_OPTION_TUPLE(SF_FA_OK, FrameAligned, FRAME_ALIGNED_INPUTS);
 
-/// How input I is read: NotFrameAligned, or its FRAME_ALIGNED_INPUTS descriptor.
+/// How input I is read: NotFrameAligned, or its FRAME_ALIGNED_INPUTS descriptor FrameAligned<k>.
 template <int I>
-using FrameAlignment =
-    detail::DescriptorOf<FrameAlignedInputs, alignment_detail::firstEntryOf(I), NotFrameAligned>;
+using FrameAlignment = SF_OPTION_DESCRIPTOR(SF_FA_OK, FrameAligned, FRAME_ALIGNED_INPUTS,
+                                            alignment_detail::firstEntryOf(I), NotFrameAligned);
 
 }  // namespace sf_config
 

@@ -150,11 +150,10 @@ struct NoCovarianceSource {
 };
 
 SF_OPTION_ENTRIES(SF_IC_OK, SF_IC_ENTRY, ~, INPUT_COVARIANCE)
-using CovarianceEntries = SF_OPTION_TUPLE(SF_IC_OK, CovarianceEntry, INPUT_COVARIANCE);
 
-/// The INPUT_COVARIANCE source of TOPICS_IN entry I, or NoCovarianceSource.
+/// The INPUT_COVARIANCE source of TOPICS_IN entry I (CovarianceEntry<k>), or NoCovarianceSource.
 template <int I>
-using CovarianceSource =
-    detail::DescriptorOf<CovarianceEntries, covariance_detail::firstEntryOf(I), NoCovarianceSource>;
+using CovarianceSource = SF_OPTION_DESCRIPTOR(SF_IC_OK, CovarianceEntry, INPUT_COVARIANCE,
+                                              covariance_detail::firstEntryOf(I), NoCovarianceSource);
 
 }  // namespace sf_config

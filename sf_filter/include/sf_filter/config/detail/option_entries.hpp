@@ -33,6 +33,9 @@
 #define SF_OPTION_TUPLE(OK, PREFIX, SEQ) std::tuple<BOOST_PP_IF(OK, SF_OPTION_NAME_LIST, SF_OPTION_NONE)(PREFIX, SEQ)>
 #define SF_OPTION_NAME_LIST(PREFIX, SEQ) BOOST_PP_SEQ_FOR_EACH_I(SF_OPTION_NAME_ITEM, PREFIX, SEQ)
 #define SF_OPTION_NAME_ITEM(r, PREFIX, k, entry) BOOST_PP_COMMA_IF(k) BOOST_PP_CAT(PREFIX, k)
+// The descriptor PREFIX<POSITION> of an option's entries, UNLISTED for position -1.
+#define SF_OPTION_DESCRIPTOR(OK, PREFIX, SEQ, POSITION, UNLISTED) \
+  ::sf_config::detail::DescriptorOf<SF_OPTION_TUPLE(OK, PREFIX, SEQ), POSITION, UNLISTED>
 // The per-index array of an option of SIZE indices: UNLISTED where no entry (struct PREFIX<k>)
 // names the index, the entry's `value` where one does.
 #define SF_OPTION_VALUES(T, SIZE, UNLISTED, OK, PREFIX, SEQ)                                       \

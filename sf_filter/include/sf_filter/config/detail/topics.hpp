@@ -69,6 +69,15 @@
                 "digits, '_' and '/', starting with a letter, '/' or '~'); write names that "      \
                 "are not C++ tokens as a string literal, e.g. (\"my_topic\")");
 
+// What an input and a control descriptor both hold: the message type, the entry's index, the
+// topic, and the type and field as written.
+#define SF_CFG_DESCRIPTOR_MEMBERS(i, entry)                                                        \
+  using Message = BOOST_PP_SEQ_ELEM(1, entry);                                                     \
+  static constexpr int index = i;                                                                  \
+  static constexpr std::string_view topic = SF_CFG_TOPIC_NAME(entry);                              \
+  static constexpr std::string_view message_type = SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry));         \
+  static constexpr std::string_view field = SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry));
+
 // --- TOPICS_IN ----------------------------------------------------------------------------------
 #define SF_CFG_INPUT(r, data, i, entry)                                                            \
   namespace detail {                                                                               \
@@ -78,11 +87,7 @@
                               BOOST_PP_SEQ_ELEM(BOOST_PP_DEC(BOOST_PP_SEQ_SIZE(entry)), entry))    \
   }                                                                                                \
   struct BOOST_PP_CAT(Input, i) : ::sf_config::detail::DescriptorBase {                            \
-    using Message = BOOST_PP_SEQ_ELEM(1, entry);                                                   \
-    static constexpr int index = i;                                                                \
-    static constexpr std::string_view topic = SF_CFG_TOPIC_NAME(entry);                            \
-    static constexpr std::string_view message_type = SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry));       \
-    static constexpr std::string_view field = SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry));              \
+    SF_CFG_DESCRIPTOR_MEMBERS(i, entry)                                                            \
     static constexpr bool has_variance = BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4);              \
     static constexpr std::string_view variance_field =                                             \
         BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_SEQ_SIZE(entry), 4), SF_PP_STR, "" SF_PP_NOTHING)(    \
@@ -139,11 +144,7 @@
   SF_CFG_FIELD_DETECTOR(BOOST_PP_CAT(ControlValueField, i), BOOST_PP_SEQ_ELEM(2, entry))           \
   }                                                                                                \
   struct BOOST_PP_CAT(Control, i) : ::sf_config::detail::DescriptorBase {                          \
-    using Message = BOOST_PP_SEQ_ELEM(1, entry);                                                   \
-    static constexpr int index = i;                                                                \
-    static constexpr std::string_view topic = SF_CFG_TOPIC_NAME(entry);                            \
-    static constexpr std::string_view message_type = SF_PP_STR(BOOST_PP_SEQ_ELEM(1, entry));       \
-    static constexpr std::string_view field = SF_PP_STR(BOOST_PP_SEQ_ELEM(2, entry));              \
+    SF_CFG_DESCRIPTOR_MEMBERS(i, entry)                                                            \
     static constexpr int first_same_topic =                                                        \
         ::sf_config::detail::firstIndexOf(kControlTopics, i);                                      \
     static constexpr bool owns_subscription = first_same_topic == index;                           \
