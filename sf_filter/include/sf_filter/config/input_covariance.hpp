@@ -154,6 +154,7 @@ SF_OPTION_ENTRIES(SF_IC_OK, SF_IC_ENTRY, ~, INPUT_COVARIANCE)
 /// The INPUT_COVARIANCE source of TOPICS_IN entry I (CovarianceEntry<k>), or NoCovarianceSource.
 template <int I>
 using CovarianceSource = SF_OPTION_DESCRIPTOR(SF_IC_OK, CovarianceEntry, INPUT_COVARIANCE,
-                                              covariance_detail::firstEntryOf(I), NoCovarianceSource);
+                                              covariance_detail::firstEntryOf(I),
+                                              NoCovarianceSource);
 
 }  // namespace sf_config

@@ -285,8 +285,8 @@ inline constexpr std::array<::sf_filter::AlignmentPolicy, kMeasurementSize> kInp
                      SF_AL_OK, input_alignment_detail::AlignmentEntry, INPUT_ALIGNMENT);
 /// INPUT_GATE per input; infinity for inputs without gate.
 inline constexpr std::array<double, kMeasurementSize> kGateThresholds =
-    SF_OPTION_VALUES(double, kMeasurementSize, std::numeric_limits<double>::infinity(),
-                     SF_GATE_OK, input_alignment_detail::GateEntry, INPUT_GATE);
+    SF_OPTION_VALUES(double, kMeasurementSize, std::numeric_limits<double>::infinity(), SF_GATE_OK,
+                     input_alignment_detail::GateEntry, INPUT_GATE);
 /// ALIGN_BY_STAMP per input.
 inline constexpr std::array<bool, kMeasurementSize> kAlignByStamp = SF_OPTION_VALUES(
     bool, kMeasurementSize, false, SF_STAMP_OK, input_alignment_detail::StampEntry, ALIGN_BY_STAMP);

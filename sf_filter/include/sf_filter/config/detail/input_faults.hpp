@@ -105,8 +105,8 @@ inline constexpr std::array<double, kMeasurementSize> kInputTimeoutsMs =
     SF_OPTION_VALUES(double, kMeasurementSize, std::numeric_limits<double>::infinity(),
                      SF_TIMEOUT_OK, input_faults_detail::TimeoutEntry, INPUT_TIMEOUT);
 /// INPUT_RANGE per input; (-inf, inf) for inputs without a range.
-inline constexpr std::array<InputRange, kMeasurementSize> kInputRanges = SF_OPTION_VALUES(
-    InputRange, kMeasurementSize, InputRange{}, SF_RANGE_OK, input_faults_detail::RangeEntry,
-    INPUT_RANGE);
+inline constexpr std::array<InputRange, kMeasurementSize> kInputRanges =
+    SF_OPTION_VALUES(InputRange, kMeasurementSize, InputRange{}, SF_RANGE_OK,
+                     input_faults_detail::RangeEntry, INPUT_RANGE);
 
 }  // namespace sf_config

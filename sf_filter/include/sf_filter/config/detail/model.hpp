@@ -62,6 +62,20 @@
 
 namespace sf_config {
 
+/// What every model of the header has: its sizes and the estimation period T.
+struct ModelBase {
+  static constexpr int StateSize = kStateSize;
+  static constexpr int MeasurementSize = kMeasurementSize;
+  static constexpr int ControlSize = kControlSize;
+
+  /// Estimation period in seconds; the expressions and matrix entries refer to it as T.
+  double T = kEstimationPeriodMs / 1000.0;
+
+  Eigen::Index stateSize() const { return StateSize; }
+  Eigen::Index measurementSize() const { return MeasurementSize; }
+  Eigen::Index controlSize() const { return ControlSize; }
+};
+
 // -------------------------------------------------------------------- EKF / UKF / PF: Model
 #if SF_CFG_IS_MODEL_BASED
 
@@ -80,18 +94,7 @@ SF_CFG_CHECK_MATRIX_EXPRESSIONS("OBSERVATION_JACOBIAN", OBSERVATION, OBSERVATION
 
 /// The state-space model of STATE_TRANSITION_MODEL / OBSERVATION_MODEL (and the Jacobians when
 /// given). The filters of the estimation library are templates on this interface.
-struct Model {
-  static constexpr int StateSize = kStateSize;
-  static constexpr int MeasurementSize = kMeasurementSize;
-  static constexpr int ControlSize = kControlSize;
-
-  /// Estimation period in seconds; the expressions refer to it as T.
-  double T = kEstimationPeriodMs / 1000.0;
-
-  Eigen::Index stateSize() const { return StateSize; }
-  Eigen::Index measurementSize() const { return MeasurementSize; }
-  Eigen::Index controlSize() const { return ControlSize; }
-
+struct Model : ModelBase {
   /// next_state(i) = expression i of STATE_TRANSITION_MODEL, evaluated at x (a posteriori state of
   /// the last step) and u (current control inputs).
   template <class Scalar>
@@ -148,6 +151,7 @@ struct Model {
 #endif  // SF_CFG_IS_MODEL_BASED
 
 // ------------------------------------------------------------------------ KF: LinearModel
+// clang-format off
 // The body of a LinearModel matrix getter: a ROWS x COLS matrix of zeros, with the entries of
 // the header's matrix M when GIVEN (its entries may use T and the math functions).
 #define SF_CFG_LINEAR_MATRIX(ROWS, COLS, GIVEN, M)                                                 \
@@ -155,6 +159,7 @@ struct Model {
   Eigen::Matrix<double, ROWS, COLS> matrix = Eigen::Matrix<double, ROWS, COLS>::Zero();            \
   BOOST_PP_IF(GIVEN, SF_PP_ASSIGN_MATRIX, SF_PP_NOTHING)(matrix, M)                                \
   return matrix;
+// clang-format on
 
 #if SF_CFG_IS_LINEAR
 
@@ -162,28 +167,15 @@ struct Model {
 /// CONTROL_INPUT_MATRIX and OBSERVATION_MATRIX. The entries may use T. Besides the matrices it
 /// offers the interface of Model (transition, observation, Jacobians), so a linear
 /// configuration also works with the non-linear filters.
-struct LinearModel {
-  static constexpr int StateSize = kStateSize;
-  static constexpr int MeasurementSize = kMeasurementSize;
-  static constexpr int ControlSize = kControlSize;
-
-  /// Estimation period in seconds; matrix entries refer to it as T.
-  double T = kEstimationPeriodMs / 1000.0;
-
-  Eigen::Index stateSize() const { return StateSize; }
-  Eigen::Index measurementSize() const { return MeasurementSize; }
-  Eigen::Index controlSize() const { return ControlSize; }
-
+struct LinearModel : ModelBase {
   /// A (n x n) of STATE_TRANSITION_MATRIX.
   Eigen::Matrix<double, StateSize, StateSize> transitionMatrix() const {
-    SF_CFG_LINEAR_MATRIX(StateSize, StateSize, 1, STATE_TRANSITION_MATRIX)
-  }
+      SF_CFG_LINEAR_MATRIX(StateSize, StateSize, 1, STATE_TRANSITION_MATRIX)}
 
   /// B (n x l) of CONTROL_INPUT_MATRIX (n x 0 without controls).
   Eigen::Matrix<double, StateSize, ControlSize> controlInputMatrix() const {
-    SF_CFG_LINEAR_MATRIX(StateSize, ControlSize, SF_CFG_HAS_CONTROL_INPUT_MATRIX,
-                         CONTROL_INPUT_MATRIX)
-  }
+      SF_CFG_LINEAR_MATRIX(StateSize, ControlSize, SF_CFG_HAS_CONTROL_INPUT_MATRIX,
+                           CONTROL_INPUT_MATRIX)}
 
   /// H (m x n) of OBSERVATION_MATRIX.
   Eigen::Matrix<double, MeasurementSize, StateSize> observationMatrix() const {
