@@ -41,31 +41,29 @@ SF_PP_CHECK_LIST("INPUT_COVARIANCE", 3, 3, SF_IC_FORMAT, INPUT_COVARIANCE)
 #define SF_IC_PREFIX(k, entry) "INPUT_COVARIANCE entry " SF_PP_STR(k) " (" SF_PP_STR(entry) ")"
 #define SF_IC_INDEX(entry) static_cast<int>(BOOST_PP_SEQ_ELEM(0, entry))
 
-#define SF_IC_ENTRY(r, data, k, entry)                                                             \
-  namespace covariance_detail {                                                                    \
+// NAME<MessageT>: whether MessageT has the array-of-numbers member MEMBER (ok), the array's
+// static size (size; -1 when not fixed) and the member itself (array(m); nullptr when not ok).
+// The detector of INPUT_COVARIANCE and INPUT_COVARIANCE_BLOCK entries.
+#define SF_IC_ARRAY_MEMBER(NAME, MEMBER)                                                           \
   template <class MessageT, class = void>                                                          \
-  struct BOOST_PP_CAT(ArrayMember, k) {                                                            \
+  struct NAME {                                                                                    \
     static constexpr bool ok = false;                                                              \
     static constexpr long size = -1;                                                               \
-    static std::optional<double> get(const MessageT&, long) { return std::nullopt; }               \
+    template <class M> static const double* array(const M&) { return nullptr; }                    \
   };                                                                                               \
   template <class MessageT>                                                                        \
-  struct BOOST_PP_CAT(ArrayMember, k)<MessageT, std::void_t<                                       \
-      decltype(std::size(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry))),            \
-      decltype(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry)[0])>> {                 \
-    static constexpr bool ok = std::is_convertible_v<                                              \
-        decltype(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry)[0]), double>;         \
-    static constexpr long size = staticSize<std::remove_cv_t<std::remove_reference_t<             \
-        decltype(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry))>>>();                \
-    static std::optional<double> get(const MessageT& m, long index) {                              \
-      if constexpr (ok) {                                                                          \
-        return ::sf_config::extractors::covarianceEntry(m.BOOST_PP_SEQ_ELEM(1, entry),             \
-                                                        static_cast<std::size_t>(index));          \
-      } else {                                                                                     \
-        return std::nullopt;                                                                       \
-      }                                                                                            \
-    }                                                                                              \
-  };                                                                                               \
+  struct NAME<MessageT, std::void_t<decltype(std::size(std::declval<const MessageT&>().MEMBER)),   \
+                                    decltype(std::declval<const MessageT&>().MEMBER[0])>> {        \
+    static constexpr bool ok =                                                                     \
+        std::is_convertible_v<decltype(std::declval<const MessageT&>().MEMBER[0]), double>;        \
+    static constexpr long size = ::sf_config::covariance_detail::staticSize<                       \
+        std::remove_cv_t<std::remove_reference_t<decltype(std::declval<const MessageT&>().MEMBER)>>>(); \
+    template <class M> static const auto& array(const M& m) { return m.MEMBER; }                   \
+  };
+
+#define SF_IC_ENTRY(r, data, k, entry)                                                             \
+  namespace covariance_detail {                                                                    \
+  SF_IC_ARRAY_MEMBER(BOOST_PP_CAT(ArrayMember, k), BOOST_PP_SEQ_ELEM(1, entry))                    \
   }                                                                                                \
   struct BOOST_PP_CAT(CovarianceEntry, k) {                                                        \
     static constexpr bool given = true;                                                            \
@@ -76,7 +74,13 @@ SF_PP_CHECK_LIST("INPUT_COVARIANCE", 3, 3, SF_IC_FORMAT, INPUT_COVARIANCE)
     using Member = covariance_detail::BOOST_PP_CAT(ArrayMember, k)<Message>;                       \
     template <class M>                                                                             \
     static std::optional<double> variance(const M& message) {                                      \
-      return covariance_detail::BOOST_PP_CAT(ArrayMember, k)<M>::get(message, entry_index);       \
+      using Of = covariance_detail::BOOST_PP_CAT(ArrayMember, k)<M>;                               \
+      if constexpr (Of::ok) {                                                                      \
+        return ::sf_config::extractors::covarianceEntry(Of::array(message),                        \
+                                                        static_cast<std::size_t>(entry_index));    \
+      } else {                                                                                     \
+        return std::nullopt;                                                                       \
+      }                                                                                            \
     }                                                                                              \
     static constexpr bool unknown = ::sf_config::detail::isUnknownMessage<Message>();              \
     static constexpr bool valid = input_index >= 0 && input_index < kMeasurementSize &&           \

@@ -57,25 +57,7 @@ SF_PP_CHECK_LIST("INPUT_COVARIANCE_BLOCK", 3, 3, SF_ICB_FORMAT, INPUT_COVARIANCE
 
 #define SF_ICB_ENTRY(r, data, k, entry)                                                            \
   namespace covariance_block_detail {                                                              \
-  template <class MessageT, class = void>                                                          \
-  struct BOOST_PP_CAT(BlockMember, k) {                                                            \
-    static constexpr bool ok = false;                                                              \
-    static constexpr long size = -1;                                                               \
-    template <class M> static const double* array(const M&) { return nullptr; }                    \
-  };                                                                                               \
-  template <class MessageT>                                                                        \
-  struct BOOST_PP_CAT(BlockMember, k)<MessageT, std::void_t<                                       \
-      decltype(std::size(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry))),            \
-      decltype(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry)[0])>> {                 \
-    static constexpr bool ok = std::is_convertible_v<                                              \
-        decltype(std::declval<const MessageT&>().BOOST_PP_SEQ_ELEM(1, entry)[0]), double>;         \
-    static constexpr long size = ::sf_config::covariance_detail::staticSize<std::remove_cv_t<      \
-        std::remove_reference_t<decltype(std::declval<const MessageT&>()                          \
-                                             .BOOST_PP_SEQ_ELEM(1, entry))>>>();                  \
-    template <class M> static const auto& array(const M& m) {                                      \
-      return m.BOOST_PP_SEQ_ELEM(1, entry);                                                        \
-    }                                                                                              \
-  };                                                                                               \
+  SF_IC_ARRAY_MEMBER(BOOST_PP_CAT(BlockMember, k), BOOST_PP_SEQ_ELEM(1, entry))                    \
   }                                                                                                \
   struct BOOST_PP_CAT(CovarianceBlock, k) {                                                        \
     static constexpr int inputs[] = SF_ICB_SEQ(BOOST_PP_SEQ_ELEM(0, entry));                       \
