@@ -109,7 +109,7 @@ sf_filter::EstimationInterval estimationOf(const Core& core,
                                            double interval) {
   sf_filter::EstimationInterval e;
   e.now.estimates = core.estimateCount();
-  e.now.failures = core.estimationFailures();
+  e.now.estimationFailures = core.estimationFailures();
   e.now.filterResets = core.filterResets();
   e.now.clockResets = core.clockResets();
   e.now.estimatorSeconds = core.estimatorSeconds();
@@ -175,7 +175,7 @@ TEST(EstimationHealth, FlagsAnInconsistentNisAndErrsOnAFailure) {
   EXPECT_EQ(below.message.find("too large?"), std::string::npos) << below.message;
   EXPECT_EQ(h.value("NIS consistent"), "false");
   EXPECT_EQ(h.value("NIS degrees of freedom"), "20");
-  e.now.failures = 1;
+  e.now.estimationFailures = 1;
   e.lastFailure = "innovation covariance is not positive definite";
   h = sf_filter::estimationHealth(e, nis);
   EXPECT_EQ(h.level, HealthLevel::Error);
@@ -187,7 +187,7 @@ TEST(EstimationHealth, FlagsAnInconsistentNisAndErrsOnAFailure) {
             0u)
       << h.message;
   EXPECT_EQ(h.value("filter resets"), "0");
-  e.now.failures = 10;
+  e.now.estimationFailures = 10;
   e.now.filterResets = 1;
   h = sf_filter::estimationHealth(e, nis);
   EXPECT_EQ(h.level, HealthLevel::Error);
@@ -197,7 +197,7 @@ TEST(EstimationHealth, FlagsAnInconsistentNisAndErrsOnAFailure) {
             0u)
       << h.message;
   EXPECT_EQ(h.value("filter resets"), "1");
-  e.now.failures = 0;
+  e.now.estimationFailures = 0;
   e.covarianceTrace = std::nan("");
   EXPECT_EQ(sf_filter::estimationHealth(e, sf_filter::NisWindow()).level, HealthLevel::Error);
 }

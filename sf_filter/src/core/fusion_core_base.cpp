@@ -316,15 +316,9 @@ Rejection FusionCoreBase::acceptStamp(Index input, InputCounters& c, double stam
 void FusionCoreBase::fillStatistics(FusionStatistics& out) const {
   out.inputs.assign(counters_.begin(), counters_.end());
   out.sumInputs();
-  out.estimates = estimateCount_;
-  out.estimationFailures = estimationFailures_;
-  out.filterResets = filterResets_;
-  out.clockResets = clockResets_;
-  out.nisFailures = nisFailures_;
-  out.controlNonFinite = controlNonFinite_;
+  static_cast<EstimationTotals&>(out) = totals_;
   out.skippedGaps = skippedGaps_;
   out.skippedPeriods = skippedPeriods_;
-  out.estimatorSeconds = estimatorSeconds_;
   out.maxStepSeconds = maxStepSeconds_;
   out.lastFailure = lastFailure_;
   out.clock = clock_;
@@ -389,7 +383,7 @@ std::uint64_t FusionCoreBase::queuedAhead() const {
 Rejection FusionCoreBase::addControl(Index control, double value) {
   if (control < 0 || control >= control_.size()) return Rejection::UnknownInput;
   if (!std::isfinite(value)) {
-    ++controlNonFinite_;
+    ++totals_.controlNonFinite;
     return Rejection::NonFinite;
   }
   bool estimated = false, beyond = false;
@@ -411,7 +405,7 @@ FusionCoreBase::ClockStep FusionCoreBase::readClock(double now) {
   }
   if (schedule.before(now - lag)) {
     restartSchedule(now);
-    ++clockResets_;
+    ++totals_.clockResets;
     return {ClockEvent::JumpedBackwards, 0};
   }
   const std::uint64_t due = schedule.periodsDue(now - lag);
@@ -517,17 +511,17 @@ void FusionCoreBase::finishPeriod() {
 }
 
 void FusionCoreBase::recordStep(double seconds) {
-  estimatorSeconds_ += seconds;
+  totals_.estimatorSeconds += seconds;
   if (seconds > maxStepSeconds_) maxStepSeconds_ = seconds;
-  ++estimateCount_;
+  ++totals_.estimates;
   consecutiveFailures_ = 0;
 }
 
 bool FusionCoreBase::recordFailure(const std::string& what) {
-  ++estimationFailures_;
+  ++totals_.estimationFailures;
   lastFailure_ = what;
   if (++consecutiveFailures_ < options_.maxConsecutiveFailures) return false;
-  ++filterResets_;
+  ++totals_.filterResets;
   consecutiveFailures_ = 0;
   return true;
 }

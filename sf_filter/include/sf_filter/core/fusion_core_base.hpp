@@ -88,19 +88,19 @@ class FusionCoreBase {
   /// the same conditions as nis()).
   const InnovationRecord& innovations() const { return innovations_; }
   /// Periods whose NIS could not be computed (innovation covariance not positive definite).
-  std::uint64_t nisFailures() const { return nisFailures_; }
-  std::uint64_t clockResets() const { return clockResets_; }
+  std::uint64_t nisFailures() const { return totals_.nisFailures; }
+  std::uint64_t clockResets() const { return totals_.clockResets; }
   /// Forward gaps crossed with one estimate (advanceTo() or skipGap()), and the periods they
   /// skipped without estimating.
   std::uint64_t skippedGaps() const { return skippedGaps_; }
   std::uint64_t skippedPeriods() const { return skippedPeriods_; }
   /// Steps the estimator rejected (each period's estimate then is the last good one).
-  std::uint64_t estimationFailures() const { return estimationFailures_; }
+  std::uint64_t estimationFailures() const { return totals_.estimationFailures; }
   /// Rejected steps since the last successful one.
   std::uint64_t consecutiveFailures() const { return consecutiveFailures_; }
   /// Restarts of the filter from its initial belief after Options::maxConsecutiveFailures
   /// rejected steps in a row (not counting reset() and clock jumps backwards).
-  std::uint64_t filterResets() const { return filterResets_; }
+  std::uint64_t filterResets() const { return totals_.filterResets; }
   /// Periods after the current one, up to the newest holding a value or control that arrived
   /// ahead of the clock (0: none): what a forward jump of the clock estimates one by one before
   /// it skips the rest of the gap.
@@ -109,14 +109,14 @@ class FusionCoreBase {
   /// advanceTo(now) would estimate, or skip when more than maxCatchUpPeriods().
   std::uint64_t periodsDue(double now) const;
   const std::string& lastFailure() const { return lastFailure_; }
-  std::uint64_t controlNonFinite() const { return controlNonFinite_; }
+  std::uint64_t controlNonFinite() const { return totals_.controlNonFinite; }
   double period() const { return options_.period; }
   /// Periods a forward clock jump may span and still have each of them estimated.
   std::uint64_t maxCatchUpPeriods() const { return options_.maxCatchUpPeriods; }
   double maxMeasurementLag() const { return options_.maxMeasurementLag; }
   /// Wall time spent in the estimator's steps, and their number (failed steps excluded).
-  double estimatorSeconds() const { return estimatorSeconds_; }
-  std::uint64_t estimateCount() const { return estimateCount_; }
+  double estimatorSeconds() const { return totals_.estimatorSeconds; }
+  std::uint64_t estimateCount() const { return totals_.estimates; }
   /// The longest estimator step so far [s].
   double maxStepSeconds() const { return maxStepSeconds_; }
   /// The counters above copied into `out` (FusionStatistics), the inputs' totals summed; the
@@ -202,7 +202,7 @@ class FusionCoreBase {
   void addInputNis(Index input, double nis) {
     innovations_.addInput(static_cast<std::size_t>(input), nis);
   }
-  void countNisFailure() { ++nisFailures_; }
+  void countNisFailure() { ++totals_.nisFailures; }
   bool nisWanted() const { return innovations_.enabled() && present_ > 0; }
 
   /// Discards pending values, the alignment histories, the controls and the NIS windows.
@@ -285,16 +285,10 @@ class FusionCoreBase {
   double reading_ = -std::numeric_limits<double>::infinity();
   double startTime_ = 0.0;  ///< clock reading the schedule (re)started at
   double maxStepSeconds_ = 0.0;
-  double estimatorSeconds_ = 0.0;
-  std::uint64_t estimateCount_ = 0;
-  std::uint64_t nisFailures_ = 0;
-  std::uint64_t clockResets_ = 0;
+  EstimationTotals totals_;  ///< repairs aside: the filter's, added by the engine
   std::uint64_t skippedGaps_ = 0;
   std::uint64_t skippedPeriods_ = 0;
-  std::uint64_t estimationFailures_ = 0;
   std::uint64_t consecutiveFailures_ = 0;
-  std::uint64_t filterResets_ = 0;
-  std::uint64_t controlNonFinite_ = 0;
   std::string lastFailure_;
 };
 

@@ -9,6 +9,7 @@
 
 #include <sf_estimation/numerical_repairs.hpp>
 
+#include "sf_filter/core/estimation_totals.hpp"
 #include "sf_filter/core/input_counters.hpp"
 
 namespace sf_filter {
@@ -23,20 +24,12 @@ struct InputTotals {
   std::uint64_t substituted = 0;
 };
 
-struct FusionStatistics {
+struct FusionStatistics : EstimationTotals {
   std::vector<InputCounters> inputs;  ///< per input, in the configuration's order
   InputTotals totals;                 ///< of `inputs` (sumInputs())
-  std::uint64_t estimates = 0;        ///< successful estimator steps
-  std::uint64_t estimationFailures = 0;
-  std::uint64_t filterResets = 0;  ///< restarts after too many failed steps in a row
-  std::uint64_t clockResets = 0;   ///< clock jumps backwards
-  std::uint64_t nisFailures = 0;   ///< periods whose NIS could not be computed
-  std::uint64_t controlNonFinite = 0;
   /// Forward gaps crossed with one estimate, and the periods they skipped without estimating.
   std::uint64_t skippedGaps = 0;
   std::uint64_t skippedPeriods = 0;
-  estimation::NumericalRepairs repairs;  ///< by the filter, across its restarts
-  double estimatorSeconds = 0.0;         ///< wall time in the estimator's steps
   double maxStepSeconds = 0.0;
   std::string lastFailure;
   double clock = 0.0;      ///< the last clock reading

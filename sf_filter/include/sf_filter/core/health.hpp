@@ -32,6 +32,7 @@
 
 #include <sf_estimation/numerical_repairs.hpp>
 
+#include "sf_filter/core/estimation_totals.hpp"
 #include "sf_filter/core/input_counters.hpp"
 #include "sf_filter/core/input_options.hpp"
 #include "sf_filter/core/nis_window.hpp"
@@ -145,18 +146,6 @@ inline HealthStatus inputHealth(const InputOptions& o, const InputInterval& in) 
   return s;
 }
 
-/// The estimation's totals at one report.
-struct EstimationTotals {
-  std::uint64_t estimates = 0;  ///< successful steps
-  std::uint64_t failures = 0;
-  std::uint64_t filterResets = 0;  ///< restarts after too many failures in a row
-  std::uint64_t clockResets = 0;
-  std::uint64_t nisFailures = 0;
-  std::uint64_t controlDropped = 0;
-  estimation::NumericalRepairs repairs;  ///< by the filter, across its restarts
-  double estimatorSeconds = 0.0;
-};
-
 struct EstimationInterval {
   EstimationTotals now, before;
   double interval = 0.0;  ///< clock time since the previous report (<= 0: unknown)
@@ -175,14 +164,14 @@ namespace health_detail {
 inline void raiseEstimationProblems(HealthStatus& s, const EstimationInterval& e,
                                     const NisWindow& nis, std::uint64_t steps, double stepSeconds) {
   const EstimationTotals &c = e.now, &b = e.before;
-  if (c.failures > b.failures) {
+  if (c.estimationFailures > b.estimationFailures) {
     const std::uint64_t resets = c.filterResets - b.filterResets;
-    s.raise(HealthLevel::Error,
-            std::to_string(c.failures - b.failures) + " estimation steps failed, " +
-                (resets > 0
-                     ? "filter reset " + std::to_string(resets) + " times after repeated failures"
-                     : std::string("last good estimate kept")) +
-                ": " + e.lastFailure);
+    s.raise(HealthLevel::Error, std::to_string(c.estimationFailures - b.estimationFailures) +
+                                    " estimation steps failed, " +
+                                    (resets > 0 ? "filter reset " + std::to_string(resets) +
+                                                      " times after repeated failures"
+                                                : std::string("last good estimate kept")) +
+                                    ": " + e.lastFailure);
   }
   if (!std::isfinite(e.covarianceTrace)) s.raise(HealthLevel::Error, "covariance not finite");
   if (c.clockResets > b.clockResets) {
@@ -244,10 +233,10 @@ inline HealthStatus estimationHealth(const EstimationInterval& e, const NisWindo
   s.add("covariance trace", e.covarianceTrace);
   if (nis.enabled()) health_detail::addNisValues(s, nis, c.nisFailures);
   s.add("clock resets", c.clockResets);
-  s.add("estimation failures", c.failures);
+  s.add("estimation failures", c.estimationFailures);
   s.add("filter resets", c.filterResets);
   s.add("last failure", e.lastFailure.empty() ? std::string("none") : e.lastFailure);
-  s.add("control values dropped", c.controlDropped);
+  s.add("control values dropped", c.controlNonFinite);
   s.add("numerical repairs", c.repairs.total());
   s.add("repairs: covariance", c.repairs.covariance);
   s.add("repairs: particle weights", c.repairs.weights);

@@ -166,18 +166,7 @@ class FusionDiagnostics {
     }
   }
 
-  EstimationTotals totals() const {
-    EstimationTotals t;
-    t.estimates = now_.estimates;
-    t.failures = now_.estimationFailures;
-    t.filterResets = now_.filterResets;
-    t.clockResets = now_.clockResets;
-    t.nisFailures = now_.nisFailures;
-    t.controlDropped = now_.controlNonFinite;
-    t.repairs = now_.repairs;
-    t.estimatorSeconds = now_.estimatorSeconds;
-    return t;
-  }
+  EstimationTotals totals() const { return now_; }  // the estimation part of the snapshot
 
   void reportEstimation(diagnostic_updater::DiagnosticStatusWrapper& s) const {
     EstimationInterval e;
