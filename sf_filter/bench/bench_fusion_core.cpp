@@ -47,6 +47,7 @@
 #include "sf_filter/core/fusion_core.hpp"
 #include "sf_filter/core/period_average.hpp"
 #include "support/allocation_counter.hpp"
+#include "support/nav3_drive.hpp"
 
 namespace {
 
@@ -54,8 +55,8 @@ using namespace estimation;
 using models::Nav3Ctrl;
 using Ukf = UnscentedKalmanFilter<Nav3Ctrl>;
 
-constexpr double kPeriod = 0.1;             // ESTIMATION_PERIOD 100 ms
-constexpr double kRadius = 0.3;             // effective skid-steer radius [m]
+using sf_bench::kPeriod;                    // ESTIMATION_PERIOD 100 ms (the drive's T)
+using sf_bench::kRadius;                    // effective skid-steer radius [m]
 constexpr std::size_t kDrivePeriods = 400;  // 40 s of driving, replayed in a loop
 constexpr double kEpoch = 1.7e9;            // ROS wall-clock seconds: same double resolution
 
@@ -82,20 +83,13 @@ struct Period {
 // A simulated drive of the nav3ctrl model (smoothly varying speed and turn rate), observed
 // with the sensor noise of R: gyro and accelerometer at 100 Hz, wheels and cmd_vel at 10 Hz.
 std::vector<Period> simulateDrive() {
-  const Nav3Ctrl model{kPeriod, kRadius};
   const Vector<4> sigma = models::nav3MeasurementNoise().diagonal().cwiseSqrt();
   std::mt19937_64 engine(7);
   std::normal_distribution<double> normal;
   std::vector<Period> drive;
-  Vector<7> x = Vector<7>::Zero();
-  for (std::size_t k = 0; k < kDrivePeriods; ++k) {
-    const double t = kPeriod * static_cast<double>(k);
-    const Vector<2> u(0.6 + 0.4 * std::sin(0.15 * t), 0.5 * std::sin(0.4 * t));
-    Vector<7> next;
-    model.transition(x, u, next);
-    x = next;
-    Vector<4> z;
-    model.observation(x, z);
+  for (const sf_bench::Nav3Step& step : sf_bench::simulateNav3Motion(kDrivePeriods)) {
+    const Vector<2>& u = step.control;
+    const Vector<4>& z = step.observation;
 
     Period p;
     p.control = u;
