@@ -245,6 +245,55 @@ estimation::UnscentedKalmanFilter<Nav3Ctrl> sfUkfCtrl() {
   return {Nav3Ctrl{kPeriod, kRadius}, kQ, kR, estimation::Vector<7>::Zero(),
           estimation::Matrix<7, 7>::Identity()};
 }
+/// nav3ctrl and nav3red with hand-written Jacobians, as mherb's models have them (the heading's
+/// four entries computed, the rest constant): the same model information on both sides. With
+/// them sf's EKF evaluates f and h and copies the Jacobians instead of differentiating.
+struct Nav3CtrlWithJacobians : Nav3Ctrl {
+  Nav3CtrlWithJacobians() : Nav3Ctrl{kPeriod, kRadius} {
+    F_.setZero();
+    F_(0, 0) = F_(1, 1) = F_(2, 2) = F_(5, 5) = 1.0;
+    F_(2, 3) = F_(4, 5) = F_(5, 6) = kPeriod;
+    F_(6, 5) = -1.0 / kPeriod;
+    H_.setZero();
+    H_.col(3) << 1.0, 0.0, -1000.0 * kRadius, 1000.0 * kRadius;
+    H_(1, 6) = 1.0;
+    H_(2, 5) = H_(3, 5) = 1000.0;
+  }
+  void transitionJacobian(const estimation::Vector<7>& x, const estimation::Vector<2>&,
+                          estimation::Matrix<7, 7>& A) const {
+    const double c = std::cos(x(2)), s = std::sin(x(2));
+    A = F_;
+    A(0, 2) = -x(4) * s;
+    A(0, 4) = c;
+    A(1, 2) = x(4) * c;
+    A(1, 4) = s;
+  }
+  void observationJacobian(const estimation::Vector<7>&, estimation::Matrix<4, 7>& H) const {
+    H = H_;
+  }
+  estimation::Matrix<7, 7> F_;
+  estimation::Matrix<4, 7> H_;
+};
+struct Nav3ReducedWithJacobians : Nav3Reduced {
+  Nav3ReducedWithJacobians()
+      : Nav3Reduced{kPeriod, kRadius}, A_(transitionMatrix()), H_(observationMatrix()) {}
+  void transitionJacobian(const estimation::Vector<3>&, const estimation::Vector<2>&,
+                          estimation::Matrix<3, 3>& A) const {
+    A = A_;
+  }
+  void observationJacobian(const estimation::Vector<3>&, estimation::Matrix<4, 3>& H) const {
+    H = H_;
+  }
+  estimation::Matrix<3, 3> A_;
+  estimation::Matrix<4, 3> H_;
+};
+estimation::ExtendedKalmanFilter<Nav3CtrlWithJacobians> sfEkfCtrlJacobians() {
+  return {Nav3CtrlWithJacobians(), kQ, kR};
+}
+estimation::ExtendedKalmanFilter<Nav3ReducedWithJacobians> sfEkfRedJacobians() {
+  return {Nav3ReducedWithJacobians(), kReducedQ, kR};
+}
+
 PeerKf peerKf() { return PeerKf(kReducedQ); }
 PeerEkfCtrl peerEkfCtrl() { return PeerEkfCtrl(kQ); }
 PeerUkfCtrl peerUkfCtrl() { return PeerUkfCtrl(kQ, kAlpha, kBeta, kKappa); }
@@ -277,6 +326,8 @@ int main(int argc, char** argv) {
   registerPair("EKF_nav3ctrl", sfEkfCtrl, peerEkfCtrl);
   registerPair("EKF_nav3red", sfEkfRed, peerKf);  // mherb's KF is its EKF
   registerPair("UKF_nav3ctrl", sfUkfCtrl, peerUkfCtrl);
+  registerPair("EKF_nav3ctrl_jacobians", sfEkfCtrlJacobians, peerEkfCtrl);
+  registerPair("EKF_nav3red_jacobians", sfEkfRedJacobians, peerKf);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
