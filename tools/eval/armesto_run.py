@@ -33,6 +33,11 @@ class Stream:
         self.ref_p, self.ref_q, self.movement = ref_p, ref_q, movement
 
     def csv(self):
+        if getattr(self, "_csv", None) is None:
+            self._csv = self._table()
+        return self._csv
+
+    def _table(self):
         seen = self.seen.astype(float)[:, None]
         table = np.hstack([self.imu, seen, np.where(seen > 0, self.vision, np.nan)])
         out = io.StringIO()
