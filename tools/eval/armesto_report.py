@@ -40,12 +40,12 @@ def decades(first, last):
 
 
 # The sweeps (the paper's Figs. 6-9): the trials at slow and fast motion, the two R entries
-# swept (7 decades each, the paper's value in the middle) and the cost they are judged by.
+# swept (in decades about the paper's value, far enough that the optimum is inside) and the cost they are judged by.
 SWEEPS = {
     "rotation": dict(trials={"slow": "02", "fast": "07"}, axes=("quat", "gyro"), cost=1,
-                     values=(decades(-9, -3), decades(-7, -1))),
+                     values=(decades(-12, -4), decades(-7, -1))),
     "translation": dict(trials={"slow": "10", "fast": "15"}, axes=("pos", "acc"), cost=0,
-                        values=(decades(-10, -4), decades(-6, 0))),
+                        values=(decades(-13, -5), decades(-6, 0))),
 }
 SYMBOL = {"quat": "R_q", "gyro": "R_omega", "pos": "R_p", "acc": "R_a"}
 IMAGE_DIR = os.path.join("doc", "img", "armesto")
@@ -194,9 +194,9 @@ def verdict_fusion(results, names):
         wins = sum(results[n][0]["ekf"][index] < min(results[n][0]["held"][index], results[n][0]["imu"][index]) for n in names)
         ratio = {m: np.exp(np.mean([np.log(results[n][0][m][index] / results[n][0]["ekf"][index]) for n in names]))
                  for m in ("held", "imu", "ukf")}
-        lines.append("- **Fusion beats either sensor (%s)**: %s on %d of %d trials; on (geometric) average vision held "
+        lines.append("- **Fusion beats either sensor (%s)**: %s %d of %d trials; on (geometric) average vision held "
                      "has %.3g times the MR-EKF's cost, the IMU alone %.3g times; the MR-UKF %.4g times."
-                     % (symbol, "holds" if wins == len(names) else "holds on", wins, len(names),
+                     % (symbol, "holds on all" if wins == len(names) else "holds on", wins, len(names),
                         ratio["held"], ratio["imu"], ratio["ukf"]))
     return lines
 
@@ -248,7 +248,8 @@ def body(results, grids, paths_by_number, figures, args, seconds):
               "trust; every other R as eqs. 25-26." % ", ".join("%s over %s x %s" % (
                   n, SYMBOL[s["axes"][0]], SYMBOL[s["axes"][1]]) for n, s in SWEEPS.items()), ""]
     lines += sweep_table(grids, paths_by_number)
-    lines += [""] + ["![%s](%s)" % (os.path.basename(f), os.path.relpath(f, "doc")) for f in figures]
+    page_dir = os.path.dirname(os.path.abspath(args.page if args.page != "-" else "doc/armesto.md"))
+    lines += [""] + ["![%s](%s)" % (os.path.basename(f), os.path.relpath(os.path.abspath(f), page_dir)) for f in figures]
     lines += ["", "J_q per trial:", ""] + trial_table(results, names, 1)
     lines += ["", "J_p [m^2] per trial:", ""] + trial_table(results, names, 0)
     lines += ["", "Command: `tools/eval/armesto_report.py BROAD --binary BUILD/sf_estimation_armesto_fusion%s` "
