@@ -164,9 +164,10 @@ def sweep_table(grids, paths_by_number):
             for speed in ("slow", "fast"):
                 grid = grids[(name, kind, paths_by_number[spec["trials"][speed]])]
                 a, b, best = optimum(grid, values)
-                lines.append("| %s | %s | %s (%s) | %s = %.0e, %s = %.0e | %s | %s | %+.0f | %s |" % (
+                lines.append("| %s | %s | %s (%s) | %s = %.0e, %s = %.0e%s | %s | %s | %+.0f | %s |" % (
                     name, TITLES[kind], speed, spec["trials"][speed], SYMBOL[spec["axes"][0]], a, SYMBOL[spec["axes"][1]], b,
-                    fmt(best), fmt(grid[middle]), trust(grid, values), fmt(grid[-1, 0] / best)))
+                    " (edge)" if edge(grid) else "",
+                    fmt(best), fmt(grid[middle]), trust(grid, values), fmt(corner_penalty(grid))))
     return lines
 
 
@@ -195,10 +196,21 @@ def verdict_fusion(results, names):
         ratio = {m: np.exp(np.mean([np.log(results[n][0][m][index] / results[n][0]["ekf"][index]) for n in names]))
                  for m in ("held", "imu", "ukf")}
         lines.append("- **Fusion beats either sensor (%s)**: %s %d of %d trials; on (geometric) average vision held "
-                     "has %.3g times the MR-EKF's cost, the IMU alone %.3g times; the MR-UKF %.4g times."
+                     "has %.3g times the MR-EKF's cost, the IMU alone %.3g times; the MR-UKF %.5f times."
                      % (symbol, "holds on all" if wins == len(names) else "holds on", wins, len(names),
                         ratio["held"], ratio["imu"], ratio["ukf"]))
     return lines
+
+
+def corner_penalty(grid):
+    """The cost with vision trusted least and the inertial sensor most (largest R_vision,
+    smallest R_inertial of the grid) over the optimum."""
+    return float(grid[-1, 0] / np.min(grid))
+
+
+def edge(grid):
+    i, j = np.unravel_index(np.argmin(grid), grid.shape)
+    return i in (0, grid.shape[0] - 1) or j in (0, grid.shape[1] - 1)
 
 
 def verdict_sweeps(grids, paths_by_number):
@@ -207,15 +219,20 @@ def verdict_sweeps(grids, paths_by_number):
         for kind in ("ekf", "ukf"):
             slow, fast = (grids[(name, kind, paths_by_number[spec["trials"][s]])] for s in ("slow", "fast"))
             t_slow, t_fast = trust(slow, spec["values"]), trust(fast, spec["values"])
+            c_slow, c_fast = corner_penalty(slow), corner_penalty(fast)
             lines.append("- **Vision at low speed, inertial at high speed (%s, %s)**: log10 %s/%s at the optimum is "
-                         "%+.0f slow and %+.0f fast: %s." % (
+                         "%+.0f slow and %+.0f fast%s (%s); distrusting vision and trusting the inertial sensor "
+                         "(largest %s, smallest %s) costs %s times the optimum slow and %s times fast (%s)." % (
                              name, TITLES[kind], SYMBOL[spec["axes"][0]], SYMBOL[spec["axes"][1]], t_slow, t_fast,
-                             "holds (vision trusted relatively more at low speed)" if t_slow < t_fast else
-                             ("not shown (the same optimum)" if t_slow == t_fast else "does not hold")))
+                             ", an optimum at the grid's edge" if edge(slow) or edge(fast) else "",
+                             "vision trusted relatively more at low speed: holds" if t_slow < t_fast else
+                             ("the same trust: not shown" if t_slow == t_fast else "vision trusted relatively more at high speed: does not hold"),
+                             SYMBOL[spec["axes"][0]], SYMBOL[spec["axes"][1]], fmt(c_slow), fmt(c_fast),
+                             "worse at low speed: holds" if c_slow > c_fast else "worse at high speed: does not hold"))
     spec = SWEEPS["translation"]
     for kind in ("ekf", "ukf"):
         slow, fast = (grids[("translation", kind, paths_by_number[spec["trials"][s]])] for s in ("slow", "fast"))
-        c_slow, c_fast = slow[-1, 0] / np.min(slow), fast[-1, 0] / np.min(fast)
+        c_slow, c_fast = corner_penalty(slow), corner_penalty(fast)
         lines.append("- **Slow translations lose the bias when vision is trusted little (%s)**: J_p at R_p = %.0e, "
                      "R_a = %.0e is %s times its optimum slow and %s times fast: %s." % (
                          TITLES[kind], spec["values"][0][-1], spec["values"][1][0], fmt(c_slow), fmt(c_fast),
@@ -227,8 +244,8 @@ def verdict_cost(results, names, grids):
     cpu = {k: float(np.mean([results[n][1][k] for n in names])) for k in ("ekf", "ukf")}
     ukf_worse, ekf_worse, cells, largest = peaks(grids)
     return ["- **The UKF's numerical peaks**: over the %d sweep cells the MR-UKF's cost exceeds the MR-EKF's by more "
-            "than 2x (or only it diverged) in %d, the reverse in %d; the largest UKF/EKF ratio is %s." % (
-                cells, ukf_worse, ekf_worse, fmt(largest)),
+            "than 2x (or only it diverged) in %d, the reverse in %d; the largest UKF/EKF ratio is %.5f." % (
+                cells, ukf_worse, ekf_worse, largest),
             "- **The UKF's cost**: %.1f us per step for the MR-EKF, %.1f us for the MR-UKF (mean over %d trials): "
             "%.2f times (the paper: about 7 times)." % (cpu["ekf"], cpu["ukf"], len(names), cpu["ukf"] / cpu["ekf"])]
 
@@ -253,7 +270,7 @@ def body(results, grids, paths_by_number, figures, args, seconds):
     lines += ["", "J_q per trial:", ""] + trial_table(results, names, 1)
     lines += ["", "J_p [m^2] per trial:", ""] + trial_table(results, names, 0)
     lines += ["", "Command: `tools/eval/armesto_report.py BROAD --binary BUILD/sf_estimation_armesto_fusion%s` "
-              "(%.0f s with %d jobs)." % ("" if args.seed == 1 else " --seed %d" % args.seed, seconds, args.jobs), "",
+              "(the runs took %.0f s with %d jobs)." % ("" if args.seed == 1 else " --seed %d" % args.seed, seconds, args.jobs), "",
               "Machine: %s." % broad_report.machine()]
     return lines
 
@@ -280,16 +297,17 @@ def main():
               for n in spec["trials"].values() for kind in ("ekf", "ukf")]
     if args.cache and os.path.exists(args.cache):
         with open(args.cache, "rb") as f:
-            results, grids = pickle.load(f)
+            results, grids, seconds = pickle.load(f)
     else:
         with Pool(args.jobs) as pool:
             results = {name: (costs, cpu) for name, costs, cpu in pool.map(evaluate, [(p, args.binary, args.seed) for p in paths])}
             grids = dict(pool.map(sweep, sweeps))
+        seconds = time.time() - started
         if args.cache:
             with open(args.cache, "wb") as f:
-                pickle.dump((results, grids), f)
+                pickle.dump((results, grids, seconds), f)
     figures = plot_sweeps(grids, by_number, args.images)
-    doc_section.publish(args.page, "armesto-results", body(results, grids, by_number, figures, args, time.time() - started))
+    doc_section.publish(args.page, "armesto-results", body(results, grids, by_number, figures, args, seconds))
 
 
 if __name__ == "__main__":
