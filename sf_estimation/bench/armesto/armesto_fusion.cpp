@@ -51,6 +51,13 @@ struct Options {
   std::exit(2);
 }
 
+double positiveNumber(const std::string& name, const char* text) {
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (*end != '\0' || !(value > 0.0)) usage(name + " needs a positive number, not " + text);
+  return value;
+}
+
 Options parse(int argc, char** argv) {
   Options o;
   am::Noise& n = o.noise;
@@ -68,21 +75,19 @@ Options parse(int argc, char** argv) {
                                                  {"--bias-std", &o.biasStd}};
   for (int i = 1; i < argc; ++i) {
     const std::string name = argv[i];
-    if (name == "--no-vision" || name == "--print-bias") {
-      (name == "--no-vision" ? o.vision : o.printBias) = name == "--print-bias";
-      continue;
-    }
-    if (i + 1 >= argc) usage(name + " needs a value");
-    if (name == "--filter") {
+    if (name == "--no-vision") {
+      o.vision = false;
+    } else if (name == "--print-bias") {
+      o.printBias = true;
+    } else if (i + 1 >= argc) {
+      usage(name + " needs a value");
+    } else if (name == "--filter") {
       o.filter = argv[++i];
-      continue;
+    } else if (values.count(name) == 0) {
+      usage("unknown option " + name);
+    } else {
+      *values.at(name) = positiveNumber(name, argv[++i]);
     }
-    const auto found = values.find(name);
-    if (found == values.end()) usage("unknown option " + name);
-    char* end = nullptr;
-    *found->second = std::strtod(argv[++i], &end);
-    if (*end != '\0' || !(*found->second > 0.0))
-      usage(name + " needs a positive number, not " + argv[i]);
   }
   if (o.filter != "ekf" && o.filter != "ukf") usage("--filter must be ekf or ukf");
   return o;
