@@ -10,7 +10,8 @@
 // this period, else 0 (its numbers are then ignored). The first line must have a frame: the
 // filter starts from it, at rest, with the line's gyro as its angular velocity.
 // Output: one line per input line, "px,py,pz,qw,qx,qy,qz" (the estimate after that line;
-// with --print-bias followed by the accelerometer bias). On stderr at the end: "cpu_per_step_us
+// with --print-bias followed by the accelerometer bias; --ukf-alpha sets UKF-M's three
+// sigma-point spreads, 1e-3 by default). On stderr at the end: "cpu_per_step_us
 // X", the process CPU time of the filter's steps alone. A step the filter refuses
 // (non-finite, a failed covariance root) ends the run with status 3 and "diverged at line N".
 #include <time.h>
@@ -38,16 +39,18 @@ struct Options {
   std::string filter;
   bool vision = true, printBias = false;
   double period = 0.01, gravity = 9.81;
+  double ukfAlpha = 1e-3;  // the three sigma-point spreads of UKF-M
   double velocityStd = 0.1, accelerationStd = 1.0, biasStd = 0.1;  // P0 [m/s, m/s^2, m/s^2]
   am::Noise noise;
 };
 
 [[noreturn]] void usage(const std::string& problem) {
-  std::cerr << "sf_estimation_armesto_fusion: " << problem << "\n"
-            << "usage: sf_estimation_armesto_fusion --filter ekf|ukf [--no-vision] [--print-bias]\n"
-            << "  [--period S] [--gravity G] [--r-acc V] [--r-gyro V] [--r-pos V] [--r-quat V]\n"
-            << "  [--q-jerk V] [--q-alpha V] [--q-bias V] [--velocity-std S]\n"
-            << "  [--acceleration-std S] [--bias-std S] < stream.csv > estimates.csv\n";
+  std::cerr
+      << "sf_estimation_armesto_fusion: " << problem << "\n"
+      << "usage: sf_estimation_armesto_fusion --filter ekf|ukf [--no-vision] [--print-bias]\n"
+      << "  [--period S] [--gravity G] [--r-acc V] [--r-gyro V] [--r-pos V] [--r-quat V]\n"
+      << "  [--q-jerk V] [--q-alpha V] [--q-bias V] [--velocity-std S]\n"
+      << "  [--acceleration-std S] [--bias-std S] [--ukf-alpha A] < stream.csv > estimates.csv\n";
   std::exit(2);
 }
 
@@ -72,7 +75,8 @@ Options parse(int argc, char** argv) {
                                                  {"--q-bias", &n.biasRate},
                                                  {"--velocity-std", &o.velocityStd},
                                                  {"--acceleration-std", &o.accelerationStd},
-                                                 {"--bias-std", &o.biasStd}};
+                                                 {"--bias-std", &o.biasStd},
+                                                 {"--ukf-alpha", &o.ukfAlpha}};
   for (int i = 1; i < argc; ++i) {
     const std::string name = argv[i];
     if (name == "--no-vision") {
@@ -115,8 +119,8 @@ double cpuSeconds() {
 
 /// The start: the first frame's pose, at rest, the first gyro sample as the angular velocity;
 /// P0 from the vision noise for the pose, the gyro noise for the rate.
-template <class Filter>
-Filter start(const Options& o, const Line& first) {
+template <class Filter, class... FilterOptions>
+Filter start(const Options& o, const Line& first, const FilterOptions&... options) {
   if (first(6) == 0.0) usage("the first line must carry a vision frame");
   Vector<19> x0 = Vector<19>::Zero();
   x0.head<3>() = first.segment<3>(7);
@@ -127,7 +131,7 @@ Filter start(const Options& o, const Line& first) {
       Vector<3>::Constant(o.accelerationStd * o.accelerationStd),
       Vector<3>::Constant(o.biasStd * o.biasStd), Vector<3>::Constant(4.0 * o.noise.quaternion),
       Vector<3>::Constant(o.noise.gyro);
-  return Filter(o.noise, x0, Matrix<18, 18>(p0.asDiagonal()), o.period, o.gravity);
+  return Filter(o.noise, x0, Matrix<18, 18>(p0.asDiagonal()), o.period, o.gravity, options...);
 }
 
 template <class Filter>
@@ -138,12 +142,12 @@ void print(const Options& o, const Filter& filter) {
   std::printf("\n");
 }
 
-template <template <class> class Kind>
-int run(const Options& o) {
+template <template <class> class Kind, class... FilterOptions>
+int run(const Options& o, const FilterOptions&... options) {
   using Filter = am::MultiRateFilter<Kind>;
   Line s;
   if (!readLine(s)) usage("no input");
-  Filter filter = start<Filter>(o, s);
+  Filter filter = start<Filter>(o, s, options...);
   print(o, filter);
   double cpu = 0.0;
   long steps = 0;
@@ -170,6 +174,8 @@ int run(const Options& o) {
 
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
-  return o.filter == "ekf" ? run<estimation::ManifoldExtendedKalmanFilter>(o)
-                           : run<estimation::ManifoldUnscentedKalmanFilter>(o);
+  if (o.filter == "ekf") return run<estimation::ManifoldExtendedKalmanFilter>(o);
+  if (!(o.ukfAlpha <= 1.0)) usage("--ukf-alpha must be in (0, 1]");
+  const estimation::ManifoldUnscentedParameters spread{o.ukfAlpha, o.ukfAlpha, o.ukfAlpha};
+  return run<estimation::ManifoldUnscentedKalmanFilter>(o, spread);
 }

@@ -30,12 +30,15 @@ class MultiRateFilter {
   using StateVector = Vector<State::StoredSize>;
   using Covariance = Matrix<State::TangentSize, State::TangentSize>;
 
-  /// Starts at (x0, P0); T is the period [s] of the IMU and of the filter's steps.
+  /// Starts at (x0, P0); T is the period [s] of the IMU and of the filter's steps; `options`
+  /// go to both filters' constructors (e.g. the UKF's ManifoldUnscentedParameters).
+  template <class... FilterOptions>
   MultiRateFilter(const Noise& noise, const StateVector& x0, const Covariance& P0, double T,
-                  double gravity = 9.81)
-      : inertial_(makeModel<Inertial>(gravity), processNoise(noise), inertialNoise(noise), x0, P0),
-        vision_(makeModel<InertialVision>(gravity), processNoise(noise), visionNoise(noise), x0,
-                P0),
+                  double gravity = 9.81, const FilterOptions&... options)
+      : inertial_(makeModel<Inertial>(gravity), processNoise(noise), inertialNoise(noise), x0, P0,
+                  options...),
+        vision_(makeModel<InertialVision>(gravity), processNoise(noise), visionNoise(noise), x0, P0,
+                options...),
         period_(Vector<1>::Constant(T)) {}
 
   /// One period with an IMU sample (accelerometer [m/s^2], gyro [rad/s]).
