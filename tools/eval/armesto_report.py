@@ -30,8 +30,9 @@ import broad_report  # noqa: E402
 import broad_trial  # noqa: E402
 import doc_section  # noqa: E402
 
-METHODS = ("ekf", "ukf", "ukf1", "held", "imu")
-TITLES = {"ekf": "MR-EKF", "ukf": "MR-UKF", "ukf1": "MR-UKF alpha 1", "held": "vision held", "imu": "IMU alone"}
+METHODS = ("ekf", "ukf", "ukf1", "held", "imu", "gyro")
+TITLES = {"ekf": "MR-EKF", "ukf": "MR-UKF", "ukf1": "MR-UKF alpha 1", "held": "vision held", "imu": "IMU alone",
+          "gyro": "gyro integrated"}
 # UKF-M's sigma-point spread: the library's default (1e-3, UKF-M's benchmarks) and whole
 # standard deviations (alpha 1), nearer the paper's kappa-weighted points.
 UKF_WIDE = ["--ukf-alpha", "1"]
@@ -74,6 +75,25 @@ def evaluate(job):
     return os.path.splitext(os.path.basename(path))[0], costs, cpu
 
 
+def gyro_integrated(stream):
+    """The orientation of the gyro alone, integrated from the first frame, q_k = q_k-1 exp(w T):
+    what the IMU alone gives for J_q without the filter's accelerometer update."""
+    turns = armesto_run.rotation_vector_to_quat(stream.imu[:, 3:] * armesto_run.PERIOD)
+    q = np.empty_like(turns)
+    q[0] = stream.vision[0, 3:]
+    for k in range(1, len(q)):
+        q[k] = armesto_run.quat_product(q[k - 1], turns[k])
+        q[k] /= np.linalg.norm(q[k])
+    return q
+
+
+def add_gyro_integrated(job):
+    """(J_p undefined, J_q) of the gyro integrated over one trial."""
+    path, seed = job
+    stream = stream_of(path, seed)
+    return os.path.splitext(os.path.basename(path))[0], (float("nan"), armesto_run.costs(stream, stream.ref_p, gyro_integrated(stream))[1])
+
+
 def sweep(job):
     """The grid of costs (rows: first axis' values, columns: second's) of one filter on one
     trial; inf where the filter diverged."""
@@ -91,6 +111,8 @@ def sweep(job):
 
 
 def fmt(value):
+    if np.isnan(value):
+        return "-"
     return "diverged" if not np.isfinite(value) else "%.3g" % value
 
 
@@ -247,6 +269,7 @@ def verdict_sweeps(grids, paths_by_number):
 
 def verdict_cost(results, names, grids):
     cpu = {k: float(np.mean([results[n][1][k] for n in names])) for k in ("ekf", "ukf")}
+    imu, gyro = (np.exp(np.mean([np.log(results[n][0][m][1]) for n in names])) for m in ("imu", "gyro"))
     ukf_worse, ekf_worse, cells, largest = peaks(grids)
     wide = max(abs(results[n][0]["ukf1"][k] / results[n][0]["ekf"][k] - 1.0) for n in names for k in (0, 1))
     return ["- **The UKF's numerical peaks**: over the %d sweep cells the MR-UKF's cost exceeds the MR-EKF's by more "
@@ -254,7 +277,10 @@ def verdict_cost(results, names, grids):
             "points at whole standard deviations (alpha 1) the MR-UKF's J_p and J_q differ from the MR-EKF's by at "
             "most %.2g (relative) over the %d trials." % (cells, ukf_worse, ekf_worse, largest, wide, len(names)),
             "- **The UKF's cost**: %.1f us per step for the MR-EKF, %.1f us for the MR-UKF (mean over %d trials): "
-            "%.2f times (the paper: about 7 times)." % (cpu["ekf"], cpu["ukf"], len(names), cpu["ukf"] / cpu["ekf"])]
+            "%.2f times (the paper: about 7 times)." % (cpu["ekf"], cpu["ukf"], len(names), cpu["ukf"] / cpu["ekf"]),
+            "- **The IMU alone**: the filter without vision has J_q %.3g (geometric mean), the gyro integrated alone "
+            "%.3g: %s." % (imu, gyro, "the filter's accelerometer update costs orientation" if imu > gyro else
+                             "the filter's accelerometer update helps")]
 
 
 def body(results, grids, paths_by_number, figures, args, seconds):
@@ -313,6 +339,9 @@ def main():
         if args.cache:
             with open(args.cache, "wb") as f:
                 pickle.dump((results, grids, seconds), f)
+    with Pool(args.jobs) as pool:
+        for name, costs in pool.map(add_gyro_integrated, [(p, args.seed) for p in paths]):
+            results[name][0]["gyro"] = costs
     figures = plot_sweeps(grids, by_number, args.images)
     doc_section.publish(args.page, "armesto-results", body(results, grids, by_number, figures, args, seconds))
 
