@@ -66,10 +66,13 @@ static_assert(false, "QUATERNION_STATES: expected a sequence of state indices, e
 
 // clang-format on
 
+#if defined(QUATERNION_STATES)
+// Also for a malformed QUATERNION_STATES, so that its one error is the form's.
+#include "sf_filter/config/detail/rotation_helpers.hpp"
+#endif
+
 #if SF_CFG_HAS_QUATERNION_STATES
 #include <sf_estimation/manifold/layout_embedding.hpp>
-
-#include "sf_filter/config/detail/rotation_helpers.hpp"
 
 namespace sf_config {
 namespace quaternions_detail {
