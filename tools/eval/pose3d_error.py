@@ -22,37 +22,41 @@ import bisect
 import csv
 import math
 
-import numpy as np
+
+def norm(v):
+    return math.sqrt(sum(c * c for c in v))
 
 
 def quat_multiply(a, b):
     w1, x1, y1, z1 = a
     w2, x2, y2, z2 = b
-    return np.array([w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2, w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-                     w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2])
+    return (w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2, w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2)
 
 
 def quat_conjugate(q):
-    return np.array([q[0], -q[1], -q[2], -q[3]])
+    return (q[0], -q[1], -q[2], -q[3])
 
 
 def rotate(q, v):
-    return quat_multiply(quat_multiply(q, np.concatenate([[0.0], v])), quat_conjugate(q))[1:]
+    return quat_multiply(quat_multiply(q, (0.0,) + tuple(v)), quat_conjugate(q))[1:]
 
 
 def angle_between(q1, q0):
     """The rotation angle of q0^-1 q1 [rad], the same for -q1."""
     d = quat_multiply(quat_conjugate(q0), q1)
-    return 2.0 * math.atan2(np.linalg.norm(d[1:]), abs(d[0]))
+    return 2.0 * math.atan2(norm(d[1:]), abs(d[0]))
 
 
 def tilt_between(q1, q0):
-    up1, up0 = rotate(quat_conjugate(q1), [0, 0, 1]), rotate(quat_conjugate(q0), [0, 0, 1])
-    return math.acos(max(-1.0, min(1.0, float(np.dot(up1, up0)) / np.linalg.norm(up1))))
+    """The angle between the body's up axes (the world's z seen in each body frame) [rad]."""
+    up1, up0 = rotate(quat_conjugate(q1), (0, 0, 1)), rotate(quat_conjugate(q0), (0, 0, 1))
+    dot = sum(a * b for a, b in zip(up1, up0)) / (norm(up1) * norm(up0))
+    return math.acos(max(-1.0, min(1.0, dot)))
 
 
 def yaw_quaternion(yaw):
-    return np.array([math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)])
+    return (math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2))
 
 
 def heading(q):
@@ -68,9 +72,9 @@ def load_truth(bag_path, topic="ground_truth/pose"):
         for _, msg, _ in bag.read_messages(topics=[topic]):
             o, p = msg.pose.orientation, msg.pose.position
             times.append(msg.header.stamp.to_sec())
-            quats.append(np.array([o.w, o.x, o.y, o.z]))
-            positions.append(np.array([p.x, p.y, p.z]))
-    order = np.argsort(times, kind="stable")
+            quats.append((o.w, o.x, o.y, o.z))
+            positions.append((p.x, p.y, p.z))
+    order = sorted(range(len(times)), key=lambda i: times[i])
     return ([times[i] for i in order], [quats[i] for i in order], [positions[i] for i in order])
 
 
@@ -90,8 +94,8 @@ def errors(rows, truth, quaternion, position=None, skip=0.0, max_gap=0.02, align
         j = min(near, key=lambda j: abs(times[j] - row["time"]))
         if abs(times[j] - row["time"]) > max_gap:
             continue
-        q = np.array([row["x%d" % (quaternion + i)] for i in range(4)])
-        q = q / np.linalg.norm(q)
+        q = [row["x%d" % (quaternion + i)] for i in range(4)]
+        q = tuple(c / norm(q) for c in q)
         if align_yaw:
             if offset is None:
                 offset = yaw_quaternion(heading(quats[j]) - heading(q))
@@ -99,8 +103,8 @@ def errors(rows, truth, quaternion, position=None, skip=0.0, max_gap=0.02, align
         out["orientation"].append(angle_between(q, quats[j]))
         out["tilt"].append(tilt_between(q, quats[j]))
         if position is not None:
-            p = np.array([row["x%d" % (position + i)] for i in range(3)])
-            out["position"].append(float(np.linalg.norm(p - positions[j])))
+            p = [row["x%d" % (position + i)] for i in range(3)]
+            out["position"].append(norm([a - b for a, b in zip(p, positions[j])]))
     return out
 
 
