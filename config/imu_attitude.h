@@ -15,10 +15,14 @@
 // observes the yaw, which follows the gyro. Gravity: g = 9.80665 m/s^2 along the world's -z,
 // so that a level body at rest reads +g on its z axis (REP 103; tools/sim/rigid_body_sim.py
 // and the BROAD bags read so). The accelerometer also reads the body's own acceleration,
-// which this model takes for noise: R = 0.05 (m/s^2)^2 per axis (a body that accelerates more
-// should raise it). Q: the orientation 1e-4 T rad^2 (the gyro's noise and the one-sample
-// control over a period), the bias 1e-8 T (rad/s)^2. P0: 1 rad^2 on roll and pitch, whose
-// first accelerometer readings settle them, and on yaw; (0.01 rad/s)^2 on the bias.
+// which this model takes for noise: R = 0.5 (m/s^2)^2 per axis, far above the sensor's own
+// noise (0.05 m/s^2), so that a moving body's accelerations tilt the estimate little (on the
+// fast BROAD trial 0.05 gave 16 deg of tilt error, 0.5 gave 2.6 deg; doc/manifolds.md). Q: the
+// orientation 1e-6 T rad^2 (a gyro noise of 0.005 rad/s over one sample per period), the bias
+// 1e-10 T (rad/s)^2. P0: 1 rad^2 about each world axis (roll and pitch settle on the first
+// readings; the heading, about the world's z, is not observed and stays where it starts: the
+// orientation error is about the world's axes, so its variance never leaks into roll and
+// pitch), (0.003 rad/s)^2 on the bias (a MEMS gyro's turn-on bias).
 // METHOD is the EKF unless the including file defines another one first.
 #include <sensor_msgs/Imu.h>
 #include <sf_filter/config/diagonal.hpp>
@@ -40,12 +44,12 @@
   (quat_rotate_inverse(x, 0, 0, 0.0, 0.0, IMU_ATTITUDE_GRAVITY)) \
   (quat_rotate_inverse(x, 0, 1, 0.0, 0.0, IMU_ATTITUDE_GRAVITY)) \
   (quat_rotate_inverse(x, 0, 2, 0.0, 0.0, IMU_ATTITUDE_GRAVITY))
-// Over the tangent space: 3 rows for q (rad^2), 3 for b_g.
+// Over the tangent space: 3 rows for q (rotations about the world's x, y, z; rad^2), 3 for b_g.
 #define PROCESS_NOISE_COVARIANCE \
-  SF_DIAGONAL((1e-4 * T)(1e-4 * T)(1e-4 * T)(1e-8 * T)(1e-8 * T)(1e-8 * T))
-#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((0.05)(0.05)(0.05))
+  SF_DIAGONAL((1e-6 * T)(1e-6 * T)(1e-6 * T)(1e-10 * T)(1e-10 * T)(1e-10 * T))
+#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((0.5)(0.5)(0.5))
 #define INITIAL_STATE (1)(0)(0)(0)(0)(0)(0)
-#define INITIAL_ERROR_COVARIANCE SF_DIAGONAL((1)(1)(1)(1e-4)(1e-4)(1e-4))
+#define INITIAL_ERROR_COVARIANCE SF_DIAGONAL((1)(1)(1)(1e-5)(1e-5)(1e-5))
 #define TOPICS_IN_CTRL \
   ((imu/data)(sensor_msgs::Imu)(angular_velocity.x)) \
   ((imu/data)(sensor_msgs::Imu)(angular_velocity.y)) \

@@ -13,6 +13,7 @@
 #include "sf_estimation/layout_extended_kalman_filter.hpp"
 #include "sf_estimation/layout_unscented_kalman_filter.hpp"
 #include "sf_estimation/manifold/layout_embedding.hpp"
+#include "sf_estimation/manifold/so3_world_block.hpp"
 
 namespace {
 
@@ -65,7 +66,8 @@ struct Attitude {
                                 mf::Vector3<S>(S(0.0), S(0.0), S(kGravity)));
   }
 };
-using AttitudeLayout = mf::StateLayout<mf::So3Block, mf::VectorBlock<3>>;
+// The chart of the node's QUATERNION_STATES (quaternions.hpp).
+using AttitudeLayout = mf::StateLayout<mf::So3WorldBlock, mf::VectorBlock<3>>;
 
 TEST(LayoutEmbedding, TangentRowsSitOnTheBlocksLastEntries) {
   using Layout = mf::StateLayout<mf::VectorBlock<2>, mf::So3Block, mf::So2Block>;
@@ -77,6 +79,23 @@ TEST(LayoutEmbedding, TangentRowsSitOnTheBlocksLastEntries) {
   EXPECT_EQ(stored.row(2).cwiseAbs().sum() + stored.col(2).cwiseAbs().sum(), 0.0);
   EXPECT_EQ(stored(3, 6), P(2, 5));
   EXPECT_EQ(E::toTangent(stored), P);
+}
+
+TEST(So3WorldBlock, PerturbsAboutTheWorldAxesAndMinusInvertsPlus) {
+  using Layout = mf::StateLayout<mf::So3WorldBlock>;
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
+  Vector<4> x;
+  mf::storeQuaternion(q, x);
+  const Vector<3> phi(0.2, -0.1, 0.3);
+  const Vector<4> moved = Layout::plus<double>(x, phi);
+  // exp(phi) q, by Eigen's angle-axis: the rotation phi applied after q, about world axes.
+  const Eigen::Quaterniond expected = Eigen::Quaterniond(Eigen::AngleAxisd(phi.norm(), phi.normalized())) * q;
+  EXPECT_LT(mf::so3Log<double>(mf::storedQuaternion(moved) * expected.conjugate()).norm(), 1e-14);
+  EXPECT_LT((Layout::minus<double>(moved, x) - phi).norm(), 1e-14);
+  // A rotation about the world's z leaves the body's view of the world's z unchanged.
+  const Vector<4> turned = Layout::plus<double>(x, Vector<3>(0.0, 0.0, 0.5));
+  const Eigen::Vector3d up = mf::so3RotateInverse<double>(q, Eigen::Vector3d::UnitZ());
+  EXPECT_LT((mf::so3RotateInverse<double>(mf::storedQuaternion(turned), Eigen::Vector3d::UnitZ()) - up).norm(), 1e-14);
 }
 
 TEST(LayoutFilters, FlatLayoutGivesTheFlatEkfWithMissingEntriesAndAngles) {

@@ -8,7 +8,8 @@
 //
 //   constexpr bool kHasQuaternionStates;  constexpr int kTangentSize;
 //   using StateLayout = estimation::manifold::StateLayout<...>  (with QUATERNION_STATES: an
-//     So3Block per quaternion, an So2Block per ANGLE_STATES entry, VectorBlock<1> otherwise)
+//     So3WorldBlock per quaternion (the error about the world's axes), an So2Block per
+//     ANGLE_STATES entry, VectorBlock<1> otherwise)
 //   storedCovariance(tangent): a d x d covariance in the node's n x n form (LayoutEmbedding)
 //
 // EXTENDED_KALMAN_FILTER and UNSCENTED_KALMAN_FILTER then run on the layout (their traits
@@ -73,6 +74,7 @@ static_assert(false, "QUATERNION_STATES: expected a sequence of state indices, e
 
 #if SF_CFG_HAS_QUATERNION_STATES
 #include <sf_estimation/manifold/layout_embedding.hpp>
+#include <sf_estimation/manifold/so3_world_block.hpp>
 
 namespace sf_config {
 namespace quaternions_detail {
@@ -115,7 +117,7 @@ template <int At, class... Blocks>
 struct LayoutFrom<false, At, Blocks...> {
   // A quaternion past the end is reported by its entry's check; here it is left flat.
   using Block = std::conditional_t<
-      startsQuaternion(At) && At + 4 <= kStateSize, mf::So3Block,
+      startsQuaternion(At) && At + 4 <= kStateSize, mf::So3WorldBlock,
       std::conditional_t<kAngleStates[static_cast<std::size_t>(At)], mf::So2Block,
                          mf::VectorBlock<1>>>;
   static constexpr int kNext = At + Block::StoredSize;
