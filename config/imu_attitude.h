@@ -22,7 +22,7 @@
 // 1e-10 T (rad/s)^2. P0: 1 rad^2 about each world axis (roll and pitch settle on the first
 // readings; the heading, about the world's z, is not observed and stays where it starts: the
 // orientation error is about the world's axes, so its variance never leaks into roll and
-// pitch), (0.003 rad/s)^2 on the bias (a MEMS gyro's turn-on bias).
+// pitch), 1e-5 (rad/s)^2 on the bias (about a MEMS gyro's turn-on bias of 0.003 rad/s).
 // METHOD is the EKF unless the including file defines another one first.
 #include <sensor_msgs/Imu.h>
 #include <sf_filter/config/diagonal.hpp>
