@@ -89,13 +89,17 @@ TEST(So3WorldBlock, PerturbsAboutTheWorldAxesAndMinusInvertsPlus) {
   const Vector<3> phi(0.2, -0.1, 0.3);
   const Vector<4> moved = Layout::plus<double>(x, phi);
   // exp(phi) q, by Eigen's angle-axis: the rotation phi applied after q, about world axes.
-  const Eigen::Quaterniond expected = Eigen::Quaterniond(Eigen::AngleAxisd(phi.norm(), phi.normalized())) * q;
+  const Eigen::Quaterniond expected =
+      Eigen::Quaterniond(Eigen::AngleAxisd(phi.norm(), phi.normalized())) * q;
   EXPECT_LT(mf::so3Log<double>(mf::storedQuaternion(moved) * expected.conjugate()).norm(), 1e-14);
   EXPECT_LT((Layout::minus<double>(moved, x) - phi).norm(), 1e-14);
   // A rotation about the world's z leaves the body's view of the world's z unchanged.
   const Vector<4> turned = Layout::plus<double>(x, Vector<3>(0.0, 0.0, 0.5));
   const Eigen::Vector3d up = mf::so3RotateInverse<double>(q, Eigen::Vector3d::UnitZ());
-  EXPECT_LT((mf::so3RotateInverse<double>(mf::storedQuaternion(turned), Eigen::Vector3d::UnitZ()) - up).norm(), 1e-14);
+  EXPECT_LT(
+      (mf::so3RotateInverse<double>(mf::storedQuaternion(turned), Eigen::Vector3d::UnitZ()) - up)
+          .norm(),
+      1e-14);
 }
 
 TEST(LayoutFilters, FlatLayoutGivesTheFlatEkfWithMissingEntriesAndAngles) {
@@ -146,23 +150,24 @@ double attitudeTiltError(Filter& filter, Vector<7>& last) {
   return worst;
 }
 
-template <class Filter>
-void expectFollowsTheAttitude(const estimation::ManifoldUnscentedParameters* ut) {
+/// Q and P0 in the stored form (the quaternion's w row zero), R, x0 at the identity.
+struct AttitudeNoise {
   Matrix<7, 7> Q = Matrix<7, 7>::Zero(), P0 = Matrix<7, 7>::Zero();
-  Q.diagonal() << 0, 1e-6, 1e-6, 1e-6, 1e-10, 1e-10, 1e-10;
-  P0.diagonal() << 0, 1, 1, 1, 1e-3, 1e-3, 1e-3;
-  const Matrix<3, 3> R = Matrix<3, 3>::Identity() * 1e-4;
+  Matrix<3, 3> R = Matrix<3, 3>::Identity() * 1e-4;
   Vector<7> x0 = Vector<7>::Zero();
-  x0(0) = 1.0;
-  Vector<7> last;
-  double worst = 0.0;
-  if constexpr (std::is_same_v<Filter, estimation::LayoutUnscentedKalmanFilter<Attitude, AttitudeLayout>>) {
-    Filter filter(Attitude(), Q, R, x0, P0, *ut);
-    worst = attitudeTiltError(filter, last);
-  } else {
-    Filter filter(Attitude(), Q, R, x0, P0);
-    worst = attitudeTiltError(filter, last);
+  AttitudeNoise() {
+    Q.diagonal() << 0, 1e-6, 1e-6, 1e-6, 1e-10, 1e-10, 1e-10;
+    P0.diagonal() << 0, 1, 1, 1, 1e-3, 1e-3, 1e-3;
+    x0(0) = 1.0;
   }
+};
+
+template <class Filter, class... Own>
+void expectFollowsTheAttitude(const Own&... own) {
+  const AttitudeNoise a;
+  Filter filter(Attitude(), a.Q, a.R, a.x0, a.P0, own...);
+  Vector<7> last;
+  const double worst = attitudeTiltError(filter, last);
   // Noise-free readings: the tilt is pinned far below the 0.01 rad of R's standard deviation.
   EXPECT_LT(worst, 1e-3);
   // Roll and pitch observe the bias's horizontal part after 20 s of turning.
@@ -171,21 +176,19 @@ void expectFollowsTheAttitude(const estimation::ManifoldUnscentedParameters* ut)
 }
 
 TEST(LayoutFilters, EkfFollowsARotatingBodyFromGyroAndAccelerometer) {
-  expectFollowsTheAttitude<estimation::LayoutExtendedKalmanFilter<Attitude, AttitudeLayout>>(nullptr);
+  expectFollowsTheAttitude<estimation::LayoutExtendedKalmanFilter<Attitude, AttitudeLayout>>();
 }
 
 TEST(LayoutFilters, UkfFollowsARotatingBodyFromGyroAndAccelerometer) {
-  const estimation::ManifoldUnscentedParameters ut;
-  expectFollowsTheAttitude<estimation::LayoutUnscentedKalmanFilter<Attitude, AttitudeLayout>>(&ut);
+  expectFollowsTheAttitude<estimation::LayoutUnscentedKalmanFilter<Attitude, AttitudeLayout>>(
+      estimation::ManifoldUnscentedParameters());
 }
 
 TEST(LayoutFilters, RefusalsKeepTheBelief) {
-  Matrix<7, 7> Q = Matrix<7, 7>::Zero(), P0 = Matrix<7, 7>::Zero();
-  Q.diagonal() << 0, 1e-6, 1e-6, 1e-6, 1e-10, 1e-10, 1e-10;
-  P0.diagonal() << 0, 1, 1, 1, 1e-3, 1e-3, 1e-3;
-  const Matrix<3, 3> R = Matrix<3, 3>::Identity() * 1e-4;
-  Vector<7> x0 = Vector<7>::Zero();
-  x0(0) = 1.0;
+  const AttitudeNoise a;
+  const Matrix<7, 7>&Q = a.Q, &P0 = a.P0;
+  const Matrix<3, 3>& R = a.R;
+  const Vector<7>& x0 = a.x0;
   using Ekf = estimation::LayoutExtendedKalmanFilter<Attitude, AttitudeLayout>;
   Matrix<7, 7> wRow = Q;
   wRow(0, 0) = 1e-6;  // a variance on the quaternion's w: not a tangent row

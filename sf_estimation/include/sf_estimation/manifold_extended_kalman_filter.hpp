@@ -103,12 +103,13 @@ class ManifoldExtendedKalmanFilter : public manifold::ManifoldFilterBase<Model> 
 
   /// H of `model` at the state x and h(x) (the node's filter on a layout takes it at the
   /// predicted state, layout_extended_kalman_filter.hpp).
-  static void observationJacobianAt(const Model& model, const State& at,
-                                    MeasurementValue& expected, Matrix<M, D>& H) {
+  static void observationJacobianAt(const Model& model, const State& at, MeasurementValue& expected,
+                                    Matrix<M, D>& H) {
     using Ad = Eigen::AutoDiffScalar<Vector<D>>;
     typename Space::template Tangent<Ad> e;
     for (Index i = 0; i < D; ++i) e(i) = Ad(0.0, D, i);
-    const typename Space::template Stored<Ad> x = Space::template plus<Ad>(at.template cast<Ad>(), e);
+    const typename Space::template Stored<Ad> x =
+        Space::template plus<Ad>(at.template cast<Ad>(), e);
     typename MSpace::template Stored<Ad> out;
     model.observation(x, out);
     for (Index i = 0; i < Z; ++i) expected(i) = out(i).value();

@@ -75,7 +75,8 @@ class FlatInterface : public ManifoldFilter {
         P0_(this->P_),
         u_(Vector<ControlSize>::Zero()),
         angleMeasurements_(angles.measurements, MeasurementSize, this->method_, "measurement") {
-    if (!x0_.allFinite()) throw ParameterError(this->method_ + ": x0 has a quaternion of zero norm");
+    if (!x0_.allFinite())
+      throw ParameterError(this->method_ + ": x0 has a quaternion of zero norm");
   }
 
   /// The tangent rows of a stored-form matrix; ParameterError if it has others.

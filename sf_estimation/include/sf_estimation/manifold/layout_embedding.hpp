@@ -23,7 +23,8 @@ struct LayoutEmbedding {
     std::array<int, D> stored{};
     int at = 0, tangentAt = 0;
     visitSizes([&](int storedSize, int tangentSize) {
-      for (int k = 0; k < tangentSize; ++k) stored[tangentAt + k] = at + storedSize - tangentSize + k;
+      for (int k = 0; k < tangentSize; ++k)
+        stored[tangentAt + k] = at + storedSize - tangentSize + k;
       at += storedSize;
       tangentAt += tangentSize;
     });

@@ -116,10 +116,9 @@ struct LayoutFrom {
 template <int At, class... Blocks>
 struct LayoutFrom<false, At, Blocks...> {
   // A quaternion past the end is reported by its entry's check; here it is left flat.
-  using Block = std::conditional_t<
-      startsQuaternion(At) && At + 4 <= kStateSize, mf::So3WorldBlock,
-      std::conditional_t<kAngleStates[static_cast<std::size_t>(At)], mf::So2Block,
-                         mf::VectorBlock<1>>>;
+  using Block = std::conditional_t<startsQuaternion(At) && At + 4 <= kStateSize, mf::So3WorldBlock,
+                                   std::conditional_t<kAngleStates[static_cast<std::size_t>(At)],
+                                                      mf::So2Block, mf::VectorBlock<1>>>;
   static constexpr int kNext = At + Block::StoredSize;
   using type = typename LayoutFrom<(kNext >= kStateSize), kNext, Blocks..., Block>::type;
 };

@@ -58,8 +58,8 @@ S quat_rotate_inverse(const Eigen::Matrix<S, N, 1>& x, int q, int k, const A& vx
 }
 
 template <class S, int N, class W, class A, class B, class C>
-S quat_product(const Eigen::Matrix<S, N, 1>& x, int q, int k, const W& pw, const A& px,
-               const B& py, const C& pz) {
+S quat_product(const Eigen::Matrix<S, N, 1>& x, int q, int k, const W& pw, const A& px, const B& py,
+               const C& pz) {
   namespace rd = rotation_detail;
   const rd::mf::Quaternion<S> p{S(pw), S(px), S(py), S(pz)};
   return rd::quaternionComponent(rd::mf::so3Product<S>(rd::quaternionAt(x, q), p), k);
