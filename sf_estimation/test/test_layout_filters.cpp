@@ -56,8 +56,8 @@ struct Attitude {
   void transition(const Eigen::Matrix<S, 7, 1>& x, const Vector<3>& u,
                   Eigen::Matrix<S, 7, 1>& next) const {
     const mf::Vector3<S> rate = u.cast<S>() - x.template tail<3>();
-    mf::storeQuaternion(mf::so3Plus<S>(mf::storedQuaternion(x.template head<4>()), rate * S(T)),
-                        next.template head<4>());
+    auto q = next.template head<4>();
+    mf::storeQuaternion(mf::so3Plus<S>(mf::storedQuaternion(x.template head<4>()), rate * S(T)), q);
     next.template tail<3>() = x.template tail<3>();
   }
   template <class S>
