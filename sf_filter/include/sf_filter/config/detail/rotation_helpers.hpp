@@ -31,9 +31,15 @@ mf::Quaternion<S> quaternionAt(const Eigen::Matrix<S, N, 1>& x, int q) {
   return mf::storedQuaternion(x.template segment<4>(q));
 }
 
-template <class S, class A, class B, class C>
-mf::Vector3<S> vector3(const A& a, const B& b, const C& c) {
-  return mf::Vector3<S>(S(a), S(b), S(c));
+/// An argument converted to the state's scalar where the helper is called (a non-deduced
+/// context): each helper is then instantiated once per scalar, not once per combination of
+/// argument expression types, which AutoDiff makes many (compile time and memory).
+template <class S>
+using Arg = typename Eigen::internal::remove_all<S>::type;
+
+template <class S>
+mf::Vector3<S> vector3(const Arg<S>& a, const Arg<S>& b, const Arg<S>& c) {
+  return mf::Vector3<S>(a, b, c);
 }
 
 template <class S>
@@ -43,39 +49,42 @@ S quaternionComponent(const mf::Quaternion<S>& q, int k) {
 
 }  // namespace rotation_detail
 
-template <class S, int N, class A, class B, class C>
-S quat_rotate(const Eigen::Matrix<S, N, 1>& x, int q, int k, const A& vx, const B& vy,
-              const C& vz) {
+template <class S, int N>
+S quat_rotate(const Eigen::Matrix<S, N, 1>& x, int q, int k, const rotation_detail::Arg<S>& vx,
+              const rotation_detail::Arg<S>& vy, const rotation_detail::Arg<S>& vz) {
   namespace rd = rotation_detail;
   return rd::mf::so3Rotate<S>(rd::quaternionAt(x, q), rd::vector3<S>(vx, vy, vz))(k);
 }
 
-template <class S, int N, class A, class B, class C>
-S quat_rotate_inverse(const Eigen::Matrix<S, N, 1>& x, int q, int k, const A& vx, const B& vy,
-                      const C& vz) {
+template <class S, int N>
+S quat_rotate_inverse(const Eigen::Matrix<S, N, 1>& x, int q, int k,
+                      const rotation_detail::Arg<S>& vx, const rotation_detail::Arg<S>& vy,
+                      const rotation_detail::Arg<S>& vz) {
   namespace rd = rotation_detail;
   return rd::mf::so3RotateInverse<S>(rd::quaternionAt(x, q), rd::vector3<S>(vx, vy, vz))(k);
 }
 
-template <class S, int N, class W, class A, class B, class C>
-S quat_product(const Eigen::Matrix<S, N, 1>& x, int q, int k, const W& pw, const A& px, const B& py,
-               const C& pz) {
+template <class S, int N>
+S quat_product(const Eigen::Matrix<S, N, 1>& x, int q, int k, const rotation_detail::Arg<S>& pw,
+               const rotation_detail::Arg<S>& px, const rotation_detail::Arg<S>& py,
+               const rotation_detail::Arg<S>& pz) {
   namespace rd = rotation_detail;
-  const rd::mf::Quaternion<S> p{S(pw), S(px), S(py), S(pz)};
+  const rd::mf::Quaternion<S> p{pw, px, py, pz};
   return rd::quaternionComponent(rd::mf::so3Product<S>(rd::quaternionAt(x, q), p), k);
 }
 
 /// `x` only fixes the scalar (the state's, so that AutoDiff reaches it).
-template <class S, int N, class A, class B, class C>
-S quat_exp(const Eigen::Matrix<S, N, 1>& x, int k, const A& rx, const B& ry, const C& rz) {
+template <class S, int N>
+S quat_exp(const Eigen::Matrix<S, N, 1>& x, int k, const rotation_detail::Arg<S>& rx,
+           const rotation_detail::Arg<S>& ry, const rotation_detail::Arg<S>& rz) {
   static_cast<void>(x);
   namespace rd = rotation_detail;
   return rd::quaternionComponent(rd::mf::so3Exp<S>(rd::vector3<S>(rx, ry, rz)), k);
 }
 
-template <class S, int N, class A, class B, class C>
-S quat_integrate(const Eigen::Matrix<S, N, 1>& x, int q, int k, const A& rx, const B& ry,
-                 const C& rz) {
+template <class S, int N>
+S quat_integrate(const Eigen::Matrix<S, N, 1>& x, int q, int k, const rotation_detail::Arg<S>& rx,
+                 const rotation_detail::Arg<S>& ry, const rotation_detail::Arg<S>& rz) {
   namespace rd = rotation_detail;
   return rd::quaternionComponent(
       rd::mf::so3Plus<S>(rd::quaternionAt(x, q), rd::vector3<S>(rx, ry, rz)), k);
