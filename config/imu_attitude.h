@@ -23,8 +23,17 @@
 // readings; the heading, about the world's z, is not observed and stays where it starts: the
 // orientation error is about the world's axes, so its variance never leaks into roll and
 // pitch), 1e-5 (rad/s)^2 on the bias (about a MEMS gyro's turn-on bias of 0.003 rad/s).
+// Optional magnetometer (sensor_msgs/MagneticField on /imu/mag, in tesla): define
+// IMU_ATTITUDE_MAGNETOMETER before including this header. The state then gains the Earth's
+// field in the world frame, its horizontal (north, along the world's y) and vertical (up)
+// components m_n, m_u [uT] (x[7], x[8], starting at 20 and -40 uT, P0 (20 uT)^2, drifting by
+// 0.01 uT/sqrt(s)), and inputs 3..5 read magnetic_field x, y, z = R(q)^T (0, m_n, m_u) 1e-6
+// (R (1 uT)^2): the heading is then observed, about magnetic north, and the world's y axis
+// points there. Without tilt compensation of its own: the whole vector is compared, so roll
+// and pitch need no level sensor. Hard- and soft-iron calibration are the driver's.
 // METHOD is the EKF unless the including file defines another one first.
 #include <sensor_msgs/Imu.h>
+#include <sensor_msgs/MagneticField.h>
 #include <sf_filter/config/diagonal.hpp>
 
 #ifndef METHOD
@@ -34,27 +43,23 @@
 #define IMU_ATTITUDE_GRAVITY 9.80665
 #define QUATERNION_STATES (0)
 // q turned by the bias-corrected gyro rate over the period; the bias constant.
-#define STATE_TRANSITION_MODEL \
-  (quat_integrate(x, 0, 0, (u[0] - x[4]) * T, (u[1] - x[5]) * T, (u[2] - x[6]) * T)) \
-  (quat_integrate(x, 0, 1, (u[0] - x[4]) * T, (u[1] - x[5]) * T, (u[2] - x[6]) * T)) \
-  (quat_integrate(x, 0, 2, (u[0] - x[4]) * T, (u[1] - x[5]) * T, (u[2] - x[6]) * T)) \
-  (quat_integrate(x, 0, 3, (u[0] - x[4]) * T, (u[1] - x[5]) * T, (u[2] - x[6]) * T)) \
+#define IMU_ATTITUDE_TURN(k) \
+  quat_integrate(x, 0, k, (u[0] - x[4]) * T, (u[1] - x[5]) * T, (u[2] - x[6]) * T)
+#define IMU_ATTITUDE_TRANSITION \
+  (IMU_ATTITUDE_TURN(0))(IMU_ATTITUDE_TURN(1))(IMU_ATTITUDE_TURN(2))(IMU_ATTITUDE_TURN(3)) \
   (x[4])(x[5])(x[6])
-#define OBSERVATION_MODEL \
+#define IMU_ATTITUDE_OBSERVATION \
   (quat_rotate_inverse(x, 0, 0, 0.0, 0.0, IMU_ATTITUDE_GRAVITY)) \
   (quat_rotate_inverse(x, 0, 1, 0.0, 0.0, IMU_ATTITUDE_GRAVITY)) \
   (quat_rotate_inverse(x, 0, 2, 0.0, 0.0, IMU_ATTITUDE_GRAVITY))
 // Over the tangent space: 3 rows for q (rotations about the world's x, y, z; rad^2), 3 for b_g.
-#define PROCESS_NOISE_COVARIANCE \
-  SF_DIAGONAL((1e-6 * T)(1e-6 * T)(1e-6 * T)(1e-10 * T)(1e-10 * T)(1e-10 * T))
-#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((0.5)(0.5)(0.5))
-#define INITIAL_STATE (1)(0)(0)(0)(0)(0)(0)
-#define INITIAL_ERROR_COVARIANCE SF_DIAGONAL((1)(1)(1)(1e-5)(1e-5)(1e-5))
+#define IMU_ATTITUDE_Q (1e-6 * T)(1e-6 * T)(1e-6 * T)(1e-10 * T)(1e-10 * T)(1e-10 * T)
+#define IMU_ATTITUDE_P0 (1)(1)(1)(1e-5)(1e-5)(1e-5)
 #define TOPICS_IN_CTRL \
   ((imu/data)(sensor_msgs::Imu)(angular_velocity.x)) \
   ((imu/data)(sensor_msgs::Imu)(angular_velocity.y)) \
   ((imu/data)(sensor_msgs::Imu)(angular_velocity.z))
-#define TOPICS_IN \
+#define IMU_ATTITUDE_INPUTS \
   ((imu/data)(sensor_msgs::Imu)(linear_acceleration.x)) \
   ((imu/data)(sensor_msgs::Imu)(linear_acceleration.y)) \
   ((imu/data)(sensor_msgs::Imu)(linear_acceleration.z))
@@ -62,4 +67,29 @@
   ((fused/orientation/w)(0))((fused/orientation/x)(1))((fused/orientation/y)(2)) \
   ((fused/orientation/z)(3)) \
   ((fused/gyro_bias/x)(4))((fused/gyro_bias/y)(5))((fused/gyro_bias/z)(6))
+
+#if defined(IMU_ATTITUDE_MAGNETOMETER)
+#define IMU_ATTITUDE_FIELD(k) quat_rotate_inverse(x, 0, k, 0.0, x[7] * 1e-6, x[8] * 1e-6)
+#define STATE_TRANSITION_MODEL IMU_ATTITUDE_TRANSITION(x[7])(x[8])
+#define OBSERVATION_MODEL \
+  IMU_ATTITUDE_OBSERVATION(IMU_ATTITUDE_FIELD(0))(IMU_ATTITUDE_FIELD(1))(IMU_ATTITUDE_FIELD(2))
+#define PROCESS_NOISE_COVARIANCE SF_DIAGONAL(IMU_ATTITUDE_Q(1e-4 * T)(1e-4 * T))
+#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((0.5)(0.5)(0.5)(1e-12)(1e-12)(1e-12))
+#define INITIAL_STATE (1)(0)(0)(0)(0)(0)(0)(20)(-40)
+#define INITIAL_ERROR_COVARIANCE SF_DIAGONAL(IMU_ATTITUDE_P0(400)(400))
+#define TOPICS_IN \
+  IMU_ATTITUDE_INPUTS \
+  ((imu/mag)(sensor_msgs::MagneticField)(magnetic_field.x)) \
+  ((imu/mag)(sensor_msgs::MagneticField)(magnetic_field.y)) \
+  ((imu/mag)(sensor_msgs::MagneticField)(magnetic_field.z))
+#define INPUT_TIMEOUT ((0)(500))((1)(500))((2)(500))((3)(500))((4)(500))((5)(500))
+#else
+#define STATE_TRANSITION_MODEL IMU_ATTITUDE_TRANSITION
+#define OBSERVATION_MODEL IMU_ATTITUDE_OBSERVATION
+#define PROCESS_NOISE_COVARIANCE SF_DIAGONAL(IMU_ATTITUDE_Q)
+#define MEASUREMENT_NOISE_COVARIANCE SF_DIAGONAL((0.5)(0.5)(0.5))
+#define INITIAL_STATE (1)(0)(0)(0)(0)(0)(0)
+#define INITIAL_ERROR_COVARIANCE SF_DIAGONAL(IMU_ATTITUDE_P0)
+#define TOPICS_IN IMU_ATTITUDE_INPUTS
 #define INPUT_TIMEOUT ((0)(500))((1)(500))((2)(500))
+#endif
