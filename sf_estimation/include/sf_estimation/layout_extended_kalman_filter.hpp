@@ -8,6 +8,7 @@
 // present entries of z - h(x) (angles wrapped), then x <- x [+] K nu.
 #pragma once
 
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include "sf_estimation/kalman_correction.hpp"
