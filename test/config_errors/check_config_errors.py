@@ -15,7 +15,7 @@ header whose first lines say what compiling it must give:
 
 Each header is compiled like the node's generated translation unit:
 
-  g++ -std=c++17 -fsyntax-only -Wall -Wextra -I<sf_filter/include> -isystem <eigen> -I<this dir>
+  g++ -std=c++17 -fsyntax-only -Wall -Wextra -I<sf_filter/include> -I<sf_estimation/include> -isystem <eigen> -I<this dir>
       -include config_prelude.hpp -include <header> config_tu.cpp
 
 config_prelude.hpp (the standard, Eigen and Boost.Preprocessor headers, which no
@@ -42,6 +42,8 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 INCLUDE = os.path.join(REPO, "sf_filter", "include")
+# The estimation library: QUATERNION_STATES's layout and rotation helpers come from it.
+ESTIMATION_INCLUDE = os.path.join(REPO, "sf_estimation", "include")
 TU = os.path.join(HERE, "config_tu.cpp")
 STOP_MARKER = "SF_CONFIGURATION_ERROR__"
 PASS, FAIL, SKIP = "pass", "fail", "skip"
@@ -94,7 +96,7 @@ def compile_header(cxx, eigen, header, prelude=PRELUDE):
     # -Winvalid-pch: a precompiled prelude the compiler cannot use is a warning, which fails
     # the cases expected to compile cleanly, instead of a silent slowdown.
     cmd = ([cxx, "-fsyntax-only", "-Winvalid-pch"] + FLAGS +
-           ["-I" + INCLUDE, "-isystem", eigen, "-I" + HERE,
+           ["-I" + INCLUDE, "-I" + ESTIMATION_INCLUDE, "-isystem", eigen, "-I" + HERE,
             "-include", prelude, "-include", header, TU])
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           universal_newlines=True, env=ENV)

@@ -98,13 +98,20 @@ class ManifoldExtendedKalmanFilter : public manifold::ManifoldFilterBase<Model> 
 
   /// H at the current state and h(x).
   void observationJacobian(MeasurementValue& expected, Matrix<M, D>& H) const {
+    observationJacobianAt(this->model_, this->x_, expected, H);
+  }
+
+  /// H of `model` at the state x and h(x) (the node's filter on a layout takes it at the
+  /// predicted state, layout_extended_kalman_filter.hpp).
+  static void observationJacobianAt(const Model& model, const State& at, MeasurementValue& expected,
+                                    Matrix<M, D>& H) {
     using Ad = Eigen::AutoDiffScalar<Vector<D>>;
     typename Space::template Tangent<Ad> e;
     for (Index i = 0; i < D; ++i) e(i) = Ad(0.0, D, i);
     const typename Space::template Stored<Ad> x =
-        Space::template plus<Ad>(this->x_.template cast<Ad>(), e);
+        Space::template plus<Ad>(at.template cast<Ad>(), e);
     typename MSpace::template Stored<Ad> out;
-    this->model_.observation(x, out);
+    model.observation(x, out);
     for (Index i = 0; i < Z; ++i) expected(i) = out(i).value();
     const typename MSpace::template Tangent<Ad> deviation =
         MSpace::template minus<Ad>(out, expected.template cast<Ad>());

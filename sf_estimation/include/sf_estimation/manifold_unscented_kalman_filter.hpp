@@ -159,7 +159,7 @@ class ManifoldUnscentedKalmanFilter : public manifold::ManifoldFilterBase<Model>
     this->commit(x, P);
   }
 
- private:
+ protected:
   /// The 2 D tangent sigma points +-spread * S_j, S S^T = P (P may be singular: a state known
   /// exactly). Throws NumericalError for an indefinite P.
   void sigmaPoints(const Covariance& P, const manifold::SigmaWeights& w, Matrix<D, 2 * D>& xis) {

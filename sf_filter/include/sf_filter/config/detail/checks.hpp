@@ -19,6 +19,12 @@
   "must be m x n, one row per TOPICS_IN entry; " SF_CFG_M_WHY "; " SF_CFG_N_WHY
 #define SF_CFG_NXL_WHY \
   "must be n x l, one column per TOPICS_IN_CTRL entry; " SF_CFG_N_WHY "; " SF_CFG_L_WHY
+// Q and P0: over the tangent space with QUATERNION_STATES, n x n otherwise.
+#if SF_CFG_HAS_QUATERNION_STATES
+#define SF_CFG_COVARIANCE_WHY "must be d x d, over the tangent space; " SF_CFG_D_WHY
+#else
+#define SF_CFG_COVARIANCE_WHY SF_CFG_NXN_WHY
+#endif
 
 namespace sf_config {
 namespace checks {
@@ -37,7 +43,7 @@ SF_PP_CHECK_VECTOR("OBSERVATION_MODEL", SF_CFG_M,
 
 // --- covariances and initial values -----------------------------------------------------------
 #if !SF_CFG_IS_AVERAGING
-SF_PP_CHECK_MATRIX("PROCESS_NOISE_COVARIANCE", SF_CFG_N, SF_CFG_N, SF_CFG_NXN_WHY,
+SF_PP_CHECK_MATRIX("PROCESS_NOISE_COVARIANCE", SF_CFG_D, SF_CFG_D, SF_CFG_COVARIANCE_WHY,
                    PROCESS_NOISE_COVARIANCE)
 #endif
 #if defined(MEASUREMENT_NOISE_COVARIANCE) &&                                                       \
@@ -50,7 +56,7 @@ SF_PP_CHECK_VECTOR("INITIAL_STATE", SF_CFG_N, "one value per state variable; " S
                    "(0)(0)", INITIAL_STATE)
 #endif
 #if defined(INITIAL_ERROR_COVARIANCE) && !SF_CFG_IS_AVERAGING
-SF_PP_CHECK_MATRIX("INITIAL_ERROR_COVARIANCE", SF_CFG_N, SF_CFG_N, SF_CFG_NXN_WHY,
+SF_PP_CHECK_MATRIX("INITIAL_ERROR_COVARIANCE", SF_CFG_D, SF_CFG_D, SF_CFG_COVARIANCE_WHY,
                    INITIAL_ERROR_COVARIANCE)
 #endif
 

@@ -7,6 +7,7 @@
 
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
+#include "sf_filter/config/detail/quaternions.hpp"
 
 namespace sf_config {
 
@@ -36,6 +37,11 @@ struct Parameters {
   Eigen::VectorXd weighting_coefficients;  ///< WEIGHTING_COEFFICIENTS (default empty)
 };
 
+#if SF_CFG_HAS_QUATERNION_STATES
+/// Q and P0 of a header with QUATERNION_STATES: d x d, over the tangent space.
+using TangentMatrix = Eigen::Matrix<double, kTangentSize, kTangentSize>;
+#endif
+
 /// The parameters of the configuration header. Matrix and vector entries may use T, which is
 /// estimation_period_ms / 1000 (seconds), so pass the period actually used by the node.
 inline Parameters defaultParameters(double estimation_period_ms = kEstimationPeriodMs) {
@@ -46,7 +52,11 @@ inline Parameters defaultParameters(double estimation_period_ms = kEstimationPer
   parameters.estimation_period_ms = estimation_period_ms;
 
   parameters.process_noise_covariance.setZero();
-#if SF_CFG_HAS_PROCESS_NOISE_COVARIANCE && !SF_CFG_IS_AVERAGING
+#if SF_CFG_HAS_PROCESS_NOISE_COVARIANCE && !SF_CFG_IS_AVERAGING && SF_CFG_HAS_QUATERNION_STATES
+  TangentMatrix tangent_q = TangentMatrix::Zero();
+  SF_PP_ASSIGN_MATRIX(tangent_q, PROCESS_NOISE_COVARIANCE)
+  parameters.process_noise_covariance = storedCovariance(tangent_q);
+#elif SF_CFG_HAS_PROCESS_NOISE_COVARIANCE && !SF_CFG_IS_AVERAGING
   SF_PP_ASSIGN_MATRIX(parameters.process_noise_covariance, PROCESS_NOISE_COVARIANCE)
 #endif
 
@@ -59,10 +69,18 @@ inline Parameters defaultParameters(double estimation_period_ms = kEstimationPer
   parameters.initial_state.setZero();
 #if SF_CFG_HAS_INITIAL_STATE && !SF_CFG_IS_AVERAGING
   SF_PP_ASSIGN_VECTOR(parameters.initial_state, INITIAL_STATE)
+#elif SF_CFG_HAS_QUATERNION_STATES
+  for (const int q : quaternions_detail::kStarts) parameters.initial_state(q) = 1.0;  // identity
 #endif
 
   parameters.initial_error_covariance.setIdentity();
-#if SF_CFG_HAS_INITIAL_ERROR_COVARIANCE && !SF_CFG_IS_AVERAGING
+#if SF_CFG_HAS_INITIAL_ERROR_COVARIANCE && !SF_CFG_IS_AVERAGING && SF_CFG_HAS_QUATERNION_STATES
+  TangentMatrix tangent_p0 = TangentMatrix::Zero();
+  SF_PP_ASSIGN_MATRIX(tangent_p0, INITIAL_ERROR_COVARIANCE)
+  parameters.initial_error_covariance = storedCovariance(tangent_p0);
+#elif SF_CFG_HAS_QUATERNION_STATES
+  parameters.initial_error_covariance = storedCovariance(TangentMatrix::Identity());
+#elif SF_CFG_HAS_INITIAL_ERROR_COVARIANCE && !SF_CFG_IS_AVERAGING
   parameters.initial_error_covariance.setZero();
   SF_PP_ASSIGN_MATRIX(parameters.initial_error_covariance, INITIAL_ERROR_COVARIANCE)
 #endif

@@ -16,9 +16,11 @@
 //   SF_CFG_N   state size n          SF_CFG_N_WHY   "n = 2 is the number of ..."
 //   SF_CFG_M   measurement size m    SF_CFG_M_WHY
 //   SF_CFG_L   control size l        SF_CFG_L_WHY
+//   SF_CFG_D   tangent size d        SF_CFG_D_WHY (with QUATERNION_STATES; d = n without)
 // and SF_CFG_HAS_<X> (0/1) for every optional part.
 #pragma once
 
+#include <boost/preprocessor/arithmetic/sub.hpp>
 #include <boost/preprocessor/facilities/is_empty.hpp>
 
 #include "sf_filter/config/detail/preprocessor.hpp"
@@ -212,6 +214,19 @@ static_assert(false, "STATE_TRANSITION_MODEL: expected a sequence of n expressio
 #define SF_CFG_N SF_CFG_M
 #define SF_CFG_N_WHY "n = m = " SF_PP_STR(SF_CFG_M) " (the number of TOPICS_IN entries) for "      \
   SF_CFG_METHOD_NAME
+#endif
+
+// The tangent size d, over which the covariances of a header with QUATERNION_STATES are
+// given: n less one per quaternion, whose 4 stored entries have 3 tangent rows (quaternions.hpp).
+#if defined(QUATERNION_STATES) && SF_PP_IS_VECTOR(QUATERNION_STATES)
+#define SF_CFG_HAS_QUATERNION_STATES 1
+#define SF_CFG_D BOOST_PP_SUB(SF_CFG_N, BOOST_PP_SEQ_SIZE(QUATERNION_STATES))
+#define SF_CFG_D_WHY                                                                               \
+  "d = " SF_PP_STR(SF_CFG_D) " is the tangent size: n = " SF_PP_STR(SF_CFG_N) " less one per "     \
+  "QUATERNION_STATES entry (a quaternion's 4 stored entries have 3 rows, in rad^2)"
+#else
+#define SF_CFG_HAS_QUATERNION_STATES 0
+#define SF_CFG_D SF_CFG_N
 #endif
 
 // Optional parts (1 when given; a malformed value is reported by checks.hpp, not generated).

@@ -37,12 +37,21 @@ SF_PP_CHECK_MATRIX("OBSERVATION_JACOBIAN", SF_CFG_M, SF_CFG_N,
 // clang-format on
 
 #elif SF_METHOD_PART == SF_METHOD_PART_BINDING && METHOD == EXTENDED_KALMAN_FILTER
+#if SF_CFG_HAS_QUATERNION_STATES
+// Rotations: the error-state EKF on the header's layout (doc/manifolds.md).
+#include <sf_estimation/layout_extended_kalman_filter.hpp>
+#else
 #include <sf_estimation/extended_kalman_filter.hpp>
+#endif
 
 namespace sf_filter {
 namespace generated {
 
+#if SF_CFG_HAS_QUATERNION_STATES
+using Filter = estimation::LayoutExtendedKalmanFilter<sf_config::Model, sf_config::StateLayout>;
+#else
 using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
+#endif
 inline Filter makeFilter(const sf_config::Parameters& p) { return makeModelFilter<Filter>(p); }
 
 }  // namespace generated

@@ -30,7 +30,7 @@
 // (doc/manifolds.md); the sigma points' weighted mean (thesis Algorithm 3.3) otherwise.
 #if defined(UKF_PROPAGATED_MEAN)
 #define SF_CFG_UKF_PROPAGATED_MEAN (UKF_PROPAGATED_MEAN)
-#elif defined(ANGLE_STATES)
+#elif defined(ANGLE_STATES) || defined(QUATERNION_STATES)
 #define SF_CFG_UKF_PROPAGATED_MEAN 1
 #else
 #define SF_CFG_UKF_PROPAGATED_MEAN 0
@@ -82,7 +82,35 @@ static_assert((UKF_PROPAGATED_MEAN) == 0 || (UKF_PROPAGATED_MEAN) == 1,
               "UKF_PROPAGATED_MEAN: expected 1 (f of the mean, UKF-M) or 0 (the sigma points' "
               "weighted mean), found '" SF_PP_STR(UKF_PROPAGATED_MEAN) "'");
 #endif
+#if defined(UKF_PROPAGATED_MEAN) && defined(QUATERNION_STATES)
+static_assert((UKF_PROPAGATED_MEAN) == 1,
+              "UKF_PROPAGATED_MEAN: QUATERNION_STATES needs 1 (UKF-M propagates the mean, a "
+              "sigma-point average of quaternions is not a rotation), found '"
+              SF_PP_STR(UKF_PROPAGATED_MEAN) "'");
+#endif
 // clang-format on
+
+#elif SF_METHOD_PART == SF_METHOD_PART_BINDING && METHOD == UNSCENTED_KALMAN_FILTER && \
+    SF_CFG_HAS_QUATERNION_STATES
+// Rotations: UKF-M on the header's layout (doc/manifolds.md), UKF_ALPHA its three spreads.
+#include <sf_estimation/layout_unscented_kalman_filter.hpp>
+
+namespace sf_filter {
+namespace generated {
+
+using Filter = estimation::LayoutUnscentedKalmanFilter<sf_config::Model, sf_config::StateLayout>;
+inline Filter makeFilter(const sf_config::Parameters& p) {
+  if (!p.ukf_propagated_mean) {
+    throw estimation::ParameterError(
+        "ukf_propagated_mean: false is not possible with QUATERNION_STATES, whose UKF (UKF-M) "
+        "propagates the mean itself");
+  }
+  const estimation::ManifoldUnscentedParameters ut{p.ukf_alpha, p.ukf_alpha, p.ukf_alpha};
+  return makeModelFilter<Filter>(p, ut);
+}
+
+}  // namespace generated
+}  // namespace sf_filter
 
 #elif SF_METHOD_PART == SF_METHOD_PART_BINDING && METHOD == UNSCENTED_KALMAN_FILTER
 #include <sf_estimation/unscented_kalman_filter.hpp>

