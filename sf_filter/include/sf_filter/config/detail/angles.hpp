@@ -38,117 +38,74 @@
 #endif
 
 // --- form -----------------------------------------------------------------------------------------
-#if defined(ANGLE_STATES)
-#if SF_PP_IS_VECTOR(ANGLE_STATES)
-#define SF_ANGLE_STATES_OK 1
-#else
+#if defined(ANGLE_STATES) && !SF_PP_IS_VECTOR(ANGLE_STATES)
 static_assert(false, "ANGLE_STATES: expected a sequence of state indices, each in parentheses, "
               "e.g. (2) for a heading x[2]; found '" SF_PP_STR(ANGLE_STATES) "'");
-#define SF_ANGLE_STATES_OK 0
 #endif
-#else
-#define SF_ANGLE_STATES_OK 0
-#endif
-
-#if defined(ANGLE_INPUTS)
-#if SF_PP_IS_VECTOR(ANGLE_INPUTS)
-#define SF_ANGLE_INPUTS_OK 1
-#else
+#define SF_ANGLE_STATES_OK SF_PP_IS_VECTOR(ANGLE_STATES)
+#if defined(ANGLE_INPUTS) && !SF_PP_IS_VECTOR(ANGLE_INPUTS)
 static_assert(false, "ANGLE_INPUTS: expected a sequence of TOPICS_IN indices, each in "
               "parentheses, e.g. (1) for a compass as TOPICS_IN entry 1; found '"
               SF_PP_STR(ANGLE_INPUTS) "'");
-#define SF_ANGLE_INPUTS_OK 0
 #endif
-#else
-#define SF_ANGLE_INPUTS_OK 0
-#endif
+#define SF_ANGLE_INPUTS_OK SF_PP_IS_VECTOR(ANGLE_INPUTS)
 
 // --- entries: one struct per index, checked -------------------------------------------------------
 // NAME "ANGLE_STATES", BOUND n or m, WHAT the text after "expected an integer from 0 to ...".
-#define SF_ANGLE_ENTRY_MEMBERS(NAME, BOUND, WHAT, FIRST, k, index)                                 \
+#define SF_ANGLE_ENTRY_MEMBERS(NAME, BOUND, WHAT, INDICES, k, index)                               \
   static constexpr auto configured_index = index;                                                  \
-  static constexpr int value = static_cast<int>(configured_index);                                 \
+  static constexpr int input_index = static_cast<int>(configured_index);                           \
+  static constexpr bool value = true;                                                              \
   static_assert(std::is_integral<decltype(configured_index)>::value && configured_index >= 0 &&   \
                     configured_index < (BOUND),                                                    \
                 NAME " entry " SF_PP_STR(k) ": index '" SF_PP_STR(index) "' is out of range, "     \
                 "expected an integer from 0 to " SF_PP_STR(BOOST_PP_DEC(BOUND)) " " WHAT);         \
-  static_assert(value < 0 || value >= (BOUND) || angles_detail::FIRST(value) == k,                 \
+  static_assert(input_index < 0 || input_index >= (BOUND) ||                                       \
+                    detail::entryNaming(angles_detail::INDICES, input_index) == k,                 \
                 NAME " entry " SF_PP_STR(k) ": index " SF_PP_STR(index) " is already listed in "   \
                 "an earlier entry; list each index once");
 
 #define SF_ANGLE_STATE_ENTRY(r, data, k, index)                                                    \
   struct BOOST_PP_CAT(AngleStateEntry, k) {                                                        \
     SF_ANGLE_ENTRY_MEMBERS("ANGLE_STATES", SF_CFG_N, "(a state variable x[i]; " SF_CFG_N_WHY ")", \
-                           firstAngleState, k, index)                                              \
+                           kAngleStateIndices, k, index)                                              \
   };
 #define SF_ANGLE_INPUT_ENTRY(r, data, k, index)                                                    \
   struct BOOST_PP_CAT(AngleInputEntry, k) {                                                        \
     SF_ANGLE_ENTRY_MEMBERS("ANGLE_INPUTS", SF_CFG_M, "(the TOPICS_IN entry; " SF_CFG_M_WHY ")",    \
-                           firstAngleInput, k, index)                                              \
+                           kAngleInputIndices, k, index)                                              \
   };
 
-#define SF_ANGLE_INDEX_OP(r, data, k, index) BOOST_PP_COMMA_IF(k) static_cast<int>(index)
-#define SF_ANGLE_APPLY(r, data, k, index)                                                          \
-  if (BOOST_PP_CAT(BOOST_PP_TUPLE_ELEM(2, 1, data), k)::value >= 0 &&                              \
-      BOOST_PP_CAT(BOOST_PP_TUPLE_ELEM(2, 1, data), k)::value < static_cast<int>(flags.size())) {  \
-    flags[static_cast<std::size_t>(BOOST_PP_CAT(BOOST_PP_TUPLE_ELEM(2, 1, data), k)::value)] = true; \
-  }
+#define SF_ANGLE_INDEX(index) static_cast<int>(index)
 
 // clang-format on
 
 namespace sf_config {
 namespace angles_detail {
 
-#if SF_ANGLE_STATES_OK
-inline constexpr int kAngleStateIndices[] = {
-    BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_INDEX_OP, ~, ANGLE_STATES)};
-constexpr int firstAngleState(int value) { return detail::entryNaming(kAngleStateIndices, value); }
-BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_STATE_ENTRY, ~, ANGLE_STATES)
-#endif
-#if SF_ANGLE_INPUTS_OK
-inline constexpr int kAngleInputIndices[] = {
-    BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_INDEX_OP, ~, ANGLE_INPUTS)};
-constexpr int firstAngleInput(int value) { return detail::entryNaming(kAngleInputIndices, value); }
-BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_INPUT_ENTRY, ~, ANGLE_INPUTS)
-#endif
+SF_OPTION_INDICES(SF_ANGLE_STATES_OK, kAngleStateIndices, SF_ANGLE_INDEX, ANGLE_STATES)
+SF_OPTION_INDICES(SF_ANGLE_INPUTS_OK, kAngleInputIndices, SF_ANGLE_INDEX, ANGLE_INPUTS)
+SF_OPTION_ENTRIES(SF_ANGLE_STATES_OK, SF_ANGLE_STATE_ENTRY, ~, ANGLE_STATES)
+SF_OPTION_ENTRIES(SF_ANGLE_INPUTS_OK, SF_ANGLE_INPUT_ENTRY, ~, ANGLE_INPUTS)
 
-constexpr std::array<bool, kStateSize> makeAngleStates() {
-  std::array<bool, kStateSize> flags{};
-#if SF_ANGLE_STATES_OK
-  BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_APPLY, (~, AngleStateEntry), ANGLE_STATES)
-#endif
-  return flags;
-}
-
+/// ANGLE_INPUTS, and the DERIVED_INPUTS ROLL, PITCH and YAW (angles without being listed).
 constexpr std::array<bool, kMeasurementSize> makeAngleInputs() {
-  std::array<bool, kMeasurementSize> flags{};
-  // DERIVED_INPUTS ROLL, PITCH and YAW are angles without being listed.
+  std::array<bool, kMeasurementSize> flags = SF_OPTION_VALUES(
+      bool, kMeasurementSize, false, SF_ANGLE_INPUTS_OK, AngleInputEntry, ANGLE_INPUTS);
   for (int i = 0; i < kMeasurementSize; ++i) {
     if (derived_detail::isDerivedAngle(i)) flags[static_cast<std::size_t>(i)] = true;
   }
-#if SF_ANGLE_INPUTS_OK
-  BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_APPLY, (~, AngleInputEntry), ANGLE_INPUTS)
-#endif
   return flags;
 }
 
 }  // namespace angles_detail
 
-constexpr bool kHasAngleStates =
-#if defined(ANGLE_STATES)
-    true;
-#else
-    false;
-#endif
-constexpr bool kHasAngleInputs =
-#if defined(ANGLE_INPUTS)
-    true;
-#else
-    false;
-#endif
+constexpr bool kHasAngleStates = SF_ANGLE_STATES_OK;
+constexpr bool kHasAngleInputs = SF_ANGLE_INPUTS_OK;
 
 /// ANGLE_STATES per state variable: true for an angle.
-inline constexpr std::array<bool, kStateSize> kAngleStates = angles_detail::makeAngleStates();
+inline constexpr std::array<bool, kStateSize> kAngleStates = SF_OPTION_VALUES(
+    bool, kStateSize, false, SF_ANGLE_STATES_OK, angles_detail::AngleStateEntry, ANGLE_STATES);
 /// ANGLE_INPUTS per input (TOPICS_IN order): true for a measured angle.
 inline constexpr std::array<bool, kMeasurementSize> kAngleInputs = angles_detail::makeAngleInputs();
 

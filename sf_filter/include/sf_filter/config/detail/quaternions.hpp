@@ -79,7 +79,8 @@ static_assert(false, "QUATERNION_STATES: expected a sequence of state indices, e
 namespace sf_config {
 namespace quaternions_detail {
 
-inline constexpr int kStarts[] = {BOOST_PP_SEQ_FOR_EACH_I(SF_ANGLE_INDEX_OP, ~, QUATERNION_STATES)};
+/// Where each entry's quaternion starts, in order (then detail::kNoIndex).
+SF_OPTION_INDICES(1, kStarts, SF_ANGLE_INDEX, QUATERNION_STATES)
 
 /// The first of the entries before `entry` whose quaternion shares a state with the one at
 /// `start`, or -1.

@@ -120,12 +120,10 @@ namespace generated {
 
 using Filter = estimation::UnscentedKalmanFilter<sf_config::Model>;
 inline Filter makeFilter(const sf_config::Parameters& p) {
-  estimation::UnscentedParameters ut;
-  ut.alpha = p.ukf_alpha;
-  ut.beta = p.ukf_beta;
-  ut.kappa = p.ukf_kappa;
-  ut.predictedMean = p.ukf_propagated_mean ? estimation::PredictedMean::Propagated
-                                           : estimation::PredictedMean::SigmaPointAverage;
+  const estimation::UnscentedParameters ut{
+      p.ukf_alpha, p.ukf_beta, p.ukf_kappa,
+      p.ukf_propagated_mean ? estimation::PredictedMean::Propagated
+                            : estimation::PredictedMean::SigmaPointAverage};
   return makeModelFilter<Filter>(p, ut);
 }
 
