@@ -42,7 +42,7 @@ TOP_DIRS = ("bags", "cmake", "config", "doc", "launch", "scripts", "sf_estimatio
             "sf_msgs", "test", "tools")
 PLACEHOLDER = re.compile(r"[<>\[\]{}]|\.\.\.|\.\.\d|\$")
 # Files the docs tell the reader to create in their own package (the tutorial's header).
-USER_FILES = {"config/robot_ekf.h", "config/my_robot.h"}
+USER_FILES = {"config/robot_ekf.h", "config/my_robot.h", "config/drone_3d.h"}
 
 
 # ---------------------------------------------------------------------------------------------
