@@ -17,9 +17,13 @@
 # sf_subscribe_floor_node):
 #   sf_filter/bench/measure_recording_cpu.sh [--bag bags/husky_gps.bag] [--runs 1]
 #     [--node sf_husky_skid_steer_ekf] [--topics "/encoder /imu/data"] [--before 10]
-#     [--idle 30] [--rl-ws DIR] [--compare-lib DIR] [--port N] [--out DIR]
+#     [--idle 30] [--rl-ws DIR] [--compare-lib DIR] [--no-nodelet] [--node-args "A:=B ..."] [--port N]
+#     [--out DIR]
 # --rl-ws DIR: a catkin workspace with robot_localization built (DIR/devel/setup.bash); its
 # EKF gets the node's inputs (odometry v and yaw rate, IMU yaw rate) at the node's period.
+# --no-nodelet: leave the nodelet out (a header built without NODELET, e.g. the 3D ones).
+# --node-args: extra arguments of the node, e.g. remaps of its relative topics onto the bag's
+# (the node runs in the namespace /node).
 # Prints one table per run; logs and reports in DIR (a fresh temporary directory by default).
 # Everything started here is stopped on exit, by pid.
 set -euo pipefail
@@ -35,6 +39,8 @@ RL_WS=""
 COMPARE_LIB=""
 PORT=""
 OUT=""
+NODELET=1
+NODE_ARGS=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --bag) BAG=$2; shift 2 ;;
@@ -47,7 +53,9 @@ while [[ $# -gt 0 ]]; do
     --compare-lib) COMPARE_LIB=$2; shift 2 ;;
     --port) PORT=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
-    -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
+    --no-nodelet) NODELET=0; shift ;;
+    --node-args) NODE_ARGS=$2; shift 2 ;;
+    -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
     *) echo "unknown argument: $1" >&2; exit 2 ;;
   esac
 done
@@ -125,13 +133,17 @@ for run in $(seq "$RUNS"); do
   # shellcheck disable=SC2086
   "$FLOOR_EXE" $TOPICS __name:=floor >"$D/floor.log" 2>&1 &
   PID[floor]=$!
-  ROS_NAMESPACE=node "$NODE_EXE" __name:=fusion >"$D/node.log" 2>&1 &
+  # shellcheck disable=SC2086
+  ROS_NAMESPACE=node "$NODE_EXE" __name:=fusion $NODE_ARGS >"$D/node.log" 2>&1 &
   PID[node]=$!
-  "$MANAGER_EXE" manager __name:=manager >"$D/manager.log" 2>&1 &
-  PID[nodelet]=$!
-  ROS_NAMESPACE=nodelet "$MANAGER_EXE" load "sf_pkg/$NODE" /manager __name:=fusion >"$D/loader.log" 2>&1 &
-  LOADER_PID=$!
-  expected=3
+  expected=2
+  if [[ "$NODELET" == 1 ]]; then
+    "$MANAGER_EXE" manager __name:=manager >"$D/manager.log" 2>&1 &
+    PID[nodelet]=$!
+    ROS_NAMESPACE=nodelet "$MANAGER_EXE" load "sf_pkg/$NODE" /manager __name:=fusion >"$D/loader.log" 2>&1 &
+    LOADER_PID=$!
+    expected=3
+  fi
   if [[ -n "$COMPARE_LIB" ]]; then
     [[ -f "$COMPARE_LIB/libsf_fusion_node.so" ]] || { echo "no $COMPARE_LIB/libsf_fusion_node.so" >&2; exit 1; }
     ROS_NAMESPACE=node_lib LD_LIBRARY_PATH="$COMPARE_LIB:${LD_LIBRARY_PATH:-}" "$NODE_EXE" __name:=fusion >"$D/node_lib.log" 2>&1 &
