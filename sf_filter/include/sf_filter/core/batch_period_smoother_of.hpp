@@ -6,6 +6,7 @@
 // and UKF (HasBatchSmoother): the UKF's MAP track is defined by the same f, h, Q and R.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -75,5 +76,17 @@ class BatchPeriodSmootherOf final : public PeriodSmoother {
   PeriodRecorder<Core, Belief> recorder_;
   std::optional<BatchOutcome> outcome_;
 };
+
+/// The batch smoother of a core's run, or null for a filter without one (as
+/// makePeriodSmoother).
+template <class Core>
+std::unique_ptr<PeriodSmoother> makeBatchPeriodSmoother(const Core& core) {
+  using Filter = std::decay_t<decltype(core.filter())>;
+  if constexpr (HasBatchSmoother<Filter>::value) {
+    return std::make_unique<BatchPeriodSmootherOf<Core>>(core);
+  } else {
+    return nullptr;
+  }
+}
 
 }  // namespace sf_filter

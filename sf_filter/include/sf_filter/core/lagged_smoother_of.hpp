@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -88,5 +89,17 @@ class LaggedSmootherOf final : public LaggedSmoother {
   SmoothingCorrectionTotal total_;
   PeriodRecorder<Core, Period> recorder_;
 };
+
+/// The fixed-lag smoother of a core over lagPeriods periods, or null for a filter without one
+/// (as makePeriodSmoother).
+template <class Core>
+std::unique_ptr<LaggedSmoother> makeLaggedSmootherOf(const Core& core, std::size_t lagPeriods) {
+  using Filter = std::decay_t<decltype(core.filter())>;
+  if constexpr (HasSmoother<Filter>::value) {
+    return std::make_unique<LaggedSmootherOf<Core>>(core, lagPeriods);
+  } else {
+    return nullptr;
+  }
+}
 
 }  // namespace sf_filter

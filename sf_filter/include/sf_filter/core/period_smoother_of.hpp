@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -85,5 +86,18 @@ class PeriodSmootherOf final : public PeriodSmoother {
   std::vector<estimation::SmoothedPeriod<N>> smoothed_;
   PeriodRecorder<Core, Period> recorder_;
 };
+
+/// The offline smoother of a core's run, or null for a filter without one. A function, not
+/// a member of FusionEngineOf, so that a header's node can compile it in a unit of its own
+/// (SF_FILTER_SMOOTHER_INSTANCES in fusion_engine_of.hpp).
+template <class Core>
+std::unique_ptr<PeriodSmoother> makePeriodSmoother(const Core& core) {
+  using Filter = std::decay_t<decltype(core.filter())>;
+  if constexpr (HasSmoother<Filter>::value) {
+    return std::make_unique<PeriodSmootherOf<Core>>(core);
+  } else {
+    return nullptr;
+  }
+}
 
 }  // namespace sf_filter
