@@ -26,6 +26,7 @@
 #include "sf_estimation/kalman_correction.hpp"  // SF_ESTIMATION_FOR_MEASUREMENT_SIZES
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/measurement_noise.hpp"
+#include "sf_estimation/probability/cholesky.hpp"
 #include "sf_estimation/probability/gaussian.hpp"
 #include "sf_estimation/types.hpp"
 
@@ -51,6 +52,10 @@ struct ProposalFactors {
 // particle filter's unit (doc/build_cost.md, "The particle filter's proposal").
 // LinearisedProposal adds what needs the model: h's Jacobian and the particles' residuals.
 
+/// The factorisations are Eigen::LLT's, bit for bit, as plain loops (probability/cholesky.hpp):
+/// Eigen::LLT cost about 4 s of compile time per pair of sizes.
+constexpr probability::CholeskyOrder kLltOrder = probability::CholeskyOrder::sumFirst;
+
 /// Sizes `f` and whitens Q over the states outside `fixed`. Throws ParameterError when Q is not
 /// positive definite there.
 template <int N, int M>
@@ -71,13 +76,14 @@ void setUpProposal(const Matrix<N, N>& Q, const Mask<N>& fixed, Index measuremen
     f.Q.col(r).setZero();
     f.Q(r, r) = 1.0;
   }
-  Eigen::LLT<Matrix<N, N>> llt(f.Q);
-  if (llt.info() != Eigen::Success) {
+  Matrix<N, N> root = f.Q;
+  if (!probability::choleskyInPlace<N, kLltOrder>(root)) {
     throw ParameterError(
         "ParticleFilterSIR: the linearised proposal needs Q positive definite over the "
         "weighed states (it weighs each draw by N(x; f(x), Q))");
   }
-  f.transitionWhitening = llt.matrixL().solve(Matrix<N, N>::Identity(n, n));
+  f.transitionWhitening =
+      root.template triangularView<Eigen::Lower>().solve(Matrix<N, N>::Identity(n, n));
 }
 
 /// Gain and proposal covariance of a step from f.H (zero rows for the missing entries) and
@@ -87,28 +93,30 @@ void factoriseProposal(ProposalFactors<N, M>& f) {
   const Index n = f.H.cols();
   f.S.noalias() = f.H * f.Q * f.H.transpose();
   f.S += f.Reff;
-  Eigen::LLT<Matrix<M, M>> llt(f.S);
-  if (llt.info() != Eigen::Success || !f.S.allFinite()) {
+  Matrix<M, M> factor = f.S;
+  if (!probability::choleskyInPlace<M, kLltOrder>(factor) || !f.S.allFinite()) {
     throw NumericalError(
         "ParticleFilterSIR: the proposal's innovation covariance is not "
         "positive definite; step rejected");
   }
-  f.gainT.noalias() = f.H * f.Q;  // K^T = S^-1 H Q
-  llt.solveInPlace(f.gainT);
+  f.gainT.noalias() = f.H * f.Q;  // K^T = S^-1 H Q, as Eigen::LLT::solveInPlace solves
+  factor.template triangularView<Eigen::Lower>().solveInPlace(f.gainT);
+  factor.adjoint().template triangularView<Eigen::Upper>().solveInPlace(f.gainT);
   // Joseph form: positive semi-definite by construction.
   Matrix<N, N> IKH = Matrix<N, N>::Identity(n, n);
   IKH.noalias() -= f.gainT.transpose() * f.H;
   f.sigma.noalias() = IKH * f.Q * IKH.transpose();
   f.sigma.noalias() += f.gainT.transpose() * f.Reff * f.gainT;
   f.sigma = 0.5 * (f.sigma + f.sigma.transpose()).eval();
-  Eigen::LLT<Matrix<N, N>> root(f.sigma);
-  if (root.info() != Eigen::Success || !f.sigma.allFinite()) {
+  Matrix<N, N> root = f.sigma;
+  if (!probability::choleskyInPlace<N, kLltOrder>(root) || !f.sigma.allFinite()) {
     throw NumericalError(
         "ParticleFilterSIR: the proposal's covariance is not positive "
         "definite; step rejected");
   }
-  f.sigmaRoot = root.matrixL();
-  f.sigmaWhitening = root.matrixL().solve(Matrix<N, N>::Identity(n, n));
+  f.sigmaRoot = root.template triangularView<Eigen::Lower>();
+  f.sigmaWhitening =
+      root.template triangularView<Eigen::Lower>().solve(Matrix<N, N>::Identity(n, n));
 }
 
 /// The draw of a particle whose prediction is `predicted` and whose residual z - h(predicted)
