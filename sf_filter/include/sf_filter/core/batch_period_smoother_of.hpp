@@ -77,16 +77,11 @@ class BatchPeriodSmootherOf final : public PeriodSmoother {
   std::optional<BatchOutcome> outcome_;
 };
 
-/// The batch smoother of a core's run, or null for a filter without one (as
-/// makePeriodSmoother).
+/// The batch smoother of a core's run, or null for a filter without one.
 template <class Core>
 std::unique_ptr<PeriodSmoother> makeBatchPeriodSmoother(const Core& core) {
-  using Filter = std::decay_t<decltype(core.filter())>;
-  if constexpr (HasBatchSmoother<Filter>::value) {
-    return std::make_unique<BatchPeriodSmootherOf<Core>>(core);
-  } else {
-    return nullptr;
-  }
+  return makeSmootherIf<PeriodSmoother, BatchPeriodSmootherOf,
+                        HasBatchSmoother<FilterOf<Core>>::value>(core);
 }
 
 }  // namespace sf_filter

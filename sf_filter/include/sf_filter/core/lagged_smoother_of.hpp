@@ -90,16 +90,11 @@ class LaggedSmootherOf final : public LaggedSmoother {
   PeriodRecorder<Core, Period> recorder_;
 };
 
-/// The fixed-lag smoother of a core over lagPeriods periods, or null for a filter without one
-/// (as makePeriodSmoother).
+/// The fixed-lag smoother of a core over lagPeriods periods, or null for a filter without one.
 template <class Core>
 std::unique_ptr<LaggedSmoother> makeLaggedSmootherOf(const Core& core, std::size_t lagPeriods) {
-  using Filter = std::decay_t<decltype(core.filter())>;
-  if constexpr (HasSmoother<Filter>::value) {
-    return std::make_unique<LaggedSmootherOf<Core>>(core, lagPeriods);
-  } else {
-    return nullptr;
-  }
+  return makeSmootherIf<LaggedSmoother, LaggedSmootherOf, HasSmoother<FilterOf<Core>>::value>(
+      core, lagPeriods);
 }
 
 }  // namespace sf_filter
