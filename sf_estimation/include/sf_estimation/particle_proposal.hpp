@@ -186,9 +186,9 @@ class LinearisedProposal {
   double draw(const Model& model, const Vector<N>& predicted, const Measurement<M>& z,
               const AngleMask<N>& stateAngles, const AngleMask<M>& measurementAngles,
               const Vector<N>& noise, Vector<N>& sample) const {
-    Vector<M> residual(z.size());
-    model.observation(predicted, residual);
-    residual = z.value - residual;
+    Vector<M> expected(z.size());
+    model.observation(predicted, expected);
+    Vector<M> residual = z.value - expected;
     measurementAngles.wrap(residual);
     for (Index r = 0; r < z.size(); ++r) {
       if (!z.available(r)) residual(r) = 0.0;
