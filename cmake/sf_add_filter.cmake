@@ -25,6 +25,7 @@ if(NOT DEFINED SF_PKG_FILTER_MAIN)
 endif()
 get_filename_component(_sf_pkg_src "${SF_PKG_FILTER_MAIN}" DIRECTORY)
 set(SF_PKG_NODELET_UNIT "${_sf_pkg_src}/fusion_node_unit.cpp")
+set(SF_PKG_FILTER_SMOOTHERS "${_sf_pkg_src}/fusion_node_smoothers.cpp")
 set(SF_PKG_NODELET_PLUGIN "${_sf_pkg_src}/fusion_nodelet_plugin.cpp")
 
 # Installed, the headers (sf_filter/, sf_estimation/) are in the package's own include folder,
@@ -151,13 +152,14 @@ function(sf_add_filter name header)
   # headers: make compiles an executable's sources only after every library it links is
   # built, which in a clean build would hold every node back until the package's libraries
   # are done (doc/build_cost.md). With NODELET it is compiled once for the node and the
-  # plugin.
+  # plugin. The header's smoothers are a second unit of the same object library, compiled
+  # beside the first (fusion_node_smoothers.cpp, doc/build_cost.md "The smoothers' unit").
   set(_unit ${name}_unit)
   if(_sf_NODELET)
     _sf_check_nodelet_xml(${name} "${_sf_NODELET}")
-    add_library(${_unit} OBJECT "${SF_PKG_NODELET_UNIT}")
+    add_library(${_unit} OBJECT "${SF_PKG_NODELET_UNIT}" "${SF_PKG_FILTER_SMOOTHERS}")
   else()
-    add_library(${_unit} OBJECT "${SF_PKG_FILTER_MAIN}")
+    add_library(${_unit} OBJECT "${SF_PKG_FILTER_MAIN}" "${SF_PKG_FILTER_SMOOTHERS}")
   endif()
   _sf_filter_unit(${_unit} "${_header}")
   add_executable(${name} $<TARGET_OBJECTS:${_unit}>)

@@ -51,13 +51,15 @@ configure() {
     "$messages" >"$2/configure.log" 2>&1
 }
 
-# unit_cost <workspace> <header>: "cpu_s peak_MB" of compiling the header's node unit.
+# unit_cost <workspace> <header> [<source>]: "cpu_s peak_MB" of compiling the header's node
+# unit (fusion_node_main), or its smoothers' unit (fusion_node_smoothers; a tree before it has
+# none: "n/a n/a").
 unit_cost() {
   local cmd
-  cmd="$(/usr/bin/python3 - "$1/build/compile_commands.json" "$2" <<'EOF'
+  cmd="$(/usr/bin/python3 - "$1/build/compile_commands.json" "$2" "${3:-fusion_node_main}" <<'EOF'
 import json, sys
 for entry in json.load(open(sys.argv[1])):
-    if 'fusion_node_main' in entry['file'] and '/' + sys.argv[2] + '\\"' in entry['command']:
+    if sys.argv[3] in entry['file'] and '/' + sys.argv[2] + '\\"' in entry['command']:
         print('cd %s && %s' % (entry['directory'], entry['command'].replace(
             entry['command'].split(' -o ')[1].split()[0], '/dev/null')))
         break
@@ -111,14 +113,19 @@ if [[ -n "$baseline" ]]; then prelude_cost "$work/baseline" >/dev/null; fi
 printf '%-28s %14s %14s' "translation unit (header)" "CPU s" "peak MB"
 [[ -n "$baseline" ]] && printf ' %14s %14s' "CPU s ($baseline)" "peak MB ($baseline)"
 echo
+# Each header's node unit, then its smoothers' unit (sf_add_filter compiles both; "+ smoothers").
 for h in "${headers[@]}"; do
-  read -r cpu mem < <(unit_cost "$work/current" "$h")
-  printf '%-28s %14s %14s' "$h" "$cpu" "$mem"
-  if [[ -n "$baseline" ]]; then
-    read -r bcpu bmem < <(unit_cost "$work/baseline" "$h")
-    printf ' %14s %14s' "$bcpu" "$bmem"
-  fi
-  echo
+  for source in fusion_node_main fusion_node_smoothers; do
+    label="$h"
+    [[ "$source" == fusion_node_main ]] || label="  + smoothers"
+    read -r cpu mem < <(unit_cost "$work/current" "$h" "$source")
+    printf '%-28s %14s %14s' "$label" "$cpu" "$mem"
+    if [[ -n "$baseline" ]]; then
+      read -r bcpu bmem < <(unit_cost "$work/baseline" "$h" "$source")
+      printf ' %14s %14s' "$bcpu" "$bmem"
+    fi
+    echo
+  done
 done
 echo
 ((units_only)) && exit 0

@@ -13,6 +13,7 @@ For every file:
   OK for the NIS from the first full window to the end of the bag.
 """
 
+import concurrent.futures
 import glob
 import os
 import re
@@ -61,6 +62,27 @@ def nis_all(stdout):
     return m.group(3), int(m.group(4)), int(m.group(5)), int(m.group(6))
 
 
+def run_all(commands):
+    """run() of each command, two at a time (the replays and identifications are independent
+    and single-threaded: at the end of the test command's first step the second core would
+    idle), as a list of (stdout or the AssertionError) in the commands' order, so that every
+    failure is reported by its own subTest."""
+    def attempt(args):
+        try:
+            return run(args)
+        except AssertionError as e:
+            return e
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        return list(pool.map(attempt, commands))
+
+
+def outcome(result):
+    """The stdout of a run_all() result, or its error raised."""
+    if isinstance(result, AssertionError):
+        raise result
+    return result
+
+
 def tuned_files():
     files = sorted(glob.glob(os.path.join(TUNED_DIR, "*_on_*.yaml")))
     if not files:
@@ -76,9 +98,19 @@ def command_of(path):
     return shlex.split(lines[1][2:])
 
 
+def tune_command(path, directory):
+    """The file's own command (command_of) writing into `directory` instead."""
+    words = command_of(path)
+    return ([executable(words[2]), "--tune", words[4], "--out",
+             os.path.join(directory, os.path.basename(path))] + words[7:])
+
+
 class TunedFilesTest(unittest.TestCase):
     def test_every_file_is_what_its_command_writes(self):
         with tempfile.TemporaryDirectory(prefix="sf_tuned_files_") as tmp:
+            files = [p for p in tuned_files() if os.path.basename(p) not in SLOW_TO_TUNE]
+            # Each file's command with its --out in tmp, run two at a time before the checks.
+            ran = dict(zip(files, run_all([tune_command(p, tmp) for p in files])))
             for path in tuned_files():
                 name = os.path.basename(path)
                 words = command_of(path)
@@ -92,7 +124,7 @@ class TunedFilesTest(unittest.TestCase):
                     if name in SLOW_TO_TUNE:
                         continue
                     out = os.path.join(tmp, name)
-                    run([executable(node), "--tune", bag, "--out", out] + words[7:])
+                    outcome(ran[path])
                     with open(path) as f:
                         shipped = yaml.safe_load(f)
                     with open(out) as f:
@@ -102,17 +134,21 @@ class TunedFilesTest(unittest.TestCase):
                         self.assertEqual(again[key], value, key)
 
     def test_header_values_warn_and_tuned_values_pass_the_nis_check(self):
-        for path in tuned_files():
-            name = os.path.basename(path)
+        paths = tuned_files()
+        replays = []  # per file: the header's values, then the file's
+        for path in paths:
             words = command_of(path)
             exe, bag = executable(words[2]), words[4]
+            replays += [[exe, "--replay", bag], [exe, "--replay", bag, "--params", path]]
+        results = run_all(replays)
+        for k, path in enumerate(paths):
+            name = os.path.basename(path)
             with self.subTest(file=name):
-                verdict, window, flagged, judged = nis_all(run([exe, "--replay", bag]))
+                verdict, window, flagged, judged = nis_all(outcome(results[2 * k]))
                 self.assertTrue(verdict.startswith("inconsistent"), verdict)
                 self.assertGreater(judged, 0)
                 self.assertEqual(flagged, judged)
-                verdict, window, flagged, judged = nis_all(
-                    run([exe, "--replay", bag, "--params", path]))
+                verdict, window, flagged, judged = nis_all(outcome(results[2 * k + 1]))
                 print("%s: tuned: %s; window of %d periods flagged in %d of %d" %
                       (name, verdict, window, flagged, judged))
                 self.assertFalse(verdict.startswith("inconsistent"), verdict)

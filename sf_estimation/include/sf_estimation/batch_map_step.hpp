@@ -1,5 +1,5 @@
 // The size-only step of the batch MAP smoother (batch_map_smoother.hpp): a residual's weighted
-// square r^T C^-1 r. Compiled once in the library for the sizes 1..8 of the Kalman grid
+// square r^T C^-1 r. Compiled once in the library for the sizes 1..8 and 13 of the Kalman grid
 // (cmake/kalman_steps.cpp.in), as the RTS step is (rts_step.hpp): instantiated in every node,
 // whose fusion engine can make a batch smoother, the LDLT factorisations had doubled the
 // compile time of a Kalman-type node's unit (doc/smoothing.md, "Build cost").
@@ -33,6 +33,7 @@ SF_ESTIMATION_EXTERN_BATCH_MAP_STEP(5)
 SF_ESTIMATION_EXTERN_BATCH_MAP_STEP(6)
 SF_ESTIMATION_EXTERN_BATCH_MAP_STEP(7)
 SF_ESTIMATION_EXTERN_BATCH_MAP_STEP(8)
+SF_ESTIMATION_EXTERN_BATCH_MAP_STEP(13)
 #undef SF_ESTIMATION_EXTERN_BATCH_MAP_STEP
 #endif
 

@@ -192,13 +192,14 @@ bool settleBelief(Vector<N>& x, Matrix<N, N>& P, const AngleMask<N>& angleStates
 }
 
 // The size-only steps above are compiled once in the library for the state sizes N = 1..8
-// and measurement sizes M = 1..6 that configurations use most (kalman_steps_*.cpp): a
+// and 13, and measurement sizes M = 1..6 that configurations use most (kalman_steps_*.cpp): a
 // node's translation unit then does not instantiate them again, which halves a Kalman-type
 // configuration's compile time. The UKF's correction is compiled once for N = 1..7 only, the
 // sizes of the sigma-point grid (unscented_transform.hpp): a larger UKF compiles its
-// transform in its own unit anyway. The grid stops at 8 states, the largest shipped header
-// (config/husky_skid_steer_gps.h); each larger size was one more unit of 40 s of CPU in
-// every build of the package. Other sizes are instantiated where they are used, as before.
+// transform in its own unit anyway. The grid stops at 8 states, plus 13 for the largest
+// shipped header (config/husky_skid_steer_gps.h, an EKF, whose unit compiled them, its
+// smoothers' steps included, in 7 s and 190 MB): each further size is one more unit of 20-40 s
+// of CPU in every build of the package. Other sizes are instantiated where they are used.
 // A target built without the generated units (the fuzzer) defines
 // SF_ESTIMATION_IMPLICIT_INSTANCES, which drops these declarations here and in the
 // sigma-point headers: every size is then instantiated where it is used.
@@ -252,6 +253,7 @@ SF_ESTIMATION_EXTERN_STEPS(5)
 SF_ESTIMATION_EXTERN_STEPS(6)
 SF_ESTIMATION_EXTERN_STEPS(7)
 SF_ESTIMATION_EXTERN_LINEAR_STEPS(8)
+SF_ESTIMATION_EXTERN_LINEAR_STEPS(13)
 #undef SF_ESTIMATION_EXTERN_STEPS
 #undef SF_ESTIMATION_EXTERN_LINEAR_STEPS
 #undef SF_ESTIMATION_EXTERN_CROSS_COVARIANCE_CORRECTION

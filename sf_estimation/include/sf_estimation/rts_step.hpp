@@ -1,8 +1,8 @@
 // One backward step of the Rauch-Tung-Striebel smoother (rts_smoother.hpp) and its two halves,
 // the gain and the correction (the fixed-lag smoother keeps the gain of each period), which
-// depend only on the state size: compiled once in the library for the state sizes 1..8 of the
-// Kalman grid (cmake/kalman_steps.cpp.in), so that a node, whose fusion engine can make a smoother
-// (sf_filter's period_smoother_of.hpp), does not instantiate it again.
+// depend only on the state size: compiled once in the library for the state sizes 1..8 and 13
+// of the Kalman grid (cmake/kalman_steps.cpp.in), so that a node, whose fusion engine can make
+// a smoother (sf_filter's period_smoother_of.hpp), does not instantiate it again.
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -94,6 +94,7 @@ SF_ESTIMATION_EXTERN_RTS_STEP(5)
 SF_ESTIMATION_EXTERN_RTS_STEP(6)
 SF_ESTIMATION_EXTERN_RTS_STEP(7)
 SF_ESTIMATION_EXTERN_RTS_STEP(8)
+SF_ESTIMATION_EXTERN_RTS_STEP(13)
 #undef SF_ESTIMATION_EXTERN_RTS_STEP
 #endif
 

@@ -6,6 +6,7 @@
 // and UKF (HasBatchSmoother): the UKF's MAP track is defined by the same f, h, Q and R.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -75,5 +76,12 @@ class BatchPeriodSmootherOf final : public PeriodSmoother {
   PeriodRecorder<Core, Belief> recorder_;
   std::optional<BatchOutcome> outcome_;
 };
+
+/// The batch smoother of a core's run, or null for a filter without one.
+template <class Core>
+std::unique_ptr<PeriodSmoother> makeBatchPeriodSmoother(const Core& core) {
+  return makeSmootherIf<PeriodSmoother, BatchPeriodSmootherOf,
+                        HasBatchSmoother<FilterOf<Core>>::value>(core);
+}
 
 }  // namespace sf_filter

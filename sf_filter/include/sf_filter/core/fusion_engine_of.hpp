@@ -100,27 +100,13 @@ class FusionEngineOf final : public FusionEngine {
   double maxMeasurementLag() const override { return core_.maxMeasurementLag(); }
 
   std::unique_ptr<PeriodSmoother> makeSmoother() const override {
-    if constexpr (HasSmoother<Filter>::value) {
-      return std::make_unique<PeriodSmootherOf<Core>>(core_);
-    } else {
-      return nullptr;
-    }
+    return makePeriodSmoother(core_);
   }
-
   std::unique_ptr<PeriodSmoother> makeBatchSmoother() const override {
-    if constexpr (HasBatchSmoother<Filter>::value) {
-      return std::make_unique<BatchPeriodSmootherOf<Core>>(core_);
-    } else {
-      return nullptr;
-    }
+    return makeBatchPeriodSmoother(core_);
   }
-
   std::unique_ptr<LaggedSmoother> makeLaggedSmoother(std::size_t lagPeriods) const override {
-    if constexpr (HasSmoother<Filter>::value) {
-      return std::make_unique<LaggedSmootherOf<Core>>(core_, lagPeriods);
-    } else {
-      return nullptr;
-    }
+    return makeLaggedSmootherOf(core_, lagPeriods);
   }
 
   std::string filterDescription() const override { return core_.filter().description(); }
@@ -144,6 +130,17 @@ class FusionEngineOf final : public FusionEngine {
 
   Core core_;
 };
+
+// The smoothers' factories of a core (period_smoother_of.hpp and its siblings), declared extern
+// (PREFIX extern) in a header's node unit and instantiated (PREFIX empty) in its smoothers' unit
+// (sf_filter/src/fusion_node_smoothers.cpp): they are replay options, but instantiated at the
+// header's sizes with its model they were a third of a Kalman-type unit's compile time and
+// memory (doc/build_cost.md, "The smoothers' unit").
+#define SF_FILTER_SMOOTHER_INSTANCES(PREFIX, CORE)                                            \
+  PREFIX template std::unique_ptr<PeriodSmoother> makePeriodSmoother<CORE>(const CORE&);      \
+  PREFIX template std::unique_ptr<PeriodSmoother> makeBatchPeriodSmoother<CORE>(const CORE&); \
+  PREFIX template std::unique_ptr<LaggedSmoother> makeLaggedSmootherOf<CORE>(const CORE&,     \
+                                                                             std::size_t);
 
 // The window filters have no model and no fixed sizes: their cores are the same in every
 // header's node, and compiled once in the core library (src/core/window_filter_engines.cpp).

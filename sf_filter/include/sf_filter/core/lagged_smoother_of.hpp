@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -88,5 +89,12 @@ class LaggedSmootherOf final : public LaggedSmoother {
   SmoothingCorrectionTotal total_;
   PeriodRecorder<Core, Period> recorder_;
 };
+
+/// The fixed-lag smoother of a core over lagPeriods periods, or null for a filter without one.
+template <class Core>
+std::unique_ptr<LaggedSmoother> makeLaggedSmootherOf(const Core& core, std::size_t lagPeriods) {
+  return makeSmootherIf<LaggedSmoother, LaggedSmootherOf, HasSmoother<FilterOf<Core>>::value>(
+      core, lagPeriods);
+}
 
 }  // namespace sf_filter

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -85,5 +86,28 @@ class PeriodSmootherOf final : public PeriodSmoother {
   std::vector<estimation::SmoothedPeriod<N>> smoothed_;
   PeriodRecorder<Core, Period> recorder_;
 };
+
+/// The filter type of a fusion core.
+template <class Core>
+using FilterOf = std::decay_t<decltype(std::declval<const Core&>().filter())>;
+
+/// A Smoother<Core> of `core` (and `args`), seen as Base, when `available` (the core's filter
+/// has that smoother); null otherwise. The smoothers' factories are functions, not members of
+/// FusionEngineOf, so that a header's node can compile them in a unit of their own
+/// (SF_FILTER_SMOOTHER_INSTANCES in fusion_engine_of.hpp).
+template <class Base, template <class> class Smoother, bool available, class Core, class... Args>
+std::unique_ptr<Base> makeSmootherIf(const Core& core, Args... args) {
+  if constexpr (available) {
+    return std::make_unique<Smoother<Core>>(core, args...);
+  } else {
+    return nullptr;
+  }
+}
+
+/// The offline smoother of a core's run, or null for a filter without one.
+template <class Core>
+std::unique_ptr<PeriodSmoother> makePeriodSmoother(const Core& core) {
+  return makeSmootherIf<PeriodSmoother, PeriodSmootherOf, HasSmoother<FilterOf<Core>>::value>(core);
+}
 
 }  // namespace sf_filter

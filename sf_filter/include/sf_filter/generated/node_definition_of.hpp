@@ -36,6 +36,13 @@ static_assert(BOOST_PP_SEQ_ELEM(0, POSE_OUT) < sf_config::kStateSize &&
 #endif
 
 namespace sf_filter {
+
+#if !SF_CFG_IS_AVERAGING
+// The smoothers of the header's filter are compiled in a unit of their own
+// (fusion_node_smoothers.cpp).
+SF_FILTER_SMOOTHER_INSTANCES(extern, FusionCore<generated::Filter>)
+#endif
+
 namespace generated {
 
 template <class Message>
