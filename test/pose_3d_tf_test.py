@@ -29,7 +29,7 @@ ROLL = 0.3  # rad
 GRAVITY = 9.80665
 
 
-class Pose3dOnlineTest(unittest.TestCase):
+class Pose3dTfTest(unittest.TestCase):
     def setUp(self):
         self.tf, self.odometry, self.euler, self.quiet = [], [], [], []
         self.subscribers = [
@@ -92,4 +92,4 @@ class Pose3dOnlineTest(unittest.TestCase):
 
 if __name__ == "__main__":
     rospy.init_node("pose_3d_tf_test")
-    rostest.rosrun("sf_pkg", "pose_3d_tf", Pose3dOnlineTest, sys.argv)
+    rostest.rosrun("sf_pkg", "pose_3d_tf", Pose3dTfTest, sys.argv)
