@@ -141,7 +141,7 @@ TEST(Pose3dOutput, TwistAndItsCovarianceFromTheState) {
   for (int r = 0; r < 6; ++r)
     for (int c = 0; c < 6; ++c)
       EXPECT_EQ(t.covariance[static_cast<std::size_t>(r * 6 + c)], entry(7 + r, 7 + c));
-  EXPECT_EQ(t.covariance[5], 720.0);  // v x with omega z: P(7, 12) = 700 + 12 + 1
+  EXPECT_EQ(t.covariance[5], 713.0);  // v x with omega z: P(7, 12) = 700 + 12 + 1
 }
 
 TEST(Pose3dOutput, OrientationOnlyMarksThePositionUnknown) {
