@@ -11,15 +11,11 @@
 #include <sf_estimation/manifold/so3_world_block.hpp>
 
 #include "sf_filter/io/estimate_writer.hpp"
+#include "writer_recorder.hpp"
 
 namespace {
 
-struct Estimate {
-  double time = 7.25;
-  Eigen::VectorXd state;
-  Eigen::MatrixXd covariance;
-  long presentInputs = 1;
-};
+using sf_test::Estimate;
 
 /// The quaternion (w, x, y, z) of roll, pitch, yaw (Z-Y-X), written out by hand.
 std::array<double, 4> quaternionOf(double roll, double pitch, double yaw) {
@@ -40,6 +36,7 @@ double entry(int r, int c) {
 /// 0.3), v x[7..9], omega x[10..12], a x[13..15].
 Estimate handMade(double roll = 0.1, double pitch = -0.2, double yaw = 0.3) {
   Estimate e;
+  e.time = 7.25;
   e.state.resize(16);
   const auto q = quaternionOf(roll, pitch, yaw);
   e.state << 1, 2, 3, q[0], q[1], q[2], q[3], 0.5, -0.25, 0.125, 0.01, -0.02, 0.03, 0, 0, 0;
@@ -59,23 +56,7 @@ sf_filter::NodeDescription description(bool position, bool twist) {
   return d;
 }
 
-struct Recorder {
-  std::vector<std::string> declared, written;
-  std::vector<nav_msgs::Odometry> odometries;
-  std::vector<geometry_msgs::Vector3Stamped> eulers;
-
-  template <class Message>
-  void declare(std::size_t k, const std::string& topic, sf_filter::OutputScope) {
-    declared.push_back(std::to_string(k) + " " + topic);
-  }
-  template <class Message>
-  void operator()(std::size_t k, const std::string& topic, sf_filter::OutputScope,
-                  const Message& m) {
-    written.push_back(std::to_string(k) + " " + topic);
-    if constexpr (std::is_same_v<Message, nav_msgs::Odometry>) odometries.push_back(m);
-    if constexpr (std::is_same_v<Message, geometry_msgs::Vector3Stamped>) eulers.push_back(m);
-  }
-};
+using Recorder = sf_test::WriterRecorder<nav_msgs::Odometry, geometry_msgs::Vector3Stamped>;
 
 Recorder written(const sf_filter::NodeDescription& d, const Estimate& e, bool measured = true) {
   Recorder r;
@@ -88,9 +69,9 @@ TEST(Pose3dOutput, OdometryAndEulerInWriteOrder) {
   Recorder r;
   writer.declare(r);
   writer.declareSmoothed(r);
-  EXPECT_EQ(r.declared,
-            (std::vector<std::string>{"0 fused/position/z", "1 state", "2 odometry/filtered",
-                                      "3 fused/euler", "4 state/smoothed", "5 odometry/smoothed"}));
+  EXPECT_EQ(r.declared, (std::vector<std::string>{
+                            "0 fused/position/z", "1 state private", "2 odometry/filtered",
+                            "3 fused/euler", "4 state/smoothed private", "5 odometry/smoothed"}));
   writer.write(handMade(), true, r);
   EXPECT_EQ(r.written, (std::vector<std::string>{"0 fused/position/z", "1 state",
                                                  "2 odometry/filtered", "3 fused/euler"}));
@@ -102,8 +83,8 @@ TEST(Pose3dOutput, OdometryAndEulerInWriteOrder) {
 TEST(Pose3dOutput, PoseAndItsCovarianceFromTheState) {
   const Estimate e = handMade();
   const Recorder r = written(description(true, false), e);
-  ASSERT_EQ(r.odometries.size(), 1u);
-  const nav_msgs::Odometry& o = r.odometries[0];
+  ASSERT_EQ(r.of<nav_msgs::Odometry>().size(), 1u);
+  const nav_msgs::Odometry& o = r.of<nav_msgs::Odometry>()[0];
   EXPECT_EQ(o.header.frame_id, "odom");
   EXPECT_EQ(o.child_frame_id, "base_link");
   EXPECT_EQ(o.header.stamp, ros::Time(7.25));
@@ -130,8 +111,8 @@ TEST(Pose3dOutput, PoseAndItsCovarianceFromTheState) {
 
 TEST(Pose3dOutput, TwistAndItsCovarianceFromTheState) {
   const Recorder r = written(description(true, true), handMade());
-  ASSERT_EQ(r.odometries.size(), 1u);
-  const auto& t = r.odometries[0].twist;
+  ASSERT_EQ(r.of<nav_msgs::Odometry>().size(), 1u);
+  const auto& t = r.of<nav_msgs::Odometry>()[0].twist;
   EXPECT_EQ(t.twist.linear.x, 0.5);
   EXPECT_EQ(t.twist.linear.y, -0.25);
   EXPECT_EQ(t.twist.linear.z, 0.125);
@@ -146,8 +127,8 @@ TEST(Pose3dOutput, TwistAndItsCovarianceFromTheState) {
 
 TEST(Pose3dOutput, OrientationOnlyMarksThePositionUnknown) {
   const Recorder r = written(description(false, false), handMade());
-  ASSERT_EQ(r.odometries.size(), 1u);
-  const nav_msgs::Odometry& o = r.odometries[0];
+  ASSERT_EQ(r.of<nav_msgs::Odometry>().size(), 1u);
+  const nav_msgs::Odometry& o = r.of<nav_msgs::Odometry>()[0];
   EXPECT_EQ(o.pose.pose.position.x, 0.0);
   EXPECT_EQ(o.pose.pose.position.z, 0.0);
   for (int r = 0; r < 6; ++r) {
@@ -164,8 +145,8 @@ TEST(Pose3dOutput, EulerAnglesOfKnownRotations) {
        {std::array<double, 3>{0.1, -0.2, 0.3}, std::array<double, 3>{-0.4, 0.3, 2.5},
         std::array<double, 3>{2.0, 1.2, -3.0}}) {
     const Recorder r = written(description(true, false), handMade(rpy[0], rpy[1], rpy[2]));
-    ASSERT_EQ(r.eulers.size(), 1u);
-    const geometry_msgs::Vector3Stamped& m = r.eulers[0];
+    ASSERT_EQ(r.of<geometry_msgs::Vector3Stamped>().size(), 1u);
+    const geometry_msgs::Vector3Stamped& m = r.of<geometry_msgs::Vector3Stamped>()[0];
     EXPECT_EQ(m.header.frame_id, "odom");
     EXPECT_EQ(m.header.stamp, ros::Time(7.25));
     EXPECT_NEAR(m.vector.x, rpy[0], 1e-12);
@@ -184,7 +165,8 @@ TEST(Pose3dOutput, OrientationErrorIsAboutTheOdomFramesAxes) {
                                             turned);
   Estimate f = e;
   f.state.segment<4>(3) = turned;
-  const auto euler = written(description(true, false), f).eulers.at(0).vector;
+  const auto euler =
+      written(description(true, false), f).of<geometry_msgs::Vector3Stamped>().at(0).vector;
   EXPECT_NEAR(euler.x, 0.4, 1e-12);
   EXPECT_NEAR(euler.y, -0.3, 1e-12);
   EXPECT_NEAR(euler.z, 1.05, 1e-12);
