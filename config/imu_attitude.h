@@ -67,6 +67,9 @@
   ((fused/orientation/w)(0))((fused/orientation/x)(1))((fused/orientation/y)(2)) \
   ((fused/orientation/z)(3)) \
   ((fused/gyro_bias/x)(4))((fused/gyro_bias/y)(5))((fused/gyro_bias/z)(6))
+// The orientation alone as nav_msgs/Odometry on odometry/filtered (position zero, variance
+// 1e6), the tf odom -> base_link and the Euler angles on fused/euler (doc/filter_node.md).
+#define POSE_OUT_3D (0)
 
 #if defined(IMU_ATTITUDE_MAGNETOMETER)
 #define IMU_ATTITUDE_FIELD(k) quat_rotate_inverse(x, 0, k, 0.0, x[7] * 1e-6, x[8] * 1e-6)

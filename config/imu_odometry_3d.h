@@ -103,6 +103,10 @@
   ((fused/velocity/x)(7))((fused/velocity/y)(8))((fused/velocity/z)(9)) \
   ((fused/angular_velocity/x)(10))((fused/angular_velocity/y)(11)) \
   ((fused/angular_velocity/z)(12))
+// nav_msgs/Odometry on odometry/filtered (pose and body twist with their 6x6 covariances),
+// the tf odom -> base_link and the Euler angles on fused/euler (doc/filter_node.md).
+#define POSE_OUT_3D (0)(1)(2)(3)
+#define TWIST_OUT_3D (7)(8)(9)(10)(11)(12)
 #define INPUT_TIMEOUT \
   ((0)(500))((1)(500))((2)(500))((3)(500))((4)(500))((5)(500)) \
   ((6)(500))((7)(500))((8)(500))((9)(500))((10)(500))((11)(500))

@@ -8,20 +8,17 @@
 #include <gtest/gtest.h>
 
 #include "sf_filter/io/estimate_writer.hpp"
+#include "writer_recorder.hpp"
 
 namespace {
 
-struct Estimate {
-  double time = 12.5;
-  Eigen::VectorXd state;
-  Eigen::MatrixXd covariance;
-  long presentInputs = 1;
-};
+using sf_test::Estimate;
 
 /// State (x, y, yaw, v, omega, a) = (1, 2, 0.5, 0.8, -0.3, 0.25); covariance entry (r, c) =
 /// 10 min(r, c) + max(r, c) + 1, so that every entry names its position.
 Estimate handMade() {
   Estimate e;
+  e.time = 12.5;
   e.state.resize(6);
   e.state << 1.0, 2.0, 0.5, 0.8, -0.3, 0.25;
   e.covariance.resize(6, 6);
@@ -40,27 +37,8 @@ sf_filter::NodeDescription description(bool accel) {
   return d;
 }
 
-/// Records what the writer declares and writes.
-struct Recorder {
-  std::vector<std::string> declared, written;
-  std::vector<geometry_msgs::AccelWithCovarianceStamped> accels;
-  std::vector<nav_msgs::Odometry> odometries;
-
-  template <class Message>
-  void declare(std::size_t k, const std::string& topic, sf_filter::OutputScope scope) {
-    declared.push_back(std::to_string(k) + " " + topic +
-                       (scope == sf_filter::OutputScope::Private ? " private" : ""));
-  }
-  template <class Message>
-  void operator()(std::size_t k, const std::string& topic, sf_filter::OutputScope,
-                  const Message& m) {
-    written.push_back(std::to_string(k) + " " + topic);
-    if constexpr (std::is_same_v<Message, geometry_msgs::AccelWithCovarianceStamped>) {
-      accels.push_back(m);
-    }
-    if constexpr (std::is_same_v<Message, nav_msgs::Odometry>) odometries.push_back(m);
-  }
-};
+using Recorder =
+    sf_test::WriterRecorder<geometry_msgs::AccelWithCovarianceStamped, nav_msgs::Odometry>;
 
 TEST(EstimateWriter, DeclaresEveryOutputInWriteOrder) {
   const sf_filter::EstimateWriter writer(description(true), {"odom", "base_link"});
@@ -77,8 +55,9 @@ TEST(EstimateWriter, AccelerationFromTheState) {
   const sf_filter::EstimateWriter writer(description(true), {"odom", "base_link"});
   Recorder r;
   writer.write(handMade(), true, r);
-  ASSERT_EQ(r.accels.size(), 1u);
-  const geometry_msgs::AccelWithCovarianceStamped& a = r.accels[0];
+  ASSERT_EQ(r.of<geometry_msgs::AccelWithCovarianceStamped>().size(), 1u);
+  const geometry_msgs::AccelWithCovarianceStamped& a =
+      r.of<geometry_msgs::AccelWithCovarianceStamped>()[0];
   EXPECT_EQ(a.header.stamp, ros::Time(12.5));
   EXPECT_EQ(a.header.frame_id, "base_link");  // the robot's frame, as robot_localization's
   EXPECT_EQ(a.accel.accel.linear.x, 0.25);
@@ -89,9 +68,9 @@ TEST(EstimateWriter, AccelerationFromTheState) {
   EXPECT_EQ(a.accel.covariance[1], 0.0);  // unknown components uncorrelated
   EXPECT_EQ(a.accel.covariance[6], 0.0);
   // The odometry of the same estimate is the one makeOdometry builds.
-  ASSERT_EQ(r.odometries.size(), 1u);
-  EXPECT_EQ(r.odometries[0].twist.twist.linear.x, 0.8);
-  EXPECT_EQ(r.odometries[0].child_frame_id, "base_link");
+  ASSERT_EQ(r.of<nav_msgs::Odometry>().size(), 1u);
+  EXPECT_EQ(r.of<nav_msgs::Odometry>()[0].twist.twist.linear.x, 0.8);
+  EXPECT_EQ(r.of<nav_msgs::Odometry>()[0].child_frame_id, "base_link");
 }
 
 TEST(EstimateWriter, NoMotionBeforeAMeasurementNoAccelerationWithoutAccelOut) {
@@ -101,7 +80,7 @@ TEST(EstimateWriter, NoMotionBeforeAMeasurementNoAccelerationWithoutAccelOut) {
   Recorder without;
   const sf_filter::EstimateWriter plain(description(false), {});
   plain.write(handMade(), true, without);
-  EXPECT_TRUE(without.accels.empty());
+  EXPECT_TRUE(without.of<geometry_msgs::AccelWithCovarianceStamped>().empty());
   EXPECT_EQ(without.written.back(), "3 odometry/filtered");
   plain.declare(without);
   EXPECT_EQ(without.declared.back(), "3 odometry/filtered");

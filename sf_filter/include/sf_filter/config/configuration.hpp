@@ -142,6 +142,12 @@
 //                               covariance from the state (requires POSE_OUT;
 //                               twist_output.hpp).                          Default: unknown
 //                               twist (zero, variance 1e6).
+//   POSE_OUT_3D                 (x)(y)(z)(q) indices, or (q) alone: nav_msgs/Odometry with the
+//                               6x6 pose covariance, the tf and the Euler angles of a
+//                               QUATERNION_STATES orientation (pose_output_3d.hpp). Default:
+//                               not published.
+//   TWIST_OUT_3D                (vx)(vy)(vz)(wx)(wy)(wz) indices: its twist in the robot's
+//                               frame with the 6x6 covariance (requires POSE_OUT_3D).
 //   ACCEL_OUT                   (a index): the forward acceleration published on accel/filtered
 //                               (geometry_msgs/AccelWithCovarianceStamped; accel_output.hpp).
 //                                                                          Default: not published.
@@ -298,6 +304,7 @@
 #include "sf_filter/config/input_covariance.hpp"
 #include "sf_filter/config/gps_inputs.hpp"
 #include "sf_filter/config/input_covariance_blocks.hpp"
+#include "sf_filter/config/pose_output_3d.hpp"  // before TWIST_OUT: its #error first
 #include "sf_filter/config/twist_output.hpp"
 #include "sf_filter/config/accel_output.hpp"
 #include "sf_filter/config/initial_from_inputs.hpp"

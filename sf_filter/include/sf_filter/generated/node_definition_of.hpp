@@ -181,6 +181,11 @@ inline NodeDefinition nodeDefinition() {
 #endif
   if constexpr (sf_config::kHasTwistOut) description.twist = sf_config::kTwistOut;
   if constexpr (sf_config::kHasAccelOut) description.accel = sf_config::kAccelOut;
+  if constexpr (sf_config::kHasPoseOut3d) {
+    const auto& p = sf_config::kPoseOut3d;
+    description.pose3d = Pose3dIndices{{p[0], p[1], p[2]}, p[3]};
+  }
+  if constexpr (sf_config::kHasTwistOut3d) description.twist3d = sf_config::kTwistOut3d;
   d.capabilities.canPredict = estimation::HasMeasurementPrediction<Filter>::value;
   d.capabilities.hasStamp.assign(sf_config::kInputHasStamp.begin(),
                                  sf_config::kInputHasStamp.end());

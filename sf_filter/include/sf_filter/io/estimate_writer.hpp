@@ -1,9 +1,9 @@
 // Every message an estimate is published as, built once from it, for the online node
 // (FusionNode::publish) and the offline replay's output bag (BagReplay::writeBag): the entities
-// of TOPICS_OUT, the ~state estimate, POSE_OUT's nav_msgs/Odometry (with TWIST_OUT's twist) and
-// ACCEL_OUT's acceleration. One writer, so that the node and the replay cannot drift apart;
-// an output kind is added here (declare and write) and in the header macro that enables it
-// (doc/design.md, "How to add an output kind").
+// of TOPICS_OUT, the ~state estimate, POSE_OUT's nav_msgs/Odometry (with TWIST_OUT's twist) or
+// POSE_OUT_3D's (with TWIST_OUT_3D's twist) and its Euler angles, and ACCEL_OUT's acceleration. One
+// writer, so that the node and the replay cannot drift apart; an output kind is added here (declare
+// and write) and in the header macro that enables it (doc/design.md, "How to add an output kind").
 #pragma once
 
 #include <cstddef>
@@ -12,6 +12,7 @@
 
 #include "sf_filter/definition/node_description.hpp"
 #include "sf_filter/io/estimate_messages.hpp"
+#include "sf_filter/io/pose_3d_messages.hpp"
 
 namespace sf_filter {
 
@@ -39,8 +40,11 @@ class EstimateWriter {
       sink.template declare<sf_msgs::OutputEntityStamped>(k++, out.first, OutputScope::Node);
     }
     sink.template declare<sf_msgs::StateEstimateStamped>(k++, "state", OutputScope::Private);
-    if (description_.pose) {
+    if (description_.hasOdometry()) {
       sink.template declare<nav_msgs::Odometry>(k++, "odometry/filtered", OutputScope::Node);
+    }
+    if (description_.pose3d) {
+      sink.template declare<geometry_msgs::Vector3Stamped>(k++, kEulerTopic, OutputScope::Node);
     }
     if (description_.accel) {
       sink.template declare<geometry_msgs::AccelWithCovarianceStamped>(k, "accel/filtered",
@@ -59,11 +63,14 @@ class EstimateWriter {
     }
     sink(k++, "state", OutputScope::Private,
          makeStateEstimate(e, description_.method, frames_.frameId));
-    if (description_.pose) {
+    if (description_.hasOdometry()) {
+      if (measured) sink(k, "odometry/filtered", OutputScope::Node, odometry(e));
+      ++k;
+    }
+    if (description_.pose3d) {
       if (measured) {
-        sink(k, "odometry/filtered", OutputScope::Node,
-             makeOdometry(e, *description_.pose, frames_.frameId, frames_.childFrameId,
-                          description_.twist));
+        sink(k, kEulerTopic, OutputScope::Node,
+             makeEuler(e, description_.pose3d->quaternion, frames_.frameId));
       }
       ++k;
     }
@@ -75,8 +82,8 @@ class EstimateWriter {
 
   /// How many outputs declare() declares (the smoothed ones are numbered after them).
   std::size_t count() const {
-    return description_.outputs.size() + 1 + (description_.pose ? 1 : 0) +
-           (description_.accel ? 1 : 0);
+    return description_.outputs.size() + 1 + (description_.hasOdometry() ? 1 : 0) +
+           (description_.pose3d ? 1 : 0) + (description_.accel ? 1 : 0);
   }
 
   /// The fixed-lag smoother's outputs (~smoothing_lag, the replay's --smooth-lag), numbered
@@ -86,7 +93,7 @@ class EstimateWriter {
   void declareSmoothed(Sink& sink) const {
     sink.template declare<sf_msgs::StateEstimateStamped>(count(), "state/smoothed",
                                                          OutputScope::Private);
-    if (description_.pose) {
+    if (description_.hasOdometry()) {
       sink.template declare<nav_msgs::Odometry>(count() + 1, "odometry/smoothed",
                                                 OutputScope::Node);
     }
@@ -98,17 +105,29 @@ class EstimateWriter {
   void writeSmoothed(const Estimate& e, bool measured, Sink& sink) const {
     sink(count(), "state/smoothed", OutputScope::Private,
          makeStateEstimate(e, description_.method, frames_.frameId));
-    if (description_.pose && measured) {
-      sink(count() + 1, "odometry/smoothed", OutputScope::Node,
-           makeOdometry(e, *description_.pose, frames_.frameId, frames_.childFrameId,
-                        description_.twist));
+    if (description_.hasOdometry() && measured) {
+      sink(count() + 1, "odometry/smoothed", OutputScope::Node, odometry(e));
     }
   }
 
   const NodeDescription& description() const { return description_; }
   const OutputFrames& frames() const { return frames_; }
 
+  /// POSE_OUT_3D's Euler angles (makeEuler), beside its odometry.
+  static constexpr const char* kEulerTopic = "fused/euler";
+
  private:
+  /// The odometry of `e`: POSE_OUT's planar one or POSE_OUT_3D's.
+  template <class Estimate>
+  nav_msgs::Odometry odometry(const Estimate& e) const {
+    if (description_.pose3d) {
+      return makeOdometry3d(e, *description_.pose3d, frames_.frameId, frames_.childFrameId,
+                            description_.twist3d);
+    }
+    return makeOdometry(e, *description_.pose, frames_.frameId, frames_.childFrameId,
+                        description_.twist);
+  }
+
   NodeDescription description_;
   OutputFrames frames_;
 };

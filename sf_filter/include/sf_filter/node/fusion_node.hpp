@@ -573,6 +573,7 @@ class FusionNode final : public MessageSink {
     t.child_frame_id = childFrameId_;
     t.transform.translation.x = odom.pose.pose.position.x;
     t.transform.translation.y = odom.pose.pose.position.y;
+    t.transform.translation.z = odom.pose.pose.position.z;  // 0 for a planar pose
     t.transform.rotation = odom.pose.pose.orientation;
     broadcaster_.sendTransform(t);
   }
@@ -611,6 +612,11 @@ class FusionNode final : public MessageSink {
     for (std::size_t i = 0; i < description_.controls.size(); ++i) {
       ROS_INFO("  control %zu: %s", i, description_.controls[i].c_str());
     }
+    logOutputs();
+  }
+
+  /// logConfiguration's outputs, in the writer's order.
+  void logOutputs() const {
     for (const auto& out : description_.outputs) {
       ROS_INFO("  output %s <- x[%d]", nh_.resolveName(out.first).c_str(), out.second);
     }
@@ -621,9 +627,14 @@ class FusionNode final : public MessageSink {
     } else {
       ROS_INFO("  diagnostics -> /diagnostics");
     }
-    if (description_.pose) {
+    if (description_.hasOdometry()) {
       ROS_INFO("  odometry -> %s, tf %s -> %s%s", publishers_.at(state + 1).getTopic().c_str(),
                frameId_.c_str(), childFrameId_.c_str(), publishTf_ ? "" : " (tf disabled)");
+    }
+    if (description_.pose3d) {
+      ROS_INFO("  Euler angles -> %s", publishers_.at(state + 2).getTopic().c_str());
+    }
+    if (description_.pose) {
       ROS_INFO("  pose resets <- %s, %s, service %s", nh_.resolveName("set_pose").c_str(),
                nh_.resolveName("initialpose").c_str(), setPoseService_.getService().c_str());
     }
@@ -632,9 +643,11 @@ class FusionNode final : public MessageSink {
                publishers_.at(writer_.count() - 1).getTopic().c_str());
     }
     if (lagged_) {
-      ROS_INFO("  smoothed with a lag of %zu periods -> %s%s%s", lagged_->lag(),
-               publishers_.at(writer_.count()).getTopic().c_str(), description_.pose ? ", " : "",
-               description_.pose ? publishers_.at(writer_.count() + 1).getTopic().c_str() : "");
+      ROS_INFO(
+          "  smoothed with a lag of %zu periods -> %s%s%s", lagged_->lag(),
+          publishers_.at(writer_.count()).getTopic().c_str(),
+          description_.hasOdometry() ? ", " : "",
+          description_.hasOdometry() ? publishers_.at(writer_.count() + 1).getTopic().c_str() : "");
     }
   }
 

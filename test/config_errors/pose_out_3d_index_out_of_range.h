@@ -1,0 +1,5 @@
+// EXPECT: POSE_OUT_3D: entry 2 '7' is not a state index, expected an integer from 0 to 6 (n = 7
+// Mistake: the state has 7 variables
+#include "valid_quaternions.h"
+
+#define POSE_OUT_3D (4)(5)(7)(0)
