@@ -283,6 +283,7 @@
 #define SF_CONFIG_OK 1
 #include "sf_filter/config/detail/angles.hpp"
 #include "sf_filter/config/detail/quaternions.hpp"  // after the angles, before the checks
+#include "sf_filter/config/detail/quaternion_inputs.hpp"
 #include "sf_filter/config/detail/checks.hpp"
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/input_alignment.hpp"

@@ -109,26 +109,34 @@ constexpr bool startsQuaternion(int i) {
 
 namespace mf = estimation::manifold;
 
-/// The layout of the stored entries from `At` on, appended to Blocks.
-template <bool Done, int At, class... Blocks>
+/// The layout of `Size` stored entries from `At` on, appended to Blocks: an So3WorldBlock where
+/// Kinds::quaternionAt(i), an So2Block where Kinds::angleAt(i), VectorBlock<1> otherwise (the
+/// state's layout here, the measurement's in quaternion_inputs.hpp).
+template <class Kinds, int Size, bool Done, int At, class... Blocks>
 struct LayoutFrom {
   using type = mf::StateLayout<Blocks...>;
 };
-template <int At, class... Blocks>
-struct LayoutFrom<false, At, Blocks...> {
+template <class Kinds, int Size, int At, class... Blocks>
+struct LayoutFrom<Kinds, Size, false, At, Blocks...> {
   // A quaternion past the end is reported by its entry's check; here it is left flat.
-  using Block = std::conditional_t<startsQuaternion(At) && At + 4 <= kStateSize, mf::So3WorldBlock,
-                                   std::conditional_t<kAngleStates[static_cast<std::size_t>(At)],
-                                                      mf::So2Block, mf::VectorBlock<1>>>;
+  using Block =
+      std::conditional_t<Kinds::quaternionAt(At) && At + 4 <= Size, mf::So3WorldBlock,
+                         std::conditional_t<Kinds::angleAt(At), mf::So2Block, mf::VectorBlock<1>>>;
   static constexpr int kNext = At + Block::StoredSize;
-  using type = typename LayoutFrom<(kNext >= kStateSize), kNext, Blocks..., Block>::type;
+  using type = typename LayoutFrom<Kinds, Size, (kNext >= Size), kNext, Blocks..., Block>::type;
+};
+
+struct StateKinds {
+  static constexpr bool quaternionAt(int i) { return startsQuaternion(i); }
+  static constexpr bool angleAt(int i) { return kAngleStates[static_cast<std::size_t>(i)]; }
 };
 
 }  // namespace quaternions_detail
 
 constexpr bool kHasQuaternionStates = true;
 /// The state's blocks: what EXTENDED_KALMAN_FILTER and UNSCENTED_KALMAN_FILTER run on.
-using StateLayout = quaternions_detail::LayoutFrom<false, 0>::type;
+using StateLayout =
+    quaternions_detail::LayoutFrom<quaternions_detail::StateKinds, kStateSize, false, 0>::type;
 constexpr int kTangentSize = StateLayout::TangentSize;
 
 /// A tangent-space covariance (the header's Q or P0) in the n x n form of the node's
