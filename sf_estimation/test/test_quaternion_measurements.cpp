@@ -103,6 +103,18 @@ TEST(QuaternionMeasurements, AMissingQuaternionLeavesItsRowsOut) {
   EXPECT_NEAR(ekf.state()(4), 1.0 + kHeightP / (kHeightP + kHeightR) * 2.0, 1e-12);
 }
 
+TEST(QuaternionMeasurements, AQuaternionWithAMissingComponentIsLeftOutWhole) {
+  const Scene s;
+  for (int missing = 0; missing < 4; ++missing) {
+    Ekf ekf(HeldPose(), s.Q, s.R, s.x0, s.P0);
+    Measurement<5> z = s.reading(1.0, 3.0);
+    z.available(missing) = false;
+    z.value(missing) = 0.0;  // what a missing entry may hold
+    ekf.estimate(z);
+    EXPECT_LT((ekf.state().head<4>() - s.x0.head<4>()).norm(), 1e-15) << "missing " << missing;
+  }
+}
+
 TEST(QuaternionMeasurements, MessageCovarianceOnTheTangentRowsIsUsed) {
   const Scene s;
   Ekf ekf(HeldPose(), s.Q, s.R, s.x0, s.P0);

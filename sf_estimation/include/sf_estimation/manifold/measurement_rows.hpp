@@ -51,8 +51,16 @@ struct MeasurementRows {
     H = out;
   }
 
-  /// Marks the rows without a tangent coordinate missing (see the top of the file).
+  /// Marks missing the rows without a tangent coordinate (see the top of the file) and every
+  /// row of a rotation with a missing component: a quaternion is read whole or not at all.
   static void withoutTangentFreeRows(Measurement<M>& z) {
+    Layout::forEachBlock([&](auto block, auto at, auto) {
+      using B = decltype(block);
+      if constexpr (!B::IsFlat) {
+        if (!z.available.template segment<B::StoredSize>(at).all())
+          z.available.template segment<B::StoredSize>(at).setConstant(false);
+      }
+    });
     const std::array<bool, M> free = tangentFree();
     for (int i = 0; i < M; ++i) z.available(i) = z.available(i) && !free[i];
   }
