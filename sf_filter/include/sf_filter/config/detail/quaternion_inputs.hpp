@@ -27,6 +27,7 @@
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/option_entries.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
+#include "sf_filter/config/detail/quaternion_spans.hpp"
 #include "sf_filter/config/detail/quaternions.hpp"
 #include "sf_filter/config/detail/topics.hpp"
 
@@ -93,17 +94,11 @@ constexpr bool oneTopic(int start) {
 /// The first of the entries before `entry` whose quaternion shares an input with the one at
 /// `start`, or -1.
 constexpr int overlappedEntry(int start, int entry) {
-  for (int k = 0; k < entry; ++k) {
-    if (kStarts[k] <= start + 3 && start <= kStarts[k] + 3) return k;
-  }
-  return -1;
+  return detail::overlappedQuaternion(kStarts, start, entry);
 }
 
 constexpr bool overlapsAngleInput(int start) {
-  for (int i = start; i < start + 4 && i < kMeasurementSize; ++i) {
-    if (i >= 0 && kAngleInputs[static_cast<std::size_t>(i)]) return true;
-  }
-  return false;
+  return detail::quaternionHitsFlag(kAngleInputs, start);
 }
 
 SF_OPTION_ENTRIES(SF_QUATERNION_INPUTS_OK, SF_QUATERNION_INPUT_ENTRY, ~, QUATERNION_INPUTS)

@@ -24,6 +24,7 @@
 #include "sf_filter/config/detail/angles.hpp"
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
+#include "sf_filter/config/detail/quaternion_spans.hpp"
 
 // clang-format off
 
@@ -85,17 +86,11 @@ SF_OPTION_INDICES(1, kStarts, SF_ANGLE_INDEX, QUATERNION_STATES)
 /// The first of the entries before `entry` whose quaternion shares a state with the one at
 /// `start`, or -1.
 constexpr int overlappedEntry(int start, int entry) {
-  for (int k = 0; k < entry; ++k) {
-    if (kStarts[k] <= start + 3 && start <= kStarts[k] + 3) return k;
-  }
-  return -1;
+  return detail::overlappedQuaternion(kStarts, start, entry);
 }
 
 constexpr bool overlapsAngleState(int start) {
-  for (int i = start; i < start + 4 && i < kStateSize; ++i) {
-    if (i >= 0 && kAngleStates[static_cast<std::size_t>(i)]) return true;
-  }
-  return false;
+  return detail::quaternionHitsFlag(kAngleStates, start);
 }
 
 BOOST_PP_SEQ_FOR_EACH_I(SF_QUATERNION_ENTRY, ~, QUATERNION_STATES)
