@@ -103,16 +103,24 @@ TEST(QuaternionMeasurements, AMissingQuaternionLeavesItsRowsOut) {
   EXPECT_NEAR(ekf.state()(4), 1.0 + kHeightP / (kHeightP + kHeightR) * 2.0, 1e-12);
 }
 
-TEST(QuaternionMeasurements, AQuaternionWithAMissingComponentIsLeftOutWhole) {
+template <class Filter, class... Own>
+void expectLeftOutWholeWhenAComponentIsMissing(const Own&... own) {
   const Scene s;
   for (int missing = 0; missing < 4; ++missing) {
-    Ekf ekf(HeldPose(), s.Q, s.R, s.x0, s.P0);
+    Filter filter(HeldPose(), s.Q, s.R, s.x0, s.P0, own...);
     Measurement<5> z = s.reading(1.0, 3.0);
     z.available(missing) = false;
     z.value(missing) = 0.0;  // what a missing entry may hold
-    ekf.estimate(z);
-    EXPECT_LT((ekf.state().head<4>() - s.x0.head<4>()).norm(), 1e-15) << "missing " << missing;
+    filter.estimate(z);
+    EXPECT_LT((filter.state().template head<4>() - s.x0.template head<4>()).norm(), 1e-12)
+        << "missing " << missing;
+    EXPECT_TRUE(filter.state().allFinite());
   }
+}
+
+TEST(QuaternionMeasurements, AQuaternionWithAMissingComponentIsLeftOutWhole) {
+  expectLeftOutWholeWhenAComponentIsMissing<Ekf>();
+  expectLeftOutWholeWhenAComponentIsMissing<Ukf>(estimation::ManifoldUnscentedParameters());
 }
 
 TEST(QuaternionMeasurements, MessageCovarianceOnTheTangentRowsIsUsed) {
