@@ -33,7 +33,9 @@
 // 1e-4 T, angular acceleration 0.5 T (rad/s)^2 and jerk 2 T (m/s^2)^2 (a body whose motion
 // changes within a second). P0: 100 m^2 on the position (the first positions set it), 1 rad^2
 // on the orientation, 1 on the rates. METHOD is the EKF unless the including file defines
-// another one first.
+// another one first. A file that defines IMU_ODOMETRY_3D_POSE_ORIENTATION before including this
+// one also reads the vision pose's orientation as a measured quaternion, inputs 15..18
+// (QUATERNION_INPUTS; config/imu_odometry_pose_3d.h).
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
@@ -45,6 +47,22 @@
 #define ESTIMATION_PERIOD 10
 #define IMU_ODOMETRY_3D_GRAVITY 9.80665
 #define QUATERNION_STATES (3)
+#ifdef IMU_ODOMETRY_3D_POSE_ORIENTATION
+// The vision pose's orientation w, x, y, z = q, compared on SO(3); R: w row 0, the rotation
+// vector's 0.01 rad (1e-4 rad^2) about the world's axes.
+#define QUATERNION_INPUTS (15)
+#define IMU_ODOMETRY_3D_ORIENTATION_ROWS (x[3])(x[4])(x[5])(x[6])
+#define IMU_ODOMETRY_3D_ORIENTATION_NOISE (0)(1e-4)(1e-4)(1e-4)
+#define IMU_ODOMETRY_3D_ORIENTATION_INPUTS \
+  ((vision/pose)(geometry_msgs::PoseWithCovarianceStamped)(pose.pose.orientation.w)) \
+  ((vision/pose)(geometry_msgs::PoseWithCovarianceStamped)(pose.pose.orientation.x)) \
+  ((vision/pose)(geometry_msgs::PoseWithCovarianceStamped)(pose.pose.orientation.y)) \
+  ((vision/pose)(geometry_msgs::PoseWithCovarianceStamped)(pose.pose.orientation.z))
+#else
+#define IMU_ODOMETRY_3D_ORIENTATION_ROWS
+#define IMU_ODOMETRY_3D_ORIENTATION_NOISE
+#define IMU_ODOMETRY_3D_ORIENTATION_INPUTS
+#endif
 #define IMU_ODOMETRY_3D_STEP(k) \
   quat_rotate(x, 3, k, x[7] * T + 0.5 * x[13] * T * T, x[8] * T + 0.5 * x[14] * T * T, \
               x[9] * T + 0.5 * x[15] * T * T)
@@ -69,14 +87,15 @@
   (x[15] + IMU_ODOMETRY_3D_GRAVITY_IN_BODY(2)) \
   (x[7])(x[8])(x[9]) \
   (x[10])(x[11])(x[12]) \
-  (x[0])(x[1])(x[2])
+  (x[0])(x[1])(x[2]) \
+  IMU_ODOMETRY_3D_ORIENTATION_ROWS
 // Over the tangent space: p, q (3 rows, rad^2), v, omega, a.
 #define PROCESS_NOISE_COVARIANCE \
   SF_DIAGONAL((1e-6 * T)(1e-6 * T)(1e-6 * T)(1e-6 * T)(1e-6 * T)(1e-6 * T) \
               (1e-4 * T)(1e-4 * T)(1e-4 * T)(0.5 * T)(0.5 * T)(0.5 * T)(2 * T)(2 * T)(2 * T))
 #define MEASUREMENT_NOISE_COVARIANCE \
   SF_DIAGONAL((2.5e-5)(2.5e-5)(2.5e-5)(2.5e-3)(2.5e-3)(2.5e-3)(4e-4)(4e-4)(4e-4) \
-              (1e-4)(1e-4)(1e-4)(1e-4)(1e-4)(1e-4))
+              (1e-4)(1e-4)(1e-4)(1e-4)(1e-4)(1e-4) IMU_ODOMETRY_3D_ORIENTATION_NOISE)
 #define INITIAL_STATE (0)(0)(0)(1)(0)(0)(0)(0)(0)(0)(0)(0)(0)(0)(0)(0)
 #define INITIAL_ERROR_COVARIANCE \
   SF_DIAGONAL((100)(100)(100)(1)(1)(1)(1)(1)(1)(1)(1)(1)(1)(1)(1))
@@ -95,7 +114,8 @@
   ((odom)(nav_msgs::Odometry)(twist.twist.angular.z)) \
   ((vision/pose)(geometry_msgs::PoseWithCovarianceStamped)(pose.pose.position.x)) \
   ((vision/pose)(geometry_msgs::PoseWithCovarianceStamped)(pose.pose.position.y)) \
-  ((vision/pose)(geometry_msgs::PoseWithCovarianceStamped)(pose.pose.position.z))
+  ((vision/pose)(geometry_msgs::PoseWithCovarianceStamped)(pose.pose.position.z)) \
+  IMU_ODOMETRY_3D_ORIENTATION_INPUTS
 #define TOPICS_OUT \
   ((fused/position/x)(0))((fused/position/y)(1))((fused/position/z)(2)) \
   ((fused/orientation/w)(3))((fused/orientation/x)(4))((fused/orientation/y)(5)) \

@@ -5,7 +5,8 @@
 // on the tangent, f(x, u) [+] w (AdditiveNoiseModel), so its Jacobian G is the identity and
 // only F = d/de [f(x [+] e, u) [-] f(x, u)] at e = 0 is differentiated (AutoDiff of the
 // model's code): P <- F P F^T + Q; the Joseph-form correction of the tangent error by the
-// present entries of z - h(x) (angles wrapped), then x <- x [+] K nu.
+// present entries of z - h(x) (angles wrapped; the measurement layout's rotations as z [-] h(x),
+// measurement_rows.hpp), then x <- x [+] K nu.
 #pragma once
 
 #include <Eigen/Core>
@@ -14,17 +15,20 @@
 #include "sf_estimation/kalman_correction.hpp"
 #include "sf_estimation/manifold/additive_noise_model.hpp"
 #include "sf_estimation/manifold/flat_interface.hpp"
+#include "sf_estimation/manifold/measurement_rows.hpp"
 #include "sf_estimation/manifold_extended_kalman_filter.hpp"
 #include "sf_estimation/measurement_noise.hpp"
 #include "sf_estimation/measurement_prediction.hpp"
 
 namespace estimation {
 
-template <class FlatModel, class Layout>
+template <class FlatModel, class Layout,
+          class MeasurementLayout = manifold::FlatLayout<FlatModel::MeasurementSize>>
 class LayoutExtendedKalmanFilter
-    : public manifold::FlatInterface<
-          ManifoldExtendedKalmanFilter<manifold::AdditiveNoiseModel<FlatModel, Layout>>> {
-  using LayoutModel = manifold::AdditiveNoiseModel<FlatModel, Layout>;
+    : public manifold::FlatInterface<ManifoldExtendedKalmanFilter<
+          manifold::AdditiveNoiseModel<FlatModel, Layout, MeasurementLayout>>> {
+  using LayoutModel = manifold::AdditiveNoiseModel<FlatModel, Layout, MeasurementLayout>;
+  using Rows = manifold::MeasurementRows<MeasurementLayout>;
   using Manifold = ManifoldExtendedKalmanFilter<LayoutModel>;
   using Interface = manifold::FlatInterface<Manifold>;
   static constexpr int N = Interface::StateSize, M = Interface::MeasurementSize;
@@ -49,14 +53,14 @@ class LayoutExtendedKalmanFilter
       Matrix<M, D> H;
       Vector<M> expected;
       Manifold::observationJacobianAt(this->model_, x, expected, H);
-      Vector<M> y = z.value - expected;
-      this->angleMeasurements_.wrap(y);
-      neutraliseMissing(z, y, H);
-      Matrix<M, M> R;
-      effectiveMeasurementNoise(this->R_, z, R);
-      Vector<D> correction = Vector<D>::Zero();
-      linearCorrection<D, M>(correction, P, H, y, R);
-      x = Layout::template plus<double>(x, correction);
+      if constexpr (MeasurementLayout::IsFlat) {
+        correct(z, z.value - expected, H, x, P);
+      } else {
+        Measurement<M> present = z;
+        Rows::withoutTangentFreeRows(present);
+        Rows::tangentRows(expected, H);
+        correct(present, Rows::innovation(z.value, expected), H, x, P);
+      }
     }
     this->commit(x, P);
   }
@@ -78,6 +82,18 @@ class LayoutExtendedKalmanFilter
   const FlatModel& model() const { return this->model_.flat; }
 
  private:
+  /// The Joseph-form correction of (x, P) by the present entries of the innovation y.
+  void correct(const Measurement<M>& z, Vector<M> y, Matrix<M, D>& H, State& x,
+               Covariance& P) const {
+    this->angleMeasurements_.wrap(y);
+    neutraliseMissing(z, y, H);
+    Matrix<M, M> R;
+    effectiveMeasurementNoise(this->R_, z, R);
+    Vector<D> correction = Vector<D>::Zero();
+    linearCorrection<D, M>(correction, P, H, y, R);
+    x = Layout::template plus<double>(x, correction);
+  }
+
   /// x(k|k-1) = f(x, u) (normalised), P(k|k-1) = F P F^T + Q.
   void predict(State& x, Covariance& P) const {
     Matrix<D, D> F;

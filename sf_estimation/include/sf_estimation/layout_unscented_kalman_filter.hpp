@@ -6,21 +6,26 @@
 // x [+] xi_j of the predicted belief, the deviations h(x [+] xi_j) - h(x) (angles wrapped)
 // give z^ = h(x) + their mean, Pzz and Pxz, and the flat filters' cross-covariance
 // correction of the tangent error uses the present entries of z only; then x <- x [+] K nu.
+// The measurement layout's rotations (measurement_rows.hpp) are compared as z [-] h: their
+// deviations are h(x [+] xi_j) [-] h(x) and the innovation (z [-] h(x)) - their mean.
 #pragma once
 
 #include "sf_estimation/kalman_correction.hpp"
 #include "sf_estimation/manifold/additive_noise_model.hpp"
 #include "sf_estimation/manifold/flat_interface.hpp"
+#include "sf_estimation/manifold/measurement_rows.hpp"
 #include "sf_estimation/manifold_unscented_kalman_filter.hpp"
 #include "sf_estimation/measurement_prediction.hpp"
 
 namespace estimation {
 
-template <class FlatModel, class Layout>
+template <class FlatModel, class Layout,
+          class MeasurementLayout = manifold::FlatLayout<FlatModel::MeasurementSize>>
 class LayoutUnscentedKalmanFilter
-    : public manifold::FlatInterface<
-          ManifoldUnscentedKalmanFilter<manifold::AdditiveNoiseModel<FlatModel, Layout>>> {
-  using LayoutModel = manifold::AdditiveNoiseModel<FlatModel, Layout>;
+    : public manifold::FlatInterface<ManifoldUnscentedKalmanFilter<
+          manifold::AdditiveNoiseModel<FlatModel, Layout, MeasurementLayout>>> {
+  using LayoutModel = manifold::AdditiveNoiseModel<FlatModel, Layout, MeasurementLayout>;
+  using Rows = manifold::MeasurementRows<MeasurementLayout>;
   using Manifold = ManifoldUnscentedKalmanFilter<LayoutModel>;
   using Interface = manifold::FlatInterface<Manifold>;
   static constexpr int N = Interface::StateSize, M = Interface::MeasurementSize;
@@ -57,7 +62,10 @@ class LayoutUnscentedKalmanFilter
     LayoutUnscentedKalmanFilter predicted = *this;
     predicted.Manifold::predict(this->u_);
     Matrix<D, M> Pxz;
-    predicted.measurementMoments(out.mean, out.covariance, Pxz);
+    Vector<M> deviationMean;
+    predicted.measurementMoments(out.mean, deviationMean, out.covariance, Pxz);
+    out.mean += deviationMean;
+    this->angleMeasurements_.wrap(out.mean);
     out.noise = this->R_;
     out.angular = this->angleMeasurements_.mask();
   }
@@ -65,35 +73,48 @@ class LayoutUnscentedKalmanFilter
   const FlatModel& model() const { return this->model_.flat; }
 
  private:
-  /// z^ = h(x) + mean deviation, Pzz (R not included) and Pxz of the current belief.
-  void measurementMoments(Vector<M>& mean, Matrix<M, M>& Pzz, Matrix<D, M>& Pxz) {
+  /// h(x), the mean deviation, Pzz (R not included) and Pxz of the current belief.
+  void measurementMoments(Vector<M>& central, Vector<M>& deviationMean, Matrix<M, M>& Pzz,
+                          Matrix<D, M>& Pxz) {
     Matrix<D, 2 * D> xis;
     this->sigmaPoints(this->P_, this->updateWeights_, xis);
-    Vector<M> central, zj;
+    Vector<M> zj;
     this->model_.observation(this->x_, central);
     Matrix<M, 2 * D> deviations;
     for (Index j = 0; j < 2 * D; ++j) {
       this->model_.observation(Layout::template plus<double>(this->x_, xis.col(j)), zj);
-      deviations.col(j) = zj - central;
+      if constexpr (MeasurementLayout::IsFlat) {
+        deviations.col(j) = zj - central;
+      } else {
+        deviations.col(j) = Rows::innovation(zj, central);
+      }
     }
     this->angleMeasurements_.wrap(deviations);
-    Vector<M> deviationMean;
     manifold::unscentedMoments<M, 2 * D>(deviations, this->updateWeights_, deviationMean, Pzz);
     const Matrix<M, 2 * D> centred = deviations.colwise() - deviationMean;
     Pxz.noalias() = this->updateWeights_.point * xis * centred.transpose();
-    mean = central + deviationMean;
-    this->angleMeasurements_.wrap(mean);
   }
 
   void correct(const Measurement<M>& z) {
-    Vector<M> mean;
+    Vector<M> mean, deviationMean;
     Matrix<M, M> Pzz;
     Matrix<D, M> Pxz;
-    measurementMoments(mean, Pzz, Pxz);
+    measurementMoments(mean, deviationMean, Pzz, Pxz);
     Vector<D> correction = Vector<D>::Zero();
     Covariance P = this->P_;
-    crossCovarianceCorrection<D, M>(z, mean, this->angleMeasurements_, this->R_, Pxz, Pzz,
-                                    correction, P);
+    if constexpr (MeasurementLayout::IsFlat) {
+      mean += deviationMean;
+      this->angleMeasurements_.wrap(mean);
+      crossCovarianceCorrection<D, M>(z, mean, this->angleMeasurements_, this->R_, Pxz, Pzz,
+                                      correction, P);
+    } else {
+      // The innovation (z [-] h(x)) - deviation mean, as the flat one is z - (h(x) + mean).
+      Measurement<M> about = z;
+      about.value = Rows::innovation(z.value, mean);
+      Rows::withoutTangentFreeRows(about);
+      crossCovarianceCorrection<D, M>(about, deviationMean, this->angleMeasurements_, this->R_, Pxz,
+                                      Pzz, correction, P);
+    }
     State x = Layout::template plus<double>(this->x_, correction);
     this->commit(x, P);
   }

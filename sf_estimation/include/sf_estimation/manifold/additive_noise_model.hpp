@@ -2,7 +2,8 @@
 // entries) as a model of the manifold filters (manifold_filter_base.hpp): the process noise is
 // a tangent vector added by the layout's retraction, next = f(x, u) [+] w, so that Q is over
 // the tangent space (a quaternion's three rows in rad^2) and f's quaternion is renormalised.
-// The measurement is the flat vector of the model's inputs.
+// The measurement is the flat vector of the model's inputs; MeasurementLayout says which of its
+// rows the layout filters compare on a manifold (measurement_rows.hpp), flat by default.
 #pragma once
 
 #include <utility>
@@ -13,12 +14,16 @@
 namespace estimation {
 namespace manifold {
 
-template <class FlatModel, class Layout>
+template <class FlatModel, class Layout,
+          class MeasurementLayout_ = FlatLayout<FlatModel::MeasurementSize>>
 struct AdditiveNoiseModel {
   static_assert(FlatModel::StateSize == Layout::StoredSize,
                 "AdditiveNoiseModel: the layout must store exactly the model's state");
   using StateSpace = Layout;
   using MeasurementSpace = FlatLayout<FlatModel::MeasurementSize>;
+  using MeasurementLayout = MeasurementLayout_;
+  static_assert(MeasurementLayout::StoredSize == FlatModel::MeasurementSize,
+                "AdditiveNoiseModel: the measurement layout must store exactly the model's z");
   static constexpr int NoiseSize = Layout::TangentSize;
   static constexpr int ControlSize = FlatModel::ControlSize;
   static constexpr int N = Layout::StoredSize, D = Layout::TangentSize;

@@ -4,15 +4,18 @@
 // unchanged. Covariances cross the interface in LayoutEmbedding's form: Q, P0, setBelief's P
 // and covariance() are N x N with the tangent rows on the stored entries (a quaternion's x, y,
 // z rows in rad^2, its w row zero). Angle states are the layout's So2Blocks; the run-time
-// angle measurements are wrapped as in the flat filters.
+// angle measurements are wrapped as in the flat filters. R is M x M over the stored
+// measurement; a measured quaternion's w row and column must be zero (measurement_rows.hpp).
 #pragma once
 
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "sf_estimation/angles.hpp"
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/manifold/layout_embedding.hpp"
+#include "sf_estimation/manifold/measurement_rows.hpp"
 #include "sf_estimation/measurement.hpp"
 #include "sf_estimation/parameter_checks.hpp"
 
@@ -23,6 +26,8 @@ template <class ManifoldFilter>
 class FlatInterface : public ManifoldFilter {
   using Base = ManifoldFilter;
   using Embedding = LayoutEmbedding<typename Base::StateSpace>;
+  using Rows = MeasurementRows<
+      typename std::decay_t<decltype(std::declval<const Base&>().model())>::MeasurementLayout>;
 
  public:
   static constexpr int StateSize = Base::StoredSize;
@@ -69,8 +74,8 @@ class FlatInterface : public ManifoldFilter {
   FlatInterface(const AngularComponents& angles, Model model, const StoredMatrix& Q,
                 const typename Base::MeasurementNoise& R, const Vector<StateSize>& x0,
                 const StoredMatrix& P0, Own&&... own)
-      : Base(std::move(model), tangentOf("Q", Q), R, x0, tangentOf("P0", P0),
-             std::forward<Own>(own)...),
+      : Base(std::move(model), tangentOf("Q", Q), Rows::storedNoise("R", R), x0,
+             tangentOf("P0", P0), std::forward<Own>(own)...),
         x0_(this->x_),
         P0_(this->P_),
         u_(Vector<ControlSize>::Zero()),

@@ -131,6 +131,9 @@
 //                               wrapped to (-pi, pi], averaged on the circle. Default none.
 //   ANGLE_INPUTS                (i)(j)...: TOPICS_IN entries measuring an angle in radians;
 //                               their innovations are wrapped.             Default none.
+//   QUATERNION_INPUTS           (i)(j)...: TOPICS_IN entries i..i+3 are the w, x, y, z of one
+//                               measured quaternion, compared on SO(3) (QUATERNION_STATES, EKF,
+//                               UKF; quaternion_inputs.hpp).               Default none.
 //   DERIVED_INPUTS              ((i)(quantity)(mode)) per TOPICS_IN entry whose field is a
 //                               quaternion or pose member: quantity X Y Z (pose position) or
 //                               ROLL PITCH YAW (angle inputs automatically), mode ABSOLUTE or
@@ -289,6 +292,7 @@
 #define SF_CONFIG_OK 1
 #include "sf_filter/config/detail/angles.hpp"
 #include "sf_filter/config/detail/quaternions.hpp"  // after the angles, before the checks
+#include "sf_filter/config/detail/quaternion_inputs.hpp"
 #include "sf_filter/config/detail/checks.hpp"
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/input_alignment.hpp"

@@ -43,6 +43,7 @@
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/option_entries.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
+#include "sf_filter/config/detail/quaternion_inputs.hpp"
 #include "sf_filter/config/detail/support.hpp"
 #include "sf_filter/config/detail/topics.hpp"
 #include "sf_filter/core/input_options.hpp"
@@ -279,10 +280,45 @@ constexpr bool kHasInputAlignment = SF_AL_OK;
 constexpr bool kHasInputGate = SF_GATE_OK;
 constexpr bool kHasAlignByStamp = SF_STAMP_OK;
 
-/// INPUT_ALIGNMENT per input (TOPICS_IN order); AVERAGE for inputs it does not list.
+namespace input_alignment_detail {
+/// INPUT_ALIGNMENT's entries, LAST for the QUATERNION_INPUTS it does not list (a period's
+/// readings of a quaternion are not averaged component by component: q and -q would cancel),
+/// AVERAGE for the other inputs it does not list.
+constexpr std::array<::sf_filter::AlignmentPolicy, kMeasurementSize> makeInputAlignment() {
+  std::array<::sf_filter::AlignmentPolicy, kMeasurementSize> policies =
+      SF_OPTION_VALUES(::sf_filter::AlignmentPolicy, kMeasurementSize,
+                       ::sf_filter::AlignmentPolicy{}, SF_AL_OK, AlignmentEntry, INPUT_ALIGNMENT);
+  for (int i = 0; i < kMeasurementSize; ++i) {
+    if (isQuaternionInput(i) && detail::entryNaming(kAlignmentIndices, i) < 0) {
+      policies[static_cast<std::size_t>(i)] = ::sf_filter::AlignmentPolicy::last();
+    }
+  }
+  return policies;
+}
+}  // namespace input_alignment_detail
+
+/// INPUT_ALIGNMENT per input (TOPICS_IN order); for inputs it does not list AVERAGE, or LAST
+/// for a QUATERNION_INPUTS component.
 inline constexpr std::array<::sf_filter::AlignmentPolicy, kMeasurementSize> kInputAlignment =
-    SF_OPTION_VALUES(::sf_filter::AlignmentPolicy, kMeasurementSize, ::sf_filter::AlignmentPolicy{},
-                     SF_AL_OK, input_alignment_detail::AlignmentEntry, INPUT_ALIGNMENT);
+    input_alignment_detail::makeInputAlignment();
+
+namespace input_alignment_detail {
+/// The first QUATERNION_INPUTS component aligned otherwise than LAST or SAMPLED, or -1.
+constexpr int averagedQuaternionInput() {
+  for (int i = 0; i < kMeasurementSize; ++i) {
+    const ::sf_filter::AlignmentKind kind = kInputAlignment[static_cast<std::size_t>(i)].kind;
+    if (isQuaternionInput(i) && kind != ::sf_filter::AlignmentKind::Last &&
+        kind != ::sf_filter::AlignmentKind::Sampled)
+      return i;
+  }
+  return -1;
+}
+static_assert(averagedQuaternionInput() < 0,
+              "QUATERNION_INPUTS: an INPUT_ALIGNMENT entry averages or extrapolates a measured "
+              "quaternion's component (AVERAGE, HOLD or FILL); a quaternion's components are "
+              "taken together as read, LAST (its default) or SAMPLED: averaging them one by one "
+              "leaves the rotation group and mixes q and -q");
+}  // namespace input_alignment_detail
 /// INPUT_GATE per input; infinity for inputs without gate.
 inline constexpr std::array<double, kMeasurementSize> kGateThresholds =
     SF_OPTION_VALUES(double, kMeasurementSize, std::numeric_limits<double>::infinity(), SF_GATE_OK,

@@ -24,6 +24,7 @@
 #include "sf_filter/config/detail/angles.hpp"
 #include "sf_filter/config/detail/constants.hpp"
 #include "sf_filter/config/detail/preprocessor.hpp"
+#include "sf_filter/config/detail/quaternion_spans.hpp"
 
 // clang-format off
 
@@ -85,17 +86,11 @@ SF_OPTION_INDICES(1, kStarts, SF_ANGLE_INDEX, QUATERNION_STATES)
 /// The first of the entries before `entry` whose quaternion shares a state with the one at
 /// `start`, or -1.
 constexpr int overlappedEntry(int start, int entry) {
-  for (int k = 0; k < entry; ++k) {
-    if (kStarts[k] <= start + 3 && start <= kStarts[k] + 3) return k;
-  }
-  return -1;
+  return detail::overlappedQuaternion(kStarts, start, entry);
 }
 
 constexpr bool overlapsAngleState(int start) {
-  for (int i = start; i < start + 4 && i < kStateSize; ++i) {
-    if (i >= 0 && kAngleStates[static_cast<std::size_t>(i)]) return true;
-  }
-  return false;
+  return detail::quaternionHitsFlag(kAngleStates, start);
 }
 
 BOOST_PP_SEQ_FOR_EACH_I(SF_QUATERNION_ENTRY, ~, QUATERNION_STATES)
@@ -109,26 +104,34 @@ constexpr bool startsQuaternion(int i) {
 
 namespace mf = estimation::manifold;
 
-/// The layout of the stored entries from `At` on, appended to Blocks.
-template <bool Done, int At, class... Blocks>
+/// The layout of `Size` stored entries from `At` on, appended to Blocks: an So3WorldBlock where
+/// Kinds::quaternionAt(i), an So2Block where Kinds::angleAt(i), VectorBlock<1> otherwise (the
+/// state's layout here, the measurement's in quaternion_inputs.hpp).
+template <class Kinds, int Size, bool Done, int At, class... Blocks>
 struct LayoutFrom {
   using type = mf::StateLayout<Blocks...>;
 };
-template <int At, class... Blocks>
-struct LayoutFrom<false, At, Blocks...> {
+template <class Kinds, int Size, int At, class... Blocks>
+struct LayoutFrom<Kinds, Size, false, At, Blocks...> {
   // A quaternion past the end is reported by its entry's check; here it is left flat.
-  using Block = std::conditional_t<startsQuaternion(At) && At + 4 <= kStateSize, mf::So3WorldBlock,
-                                   std::conditional_t<kAngleStates[static_cast<std::size_t>(At)],
-                                                      mf::So2Block, mf::VectorBlock<1>>>;
+  using Block =
+      std::conditional_t<Kinds::quaternionAt(At) && At + 4 <= Size, mf::So3WorldBlock,
+                         std::conditional_t<Kinds::angleAt(At), mf::So2Block, mf::VectorBlock<1>>>;
   static constexpr int kNext = At + Block::StoredSize;
-  using type = typename LayoutFrom<(kNext >= kStateSize), kNext, Blocks..., Block>::type;
+  using type = typename LayoutFrom<Kinds, Size, (kNext >= Size), kNext, Blocks..., Block>::type;
+};
+
+struct StateKinds {
+  static constexpr bool quaternionAt(int i) { return startsQuaternion(i); }
+  static constexpr bool angleAt(int i) { return kAngleStates[static_cast<std::size_t>(i)]; }
 };
 
 }  // namespace quaternions_detail
 
 constexpr bool kHasQuaternionStates = true;
 /// The state's blocks: what EXTENDED_KALMAN_FILTER and UNSCENTED_KALMAN_FILTER run on.
-using StateLayout = quaternions_detail::LayoutFrom<false, 0>::type;
+using StateLayout =
+    quaternions_detail::LayoutFrom<quaternions_detail::StateKinds, kStateSize, false, 0>::type;
 constexpr int kTangentSize = StateLayout::TangentSize;
 
 /// A tangent-space covariance (the header's Q or P0) in the n x n form of the node's

@@ -48,7 +48,8 @@ namespace sf_filter {
 namespace generated {
 
 #if SF_CFG_HAS_QUATERNION_STATES
-using Filter = estimation::LayoutExtendedKalmanFilter<sf_config::Model, sf_config::StateLayout>;
+using Filter = estimation::LayoutExtendedKalmanFilter<sf_config::Model, sf_config::StateLayout,
+                                                      sf_config::MeasurementLayout>;
 #else
 using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
 #endif

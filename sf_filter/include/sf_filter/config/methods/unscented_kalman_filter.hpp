@@ -98,7 +98,8 @@ static_assert((UKF_PROPAGATED_MEAN) == 1,
 namespace sf_filter {
 namespace generated {
 
-using Filter = estimation::LayoutUnscentedKalmanFilter<sf_config::Model, sf_config::StateLayout>;
+using Filter = estimation::LayoutUnscentedKalmanFilter<sf_config::Model, sf_config::StateLayout,
+                                                       sf_config::MeasurementLayout>;
 inline Filter makeFilter(const sf_config::Parameters& p) {
   if (!p.ukf_propagated_mean) {
     throw estimation::ParameterError(

@@ -1,0 +1,153 @@
+// A measured quaternion in the layout filters (measurement_rows.hpp, the node's
+// QUATERNION_INPUTS): the update by a small rotation against the hand-computed one (innovation
+// the rotation vector, gain p / (p + r), posterior variance p r / (p + r)), the same update for
+// the reading -q, the scalar rows beside it untouched by the comparison, a missing quaternion
+// leaving its rows out, and an R with a variance on the quaternion's w refused.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "sf_estimation/errors.hpp"
+#include "sf_estimation/layout_extended_kalman_filter.hpp"
+#include "sf_estimation/layout_unscented_kalman_filter.hpp"
+#include "sf_estimation/manifold/so3_world_block.hpp"
+
+namespace {
+
+namespace mf = estimation::manifold;
+using estimation::Matrix;
+using estimation::Measurement;
+using estimation::Vector;
+
+/// A constant orientation q and a height a; the inputs are q itself and a.
+struct HeldPose {
+  static constexpr int StateSize = 5, MeasurementSize = 5, ControlSize = 1;
+  template <class S>
+  void transition(const Eigen::Matrix<S, 5, 1>& x, const Vector<1>&,
+                  Eigen::Matrix<S, 5, 1>& next) const {
+    next = x;
+  }
+  template <class S>
+  void observation(const Eigen::Matrix<S, 5, 1>& x, Eigen::Matrix<S, 5, 1>& z) const {
+    z = x;
+  }
+};
+using Layout = mf::StateLayout<mf::So3WorldBlock, mf::VectorBlock<1>>;
+using Ekf = estimation::LayoutExtendedKalmanFilter<HeldPose, Layout, Layout>;
+using Ukf = estimation::LayoutUnscentedKalmanFilter<HeldPose, Layout, Layout>;
+
+constexpr double kP = 0.04, kR = 0.01, kHeightP = 2.0, kHeightR = 0.5;
+
+struct Scene {
+  Eigen::Quaterniond q0{Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, -2, 0.5).normalized())};
+  Vector<3> phi{0.03, -0.02, 0.05};  // the reading: exp(phi) q0, a small rotation about the world
+  Matrix<5, 5> Q = Matrix<5, 5>::Zero(), P0 = Matrix<5, 5>::Zero(), R = Matrix<5, 5>::Zero();
+  Vector<5> x0;
+  Scene() {
+    P0.diagonal() << 0, kP, kP, kP, kHeightP;
+    R.diagonal() << 0, kR, kR, kR, kHeightR;  // the rotation vector's 3 x 3 on x, y, z
+    mf::storeQuaternion(q0, x0);
+    x0(4) = 1.0;
+  }
+  Measurement<5> reading(double sign, double height) const {
+    const Eigen::Quaterniond q =
+        Eigen::Quaterniond(Eigen::AngleAxisd(phi.norm(), phi.normalized())) * q0;
+    Vector<5> z;
+    z << sign * q.w(), sign * q.x(), sign * q.y(), sign * q.z(), height;
+    return Measurement<5>::complete(z);
+  }
+};
+
+/// The filter's state and covariance after one update match the hand-computed ones, to within
+/// rounding: the UKF's sigma-point sums scale theirs by 1 / alpha^2; the update itself moves
+/// the quaternion by 0.05 rad.
+constexpr double kTolerance = 1e-9;
+template <class Filter, class... Own>
+void expectHandComputedUpdate(double sign, const Own&... own) {
+  const Scene s;
+  Filter filter(HeldPose(), s.Q, s.R, s.x0, s.P0, own...);
+  filter.estimate(s.reading(sign, 3.0));
+  const double gain = kP / (kP + kR);
+  const Eigen::Quaterniond expected =
+      Eigen::Quaterniond(Eigen::AngleAxisd(gain * s.phi.norm(), s.phi.normalized())) * s.q0;
+  const Eigen::Quaterniond q = mf::storedQuaternion(filter.state().template head<4>());
+  EXPECT_LT(mf::so3Log<double>(q * expected.conjugate()).norm(), kTolerance);
+  EXPECT_NEAR(filter.state()(4), 1.0 + kHeightP / (kHeightP + kHeightR) * 2.0, kTolerance);
+  Matrix<5, 5> P = Matrix<5, 5>::Zero();
+  P.diagonal() << 0, kP * kR / (kP + kR), kP * kR / (kP + kR), kP * kR / (kP + kR),
+      kHeightP * kHeightR / (kHeightP + kHeightR);
+  EXPECT_LT((filter.covariance() - P).cwiseAbs().maxCoeff(), kTolerance) << filter.covariance();
+}
+
+TEST(QuaternionMeasurements, EkfUpdateIsTheHandComputedOne) { expectHandComputedUpdate<Ekf>(1.0); }
+
+TEST(QuaternionMeasurements, EkfTakesMinusQAsQ) { expectHandComputedUpdate<Ekf>(-1.0); }
+
+TEST(QuaternionMeasurements, UkfUpdateIsTheHandComputedOne) {
+  expectHandComputedUpdate<Ukf>(1.0, estimation::ManifoldUnscentedParameters());
+}
+
+TEST(QuaternionMeasurements, UkfTakesMinusQAsQ) {
+  expectHandComputedUpdate<Ukf>(-1.0, estimation::ManifoldUnscentedParameters());
+}
+
+TEST(QuaternionMeasurements, AMissingQuaternionLeavesItsRowsOut) {
+  const Scene s;
+  Ekf ekf(HeldPose(), s.Q, s.R, s.x0, s.P0);
+  Measurement<5> z = s.reading(1.0, 3.0);
+  for (int i = 0; i < 4; ++i) z.available(i) = false;
+  ekf.estimate(z);
+  EXPECT_EQ(ekf.state().head<4>(), s.x0.head<4>());
+  // The prediction's F is the identity up to rounding (AutoDiff through exp and log).
+  EXPECT_LT((ekf.covariance().topLeftCorner<4, 4>() - s.P0.topLeftCorner<4, 4>()).norm(), 1e-15);
+  EXPECT_NEAR(ekf.state()(4), 1.0 + kHeightP / (kHeightP + kHeightR) * 2.0, 1e-12);
+}
+
+template <class Filter, class... Own>
+void expectLeftOutWholeWhenAComponentIsMissing(const Own&... own) {
+  const Scene s;
+  for (int missing = 0; missing < 4; ++missing) {
+    Filter filter(HeldPose(), s.Q, s.R, s.x0, s.P0, own...);
+    Measurement<5> z = s.reading(1.0, 3.0);
+    z.available(missing) = false;
+    z.value(missing) = 0.0;  // what a missing entry may hold
+    filter.estimate(z);
+    EXPECT_LT((filter.state().template head<4>() - s.x0.template head<4>()).norm(), 1e-12)
+        << "missing " << missing;
+    EXPECT_TRUE(filter.state().allFinite());
+  }
+}
+
+TEST(QuaternionMeasurements, AQuaternionWithAMissingComponentIsLeftOutWhole) {
+  expectLeftOutWholeWhenAComponentIsMissing<Ekf>();
+  expectLeftOutWholeWhenAComponentIsMissing<Ukf>(estimation::ManifoldUnscentedParameters());
+}
+
+TEST(QuaternionMeasurements, MessageCovarianceOnTheTangentRowsIsUsed) {
+  const Scene s;
+  Ekf ekf(HeldPose(), s.Q, s.R, s.x0, s.P0);
+  Measurement<5> z = s.reading(1.0, 3.0);
+  const double r = 4.0 * kR;  // a message's 3 x 3 rad^2 block on the x, y, z rows
+  for (int i = 1; i < 4; ++i) {
+    z.varianceGiven(i) = true;
+    z.variance(i) = r;
+  }
+  ekf.estimate(z);
+  const Eigen::Quaterniond expected =
+      Eigen::Quaterniond(Eigen::AngleAxisd(kP / (kP + r) * s.phi.norm(), s.phi.normalized())) *
+      s.q0;
+  const Eigen::Quaterniond q = mf::storedQuaternion(ekf.state().head<4>());
+  EXPECT_LT(mf::so3Log<double>(q * expected.conjugate()).norm(), 1e-12);
+}
+
+TEST(QuaternionMeasurements, AVarianceOnTheQuaternionsWIsRefused) {
+  Scene s;
+  s.R(0, 0) = kR;
+  EXPECT_THROW(Ekf(HeldPose(), s.Q, s.R, s.x0, s.P0), estimation::ParameterError);
+  s.R(0, 0) = 0.0;
+  s.R(0, 2) = s.R(2, 0) = 1e-4;
+  EXPECT_THROW(Ukf(HeldPose(), s.Q, s.R, s.x0, s.P0, estimation::ManifoldUnscentedParameters()),
+               estimation::ParameterError);
+}
+
+}  // namespace
