@@ -150,7 +150,9 @@ def parse_args():
     parser.add_argument("--jobs", type=int, default=2)
     args = parser.parse_args()
     args.shown_argv = ["BROAD"] + (["--published", "BROAD/example_code/out"] if args.published else []) + (
-        ["--binary", "BUILD/sf_estimation_broad_attitude"] if args.binary else [])
+        ["--binary", "BUILD/sf_estimation_broad_attitude"] if args.binary else []) + (
+        ["--baseline-cache", "broad_baselines.json"] if args.baseline_cache else []) + (
+        ["--bag-dir", "BAGS"] if args.bag_dir else [])
     args.params_text = ""
     if args.params:
         with open(args.params) as f:
