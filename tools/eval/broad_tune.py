@@ -38,16 +38,19 @@ def mean_rmse(trials, binary, values, jobs):
     return float(np.mean(errors))
 
 
-def search(trials, binary, values, jobs, factor, rounds):
-    best = mean_rmse(trials, binary, values, jobs)
+def search(trials, binary, values, jobs, factor, rounds, cost=None):
+    """The coordinate search from `values`: (best mean RMSE, its values). `cost(values)` is the
+    mean RMSE of a candidate (default: the attitude filter's over `trials`)."""
+    cost = cost or (lambda candidate: mean_rmse(trials, binary, candidate, jobs))
+    best = cost(values)
     for _ in range(rounds):
         improved = False
         for name in sorted(values):
             for step in (factor, 1.0 / factor):
                 trial_values = dict(values, **{name: values[name] * step})
-                cost = mean_rmse(trials, binary, trial_values, jobs)
-                if cost < best:
-                    best, values, improved = cost, trial_values, True
+                value = cost(trial_values)
+                if value < best:
+                    best, values, improved = value, trial_values, True
                     break
         if not improved:
             factor = math.sqrt(factor)
