@@ -162,6 +162,9 @@ function(sf_add_filter name header)
     add_library(${_unit} OBJECT "${SF_PKG_FILTER_MAIN}" "${SF_PKG_FILTER_SMOOTHERS}")
   endif()
   _sf_filter_unit(${_unit} "${_header}")
+  # The node unit then declares the smoothers extern (node_definition_of.hpp); any other unit
+  # of a header (tests, tools) instantiates them itself.
+  target_compile_definitions(${_unit} PRIVATE SF_FILTER_SMOOTHERS_UNIT=1)
   add_executable(${name} $<TARGET_OBJECTS:${_unit}>)
   if(_sf_TEST)
     set(_sf_NO_INSTALL TRUE)

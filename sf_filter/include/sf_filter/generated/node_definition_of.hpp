@@ -37,9 +37,10 @@ static_assert(BOOST_PP_SEQ_ELEM(0, POSE_OUT) < sf_config::kStateSize &&
 
 namespace sf_filter {
 
-#if !SF_CFG_IS_AVERAGING
-// The smoothers of the header's filter are compiled in a unit of their own
-// (fusion_node_smoothers.cpp).
+#if !SF_CFG_IS_AVERAGING && defined(SF_FILTER_SMOOTHERS_UNIT)
+// In a node built by sf_add_filter() the smoothers of the header's filter are compiled in a
+// unit of their own (fusion_node_smoothers.cpp); other units of a header (tests, tools)
+// instantiate them where they use them.
 SF_FILTER_SMOOTHER_INSTANCES(extern, FusionCore<generated::Filter>)
 #endif
 
