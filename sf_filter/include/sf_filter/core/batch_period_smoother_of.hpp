@@ -19,61 +19,53 @@
 
 namespace sf_filter {
 
-/// Whether sf_estimation has a batch smoother for Filter (estimation::batchSmootherFor).
-template <class Filter, class = void>
-struct HasBatchSmoother : std::false_type {};
+/// sf_estimation's batch smoother for Filter (estimation::batchSmootherFor).
 template <class Filter>
-struct HasBatchSmoother<
-    Filter, std::void_t<decltype(estimation::batchSmootherFor(std::declval<const Filter&>()))>>
-    : std::true_type {};
+using BatchSmootherFor = decltype(estimation::batchSmootherFor(std::declval<const Filter&>()));
+/// Whether sf_estimation has a batch smoother for Filter.
+template <class Filter>
+using HasBatchSmoother = IsDetected<BatchSmootherFor, Filter>;
+
+/// The measured period of a core's filter: belief, control and the measurement given.
+template <class Filter>
+using MeasuredPeriodOf =
+    estimation::MeasuredPeriod<Filter::StateSize, Filter::MeasurementSize, Filter::ControlSize>;
 
 template <class Core>
-class BatchPeriodSmootherOf final : public PeriodSmoother {
-  using Filter = std::decay_t<decltype(std::declval<const Core&>().filter())>;
-  using Smoother = decltype(estimation::batchSmootherFor(std::declval<const Filter&>()));
-  static constexpr int N = Filter::StateSize;
-  static constexpr int M = Filter::MeasurementSize;
-  static constexpr int L = Filter::ControlSize;
-  using Period = estimation::MeasuredPeriod<N, M, L>;
-  using Belief = estimation::FilteredPeriod<N, L>;
+class BatchPeriodSmootherOf final
+    : public RecordedRunSmoother<Core, BatchSmootherFor<FilterOf<Core>>,
+                                 MeasuredPeriodOf<FilterOf<Core>>> {
+  using Base = typename BatchPeriodSmootherOf::RecordedRunSmoother;
+  using Period = MeasuredPeriodOf<FilterOf<Core>>;
 
  public:
   explicit BatchPeriodSmootherOf(const Core& core)
-      : core_(core), smoother_(estimation::batchSmootherFor(core.filter())) {}
+      : Base(core, estimation::batchSmootherFor(core.filter())) {}
 
   void record() override {
-    record_.push_back(Period{recorder_.next(core_), core_.lastMeasurement()});
+    this->record_.push_back(
+        Period{this->recorder_.next(this->core_), this->core_.lastMeasurement()});
   }
 
   void smooth() override {
-    const estimation::BatchMapReport r = smoother_.smooth(record_, smoothed_);
+    const estimation::BatchMapReport r = this->smoother_.smooth(this->record_, this->smoothed_);
     outcome_ = BatchOutcome{r.iterations, r.halvings, r.initialCost, r.cost, r.converged};
   }
 
-  std::size_t periods() const override { return record_.size(); }
-  std::size_t segments() const override { return recorder_.segments(); }
   PeriodBelief filtered(std::size_t k) const override {
-    return viewOf(record_[k].belief.x, record_[k].belief.P);
-  }
-  PeriodBelief smoothed(std::size_t k) const override {
-    return viewOf(smoothed_[k].x, smoothed_[k].P);
+    return viewOf(this->record_[k].belief.x, this->record_[k].belief.P);
   }
   /// The record (with the measurement), the result and the smoother's working track.
   std::size_t bytesPerPeriod() const override {
-    return sizeof(Period) + sizeof(estimation::SmoothedPeriod<N>) +
-           Smoother::bytesPerPeriodWorking();
+    return sizeof(Period) + sizeof(estimation::SmoothedPeriod<Base::N>) +
+           BatchSmootherFor<FilterOf<Core>>::bytesPerPeriodWorking();
   }
   std::optional<BatchOutcome> batchOutcome() const override { return outcome_; }
   SmoothingCorrection correction(std::size_t k) const override {
-    return smoothingCorrection(filtered(k), smoothed(k), core_.filter().angleStates());
+    return smoothingCorrection(filtered(k), this->smoothed(k), this->core_.filter().angleStates());
   }
 
  private:
-  const Core& core_;
-  Smoother smoother_;
-  std::vector<Period> record_;
-  std::vector<estimation::SmoothedPeriod<N>> smoothed_;
-  PeriodRecorder<Core, Belief> recorder_;
   std::optional<BatchOutcome> outcome_;
 };
 

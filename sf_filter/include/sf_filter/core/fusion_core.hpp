@@ -72,31 +72,30 @@
 #include <sf_estimation/measurement_prediction.hpp>
 #include <sf_estimation/numerical_repairs.hpp>
 
+#include "sf_filter/core/detected.hpp"
 #include "sf_filter/core/fusion_core_base.hpp"
 #include "sf_filter/core/fusion_core_options.hpp"
 #include "sf_filter/core/fusion_engine.hpp"
 
 namespace sf_filter {
 
-/// Whether the filter exposes its process noise Q and a way to replace its belief (the
-/// Kalman-type filters: setBelief, processNoise), so that a rejected step can add Q.
-template <class F, class = void>
-struct CanInflateByProcessNoise : std::false_type {};
+/// A filter's setBelief(x, P) (the Kalman filter family): a rejected step can then add Q, and
+/// a first reading can replace a state's start.
 template <class F>
-struct CanInflateByProcessNoise<
-    F, std::void_t<decltype(std::declval<F&>().setBelief(
-           std::declval<const F&>().state(),
-           std::declval<const F&>().covariance() + std::declval<const F&>().processNoise()))>>
-    : std::true_type {};
+using SetBeliefCall = decltype(std::declval<F&>().setBelief(std::declval<const F&>().state(),
+                                                            std::declval<const F&>().covariance()));
+/// setBelief(x, P + Q): the filter also exposes its process noise Q.
+template <class F>
+using InflateByProcessNoiseCall = decltype(std::declval<F&>().setBelief(
+    std::declval<const F&>().state(),
+    std::declval<const F&>().covariance() + std::declval<const F&>().processNoise()));
 
 /// Whether the filter can replace its belief (setBelief: the Kalman filter family).
-template <class F, class = void>
-struct CanSetBelief : std::false_type {};
 template <class F>
-struct CanSetBelief<F,
-                    std::void_t<decltype(std::declval<F&>().setBelief(
-                        std::declval<const F&>().state(), std::declval<const F&>().covariance()))>>
-    : std::true_type {};
+using CanSetBelief = IsDetected<SetBeliefCall, F>;
+/// Whether a rejected step can add the filter's Q to its kept belief.
+template <class F>
+using CanInflateByProcessNoise = IsDetected<InflateByProcessNoiseCall, F>;
 
 /// Whether the filter's belief is a sample (kSampledBelief: the particle filter).
 template <class F, class = void>

@@ -21,14 +21,6 @@
 
 namespace sf_filter {
 
-/// Whether Filter can replace its belief (the Kalman filter family: setBelief(x, P)).
-template <class Filter, class = void>
-struct HasSetBelief : std::false_type {};
-template <class Filter>
-struct HasSetBelief<Filter, std::void_t<decltype(std::declval<Filter&>().setBelief(
-                                std::declval<const Filter&>().state(),
-                                std::declval<const Filter&>().covariance()))>> : std::true_type {};
-
 template <class Filter>
 class FusionEngineOf final : public FusionEngine {
   using Core = FusionCore<Filter>;
@@ -61,7 +53,7 @@ class FusionEngineOf final : public FusionEngine {
   void reset() override { core_.reset(); }
   bool setPose(const std::array<int, 3>& indices, const std::array<double, 3>& xyYaw,
                const Eigen::Matrix3d& covariance) override {
-    if constexpr (HasSetBelief<Filter>::value) {
+    if constexpr (CanSetBelief<Filter>::value) {
       const Filter& filter = core_.filter();
       auto x = filter.state();
       auto P = filter.covariance();

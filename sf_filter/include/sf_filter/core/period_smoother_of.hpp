@@ -12,17 +12,21 @@
 #include <sf_estimation/rts_smoother.hpp>
 #include <sf_estimation/unscented_rts_smoother.hpp>
 
+#include "sf_filter/core/detected.hpp"
 #include "sf_filter/core/period_smoother.hpp"
 
 namespace sf_filter {
 
-/// Whether sf_estimation has a smoother for Filter (estimation::smootherFor).
-template <class Filter, class = void>
-struct HasSmoother : std::false_type {};
+/// The filter type of a fusion core.
+template <class Core>
+using FilterOf = std::decay_t<decltype(std::declval<const Core&>().filter())>;
+
+/// sf_estimation's smoother for Filter (estimation::smootherFor).
 template <class Filter>
-struct HasSmoother<Filter,
-                   std::void_t<decltype(estimation::smootherFor(std::declval<const Filter&>()))>>
-    : std::true_type {};
+using SmootherFor = decltype(estimation::smootherFor(std::declval<const Filter&>()));
+/// Whether sf_estimation has a smoother for Filter.
+template <class Filter>
+using HasSmoother = IsDetected<SmootherFor, Filter>;
 
 /// Turns a core's last estimates into the smoothers' record (estimation::FilteredPeriod): a
 /// period is linked to the previously recorded one only when the filter reached it by a time
@@ -50,46 +54,59 @@ class PeriodRecorder {
   std::size_t segments_ = 0;
 };
 
-template <class Core>
-class PeriodSmootherOf final : public PeriodSmoother {
-  using Filter = std::decay_t<decltype(std::declval<const Core&>().filter())>;
-  using Smoother = decltype(estimation::smootherFor(std::declval<const Filter&>()));
+/// What a smoother of a core's run holds, whichever the smoother: the core, sf_estimation's
+/// smoother, the record of the periods (Recorded: the belief, or with its measurement too), the
+/// smoothed track and the recorder that links the periods.
+template <class Core, class Smoother, class Recorded>
+class RecordedRunSmoother : public PeriodSmoother {
+ protected:
+  using Filter = FilterOf<Core>;
   static constexpr int N = Filter::StateSize;
   static constexpr int L = Filter::ControlSize;
-  using Period = estimation::FilteredPeriod<N, L>;
+  using Belief = estimation::FilteredPeriod<N, L>;
+
+  RecordedRunSmoother(const Core& core, Smoother smoother)
+      : core_(core), smoother_(std::move(smoother)) {}
 
  public:
-  explicit PeriodSmootherOf(const Core& core)
-      : core_(core), smoother_(estimation::smootherFor(core.filter())) {}
-
-  void record() override { record_.push_back(recorder_.next(core_)); }
-
-  void smooth() override { smoother_.smooth(record_, smoothed_); }
-
   std::size_t periods() const override { return record_.size(); }
   std::size_t segments() const override { return recorder_.segments(); }
-  PeriodBelief filtered(std::size_t k) const override { return viewOf(record_[k].x, record_[k].P); }
   PeriodBelief smoothed(std::size_t k) const override {
     return viewOf(smoothed_[k].x, smoothed_[k].P);
   }
-  std::size_t bytesPerPeriod() const override {
-    return sizeof(Period) + sizeof(estimation::SmoothedPeriod<N>);
-  }
-  SmoothingCorrection correction(std::size_t k) const override {
-    return smoothingCorrection(filtered(k), smoothed(k), smoother_.angleStates());
-  }
 
- private:
+ protected:
   const Core& core_;
   Smoother smoother_;
-  std::vector<Period> record_;
+  std::vector<Recorded> record_;
   std::vector<estimation::SmoothedPeriod<N>> smoothed_;
-  PeriodRecorder<Core, Period> recorder_;
+  PeriodRecorder<Core, Belief> recorder_;
 };
 
-/// The filter type of a fusion core.
 template <class Core>
-using FilterOf = std::decay_t<decltype(std::declval<const Core&>().filter())>;
+class PeriodSmootherOf final
+    : public RecordedRunSmoother<
+          Core, SmootherFor<FilterOf<Core>>,
+          estimation::FilteredPeriod<FilterOf<Core>::StateSize, FilterOf<Core>::ControlSize>> {
+ public:
+  explicit PeriodSmootherOf(const Core& core)
+      : PeriodSmootherOf::RecordedRunSmoother(core, estimation::smootherFor(core.filter())) {}
+
+  void record() override { this->record_.push_back(this->recorder_.next(this->core_)); }
+
+  void smooth() override { this->smoother_.smooth(this->record_, this->smoothed_); }
+
+  PeriodBelief filtered(std::size_t k) const override {
+    return viewOf(this->record_[k].x, this->record_[k].P);
+  }
+  std::size_t bytesPerPeriod() const override {
+    return sizeof(typename PeriodSmootherOf::Belief) +
+           sizeof(estimation::SmoothedPeriod<PeriodSmootherOf::N>);
+  }
+  SmoothingCorrection correction(std::size_t k) const override {
+    return smoothingCorrection(filtered(k), this->smoothed(k), this->smoother_.angleStates());
+  }
+};
 
 /// A Smoother<Core> of `core` (and `args`), seen as Base, when `available` (the core's filter
 /// has that smoother); null otherwise. The smoothers' factories are functions, not members of

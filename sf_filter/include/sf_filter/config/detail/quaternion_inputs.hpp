@@ -53,14 +53,8 @@ static_assert(false, "QUATERNION_INPUTS: expected a sequence of TOPICS_IN indice
   SF_PP_STR(index) "..+3 "
 #define SF_QUATERNION_INPUT_ENTRY(r, data, k, index)                                               \
   struct BOOST_PP_CAT(QuaternionInputEntry, k) {                                                   \
-    static constexpr auto configured_index = index;                                                \
-    static constexpr int value = static_cast<int>(configured_index);                               \
-    static_assert(std::is_integral<decltype(configured_index)>::value && configured_index >= 0 &&  \
-                      configured_index + 3 < (SF_CFG_M),                                           \
-                  "QUATERNION_INPUTS entry " SF_PP_STR(k) ": index '" SF_PP_STR(index) "' does "   \
-                  "not start a quaternion among the inputs, expected an integer from 0 to "        \
-                  SF_PP_STR(BOOST_PP_SUB(SF_CFG_M, 4)) " (its w, x, y, z are TOPICS_IN entries "   \
-                  "i..i+3; " SF_CFG_M_WHY ")");                                                    \
+    SF_QUATERNION_START_MEMBERS(QUATERNION_INPUTS, k, index, SF_CFG_M, "among the inputs",      \
+                                "its w, x, y, z are TOPICS_IN entries i..i+3", SF_CFG_M_WHY)       \
     static_assert(value < 0 || value + 3 >= (SF_CFG_M) ||                                          \
                       quaternion_inputs_detail::oneTopic(value),                                   \
                   SF_QUATERNION_INPUT_PREFIX(k, index) "is not read from one topic; its w, x, y, " \

@@ -5,6 +5,25 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
+
+#include <boost/preprocessor/arithmetic/sub.hpp>
+
+#include "sf_filter/config/detail/preprocessor.hpp"
+
+// clang-format off
+// The members `configured_index` and `value` of entry k of MACRO, and the check that `index`
+// is an integer starting four entries inside `size` (`where`: "inside the state"; `layout`:
+// what the four entries are; `why`: where the size comes from).
+#define SF_QUATERNION_START_MEMBERS(macro, k, index, size, where, layout, why)                     \
+  static constexpr auto configured_index = index;                                                  \
+  static constexpr int value = static_cast<int>(configured_index);                                 \
+  static_assert(std::is_integral<decltype(configured_index)>::value && configured_index >= 0 &&    \
+                    configured_index + 3 < (size),                                                 \
+                #macro " entry " SF_PP_STR(k) ": index '" SF_PP_STR(index) "' does not start a "   \
+                "quaternion " where ", expected an integer from 0 to "                             \
+                SF_PP_STR(BOOST_PP_SUB(size, 4)) " (" layout "; " why ")");
+// clang-format on
 
 namespace sf_config {
 namespace detail {

@@ -48,14 +48,8 @@ static_assert(false, "QUATERNION_STATES: expected a sequence of state indices, e
 // --- entries: one struct per index, checked -------------------------------------------------------
 #define SF_QUATERNION_ENTRY(r, data, k, index)                                                     \
   struct BOOST_PP_CAT(QuaternionEntry, k) {                                                        \
-    static constexpr auto configured_index = index;                                                \
-    static constexpr int value = static_cast<int>(configured_index);                               \
-    static_assert(std::is_integral<decltype(configured_index)>::value && configured_index >= 0 &&  \
-                      configured_index + 3 < (SF_CFG_N),                                           \
-                  "QUATERNION_STATES entry " SF_PP_STR(k) ": index '" SF_PP_STR(index) "' does "   \
-                  "not start a quaternion inside the state, expected an integer from 0 to "        \
-                  SF_PP_STR(BOOST_PP_SUB(SF_CFG_N, 4)) " (the quaternion is x[i..i+3]; "           \
-                  SF_CFG_N_WHY ")");                                                               \
+    SF_QUATERNION_START_MEMBERS(QUATERNION_STATES, k, index, SF_CFG_N, "inside the state",      \
+                                "the quaternion is x[i..i+3]", SF_CFG_N_WHY)                       \
     static_assert(value < 0 || quaternions_detail::overlappedEntry(value, k) < 0,                  \
                   "QUATERNION_STATES entry " SF_PP_STR(k) ": the quaternion x[" SF_PP_STR(index)   \
                   "..+3] overlaps the quaternion of an earlier entry; each state variable "        \
