@@ -43,9 +43,11 @@
 // rotation vector's (w row 0): a small rotation phi is the quaternion (1, phi / 2), so a
 // component variance of 1e-6 is 4e-6 rad^2 per axis (doc/armesto.md; isotropic, so the world's
 // axes and the sensor's give the same R).
-// Start: at rest (v = a = b = 0) at the first vision pose (p and q) with the first gyro sample
-// as omega (INITIAL_STATE_FROM_INPUTS), as the library's runs start; P0 1 m^2 on p, 1 rad^2 on
-// q, 1 on the rest, 0.01 (m/s^2)^2 on the bias. The node publishes the pose (POSE_OUT_3D); the
+// Start: at rest (v = a = b = 0), p and q at the first vision pose and omega at the first gyro
+// sample (INITIAL_STATE_FROM_INPUTS), as the library's runs start; P0 1 m^2 on p, 0.01 on the
+// rest (m/s, m/s^2, rad, rad/s), so that the IMU's periods before the first frame (4.9 s on the
+// BROAD bag) cannot run v and a away: with 1 on v, a and q they reached 3 m/s and a 90 deg
+// heading there, and the first frame then sets p and q but not v (doc/armesto.md). The node publishes the pose (POSE_OUT_3D); the
 // twist is not published (the state's velocity is in the world frame, TWIST_OUT_3D wants the
 // body's). METHOD is the EKF unless the including file defines another one first.
 #include <boost/preprocessor/arithmetic/div.hpp>
@@ -109,7 +111,8 @@
   SF_DIAGONAL((1e-3)(1e-3)(1e-3)(1e-4)(1e-4)(1e-4)(1e-7)(1e-7)(1e-7)(0)(4e-6)(4e-6)(4e-6))
 #define INITIAL_STATE (0)(0)(0)(0)(0)(0)(0)(0)(0)(0)(0)(0)(1)(0)(0)(0)(0)(0)(0)
 #define INITIAL_ERROR_COVARIANCE \
-  SF_DIAGONAL((1)(1)(1)(1)(1)(1)(1)(1)(1)(0.01)(0.01)(0.01)(1)(1)(1)(1)(1)(1))
+  SF_DIAGONAL((1)(1)(1)(0.01)(0.01)(0.01)(0.01)(0.01)(0.01)(0.01)(0.01)(0.01) \
+              (0.01)(0.01)(0.01)(0.01)(0.01)(0.01))
 #define INITIAL_STATE_FROM_INPUTS \
   ((0)(6))((1)(7))((2)(8))((12)(9))((13)(10))((14)(11))((15)(12))((16)(3))((17)(4))((18)(5))
 #define TOPICS_IN \
