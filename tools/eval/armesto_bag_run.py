@@ -5,11 +5,12 @@ the library filter are compared on the same data ("The node headers" in doc/arme
 
   armesto_bag_run.py BAG --binary BIN --filter ekf|ukf --csv OUT.csv [--gravity G]
 
-The stream has a line per 10 ms period (k T - T, k T] from the bag's first message, as the
-node's SAMPLED inputs take it: the period's last imu/data message (the previous one held when
-a period has none) and its last vision/pose; it starts at the first period with a frame (the
-program starts from a frame). OUT.csv has the replay CSV's form for tools/eval/pose3d_error.py:
-time (the period's end), x0..x2 the position, x3..x6 the quaternion w, x, y, z.
+The stream has a line per 10 ms period [k T - T, k T) from the bag's first message, as the
+node's periods and SAMPLED inputs take it: the period's last imu/data message (the previous
+one held when a period has none) and its last vision/pose; it starts at the first period with
+a frame (the program starts from a frame). OUT.csv has the replay CSV's form for
+tools/eval/pose3d_error.py: time (the period's end, as the node stamps its estimate), x0..x2 the
+position, x3..x6 the quaternion w, x, y, z.
 """
 
 import argparse
@@ -26,7 +27,7 @@ def periods(bag_path):
     with rosbag.Bag(bag_path) as bag:
         for topic, msg, t in bag.read_messages(topics=["imu/data", "vision/pose"]):
             start = t.to_sec() if start is None else start
-            k = int(math.ceil((t.to_sec() - start) / PERIOD - 1e-9))
+            k = int(math.floor((t.to_sec() - start) / PERIOD + 1e-9)) + 1
             if topic == "imu/data":
                 a, w = msg.linear_acceleration, msg.angular_velocity
                 imu[k] = (a.x, a.y, a.z, w.x, w.y, w.z)
