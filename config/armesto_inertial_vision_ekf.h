@@ -47,9 +47,10 @@
 // sample (INITIAL_STATE_FROM_INPUTS), as the library's runs start; P0 1 m^2 on p, 0.01 on the
 // rest (m/s, m/s^2, rad, rad/s), so that the IMU's periods before the first frame (4.9 s on the
 // BROAD bag) cannot run v and a away: with 1 on v, a and q they reached 3 m/s and a 90 deg
-// heading there, and the first frame then sets p and q but not v (doc/armesto.md). The node publishes the pose (POSE_OUT_3D); the
-// twist is not published (the state's velocity is in the world frame, TWIST_OUT_3D wants the
-// body's). METHOD is the EKF unless the including file defines another one first.
+// heading there, and the first frame then sets p and q but not v (doc/armesto.md).
+// The node publishes the pose (POSE_OUT_3D); not the twist (the state's velocity is in the
+// world frame, TWIST_OUT_3D wants the body's). METHOD is the EKF unless the including file
+// defines another one first.
 #include <boost/preprocessor/arithmetic/div.hpp>
 #include <boost/preprocessor/arithmetic/mod.hpp>
 #include <boost/preprocessor/comparison/equal.hpp>
