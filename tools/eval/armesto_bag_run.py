@@ -20,6 +20,11 @@ import subprocess
 PERIOD = 0.01
 
 
+def period_of(t, start):
+    """The node's period of a message at t [s]: k for [start + k T - T, start + k T)."""
+    return int(math.floor((t - start) / PERIOD + 1e-9)) + 1
+
+
 def periods(bag_path):
     """{period: imu sample}, {period: vision frame} and the bag's first time [s]."""
     import rosbag  # Debian: python3-rosbag
@@ -27,7 +32,7 @@ def periods(bag_path):
     with rosbag.Bag(bag_path) as bag:
         for topic, msg, t in bag.read_messages(topics=["imu/data", "vision/pose"]):
             start = t.to_sec() if start is None else start
-            k = int(math.floor((t.to_sec() - start) / PERIOD + 1e-9)) + 1
+            k = period_of(t.to_sec(), start)
             if topic == "imu/data":
                 a, w = msg.linear_acceleration, msg.angular_velocity
                 imu[k] = (a.x, a.y, a.z, w.x, w.y, w.z)
