@@ -18,27 +18,31 @@ import math
 import subprocess
 
 PERIOD = 0.01
+TOLERANCE = 1e-6
 
 
-def period_of(t, start):
-    """The node's period of a message at t [s]: k for [start + k T - T, start + k T)."""
-    return int(math.floor((t - start) / PERIOD + 1e-9)) + 1
+def period_of(offset):
+    """The node's period of a message `offset` s after the first: k for [k T - T, k T), a time
+    within the node's tolerance (1e-6 s, sf_filter's PeriodSchedule) of a period's end in the
+    next period, as the node's schedule places a message on a period's end."""
+    return int(math.floor((offset + TOLERANCE) / PERIOD)) + 1
 
 
 def periods(bag_path):
     """{period: imu sample}, {period: vision frame} and the bag's first time [s]."""
     import rosbag  # Debian: python3-rosbag
-    imu, vision, start = {}, {}, None
+    imu, vision, first = {}, {}, None
     with rosbag.Bag(bag_path) as bag:
         for topic, msg, t in bag.read_messages(topics=["imu/data", "vision/pose"]):
-            start = t.to_sec() if start is None else start
-            k = period_of(t.to_sec(), start)
+            first = t if first is None else first
+            k = period_of((t - first).to_sec())  # from integer nanoseconds: exact at 1.7e9 s
             if topic == "imu/data":
                 a, w = msg.linear_acceleration, msg.angular_velocity
                 imu[k] = (a.x, a.y, a.z, w.x, w.y, w.z)
             else:
                 p, q = msg.pose.pose.position, msg.pose.pose.orientation
                 vision[k] = (p.x, p.y, p.z, q.w, q.x, q.y, q.z)
+    start = first.to_sec()
     return imu, vision, start
 
 
