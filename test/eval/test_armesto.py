@@ -24,6 +24,7 @@ sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.join(REPO, "tools", "data"))
 sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
 
+import armesto_bag_run as abr  # noqa: E402
 import armesto_run as ar  # noqa: E402
 import broad_trial as bt  # noqa: E402
 
@@ -128,6 +129,26 @@ class StreamFromTrial(unittest.TestCase):
         angle = 2 * stream.vision[stream.seen, 4:7]  # small rotations: the vector part is half the rotation vector
         self.assertAlmostEqual(float(np.std(error_p)), math.sqrt(r["r_pos"]), delta=0.1 * math.sqrt(r["r_pos"]))
         self.assertAlmostEqual(float(np.std(angle)), 2 * math.sqrt(r["r_quat"]), delta=0.2 * math.sqrt(r["r_quat"]))
+
+
+class StreamFromBag(unittest.TestCase):
+    """armesto_bag_run.py: the node's periods and SAMPLED inputs as the program's stream."""
+
+    def test_periods_are_the_nodes(self):
+        # [k T - T, k T) from the first message: a message on a period's end opens the next.
+        self.assertEqual([abr.period_of(t) for t in (0.0, 0.0099, 0.01, 0.08 - 5e-7, 0.0801)],
+                         [1, 1, 2, 9, 9])
+
+    def test_stream_starts_at_the_first_frame_and_holds_the_imu(self):
+        imu = {k: (k, 0, 9.8, 0, 0, 0.1 * k) for k in (1, 2, 3, 5)}
+        vision = {2: (1, 2, 3, 1, 0, 0, 0), 5: (4, 5, 6, 0, 1, 0, 0)}
+        ks, text = abr.stream(imu, vision)
+        self.assertEqual(ks, [2, 3, 4, 5])
+        lines = [[float(v) for v in line.split(",")] for line in text.split()]
+        self.assertEqual(lines[0], [2, 0, 9.8, 0, 0, 0.2, 1, 1, 2, 3, 1, 0, 0, 0])
+        self.assertEqual(lines[1], [3, 0, 9.8, 0, 0, 0.3, 0] + [0] * 7)
+        self.assertEqual(lines[2], lines[1])  # no IMU message in period 4: the last one held
+        self.assertEqual(lines[3], [5, 0, 9.8, 0, 0, 0.5, 1, 4, 5, 6, 0, 1, 0, 0])
 
 
 class Program(unittest.TestCase):

@@ -46,7 +46,10 @@ PAIRS = ([("sf_%s_%s" % (model, method), "bags/pioneer_seed1.bag")
          # The IMU-only attitude header (QUATERNION_STATES) on the real BROAD trial; the 3D
          # IMU + odometry header needs --allow-missing-topics there (no odometry) and is not
          # recorded.
-         [("sf_imu_attitude", "bags/broad_21_fast_combined.bag")])
+         [("sf_imu_attitude", "bags/broad_21_fast_combined.bag")] +
+         # Armesto et al.'s inertial+vision headers read the trial's IMU and vision pose.
+         [("sf_armesto_inertial_vision_%s" % method, "bags/broad_21_fast_combined.bag")
+          for method in ("ekf", "ukf")])
 
 
 def digest(lib_dir, node, bag):
