@@ -67,9 +67,11 @@ TRUTH = "ground_truth/pose"
 RATE, CLOCK_HZ = 2.0, 200
 RELATIVE = 1e-9  # rounding at most (the docstring)
 SKIP = 2.0  # s left out of the errors, as in doc/manifolds.md
-# Offline figures of these slices (doc/manifolds.md, "Online"): orientation RMSE [deg], tilt
-# RMSE [deg], position RMSE [m]; the online errors must be within BOUND_MARGIN of them.
-OFFLINE = {"broad": (5.40, 3.91, 0.043), "sim": (1.0, 1.0, 0.01)}
+# Offline figures of these recordings with the test's parameter file (doc/manifolds.md,
+# "Online"): orientation RMSE [deg], tilt RMSE [deg], position RMSE [m]; the online errors must
+# be within BOUND_MARGIN of them (the online run starts 0.19 s later, so that its first 2 s
+# left out end 0.19 s later: measured within 0.2 % of the offline figures).
+OFFLINE = {"broad": (2.701, 0.201, 0.1228), "sim": (0.803, 0.535, 0.0180)}
 BOUND_MARGIN = 1.1
 WALL_TIMEOUT = 60.0
 
@@ -198,10 +200,13 @@ class ImuOdometry3dOnlineTest(unittest.TestCase):
                 return ["%s: online stamp %.6f is no replay period (nearest %.6f)" % (
                     name, o["time"], times[k])]
             matched.append(k)
+        # every period from the first with a measured value (the rows before it only predict
+        # from the initial belief) to the last the node can have estimated
+        first = next(k for k, r in enumerate(rows) if r["present_inputs"] > 0)
         last = max(k for k, t in enumerate(times) if t <= end)
-        if matched != list(range(matched[0], max(matched[-1], last) + 1)):
-            return ["%s: online periods missing or repeated: rows %d-%d, %d messages, up to row "
-                    "%d expected" % (name, matched[0], matched[-1], len(matched), last)]
+        if matched[0] > first or matched != list(range(matched[0], max(matched[-1], last) + 1)):
+            return ["%s: online periods missing or repeated: rows %d-%d, %d messages, rows %d-%d "
+                    "expected" % (name, matched[0], matched[-1], len(matched), first, last)]
         worst = 0.0
         for o, k in zip(online, matched):
             for key in sorted(o):
