@@ -76,11 +76,11 @@ BOUND_MARGIN = 1.1
 WALL_TIMEOUT = 60.0
 
 
-def copy_topics(src_path, dst, topics, seconds, prefix=""):
-    """Writes the messages of `topics` in the first `seconds` of `src_path` raw into the open
-    bag `dst`, their topics under `prefix`."""
+def copy_topics(src_path, dst, topics, seconds=None, prefix=""):
+    """Writes the messages of `topics` in the first `seconds` (all without) of `src_path` raw
+    into the open bag `dst`, their topics under `prefix`."""
     with rosbag.Bag(src_path) as src:
-        end = rospy.Time.from_sec(src.get_start_time() + seconds)
+        end = None if seconds is None else rospy.Time.from_sec(src.get_start_time() + seconds)
         for topic, msg, t in src.read_messages(topics=topics, end_time=end, raw=True):
             dst.write(prefix + topic, msg, t, raw=True)
 
@@ -98,7 +98,7 @@ def write_bags(tmp):
     merged = os.path.join(tmp, "play.bag")
     with rosbag.Bag(merged, "w") as dst:
         for name, path in bags.items():
-            copy_topics(path, dst, INPUTS + (TRUTH,), BROAD_SECONDS + SIM_SECONDS, "/%s/" % name)
+            copy_topics(path, dst, INPUTS + (TRUTH,), prefix="/%s/" % name)
     return bags, merged
 
 
