@@ -25,8 +25,11 @@ period ends are multiples of the 10 ms period in ROS time in both, whichever /cl
 saw first, and the model uses the period, not the clock: the same values in the same periods
 give the same numbers from the same code. Each online odometry/filtered message must so have
 the stamp of a replay row (to 1 us) and its pose, velocities and position variances to 1e-9
-relative (rounding at most); every row from the first matched one to the last the node can
-have estimated (the last /clock minus the lag and a period) must come online once. Without the
+relative (rounding at most; measured: 0); every row from the first with a measured value to
+the last the node can have estimated (the last /clock minus the lag, a period and END_MARGIN)
+must come online once. The replay's rows start a lag before its first message, the node's at
+its first /clock: the rows between hold no value and only predict from the initial belief, the
+same online (the first online row equals the replay's row of its period). Without the
 parameter file the header aligns by arrival, which online is roscpp's receipt on the player's
 clock and offline the recorded time: the values would then move between neighbouring periods.
 
