@@ -9,6 +9,9 @@ Each estimate is compared with the truth sample nearest its time (within --max-g
                only, what an accelerometer observes
   position     the Euclidean distance [m] (with --position)
 --skip s leaves out the first s seconds (the filter settling from its initial belief);
+--window A B compares only the estimates from A to B s after the truth bag's first message
+instead (a window fixed in the recording, whatever the first row's time: a node's first row
+is at its first /clock, a replay's one ~max_measurement_lag earlier);
 --align-yaw removes the constant heading offset of the first compared sample from the
 estimate (an IMU without a magnetometer has no heading of its own: the reference's world frame
 is then unknown to it).
@@ -78,14 +81,19 @@ def load_truth(bag_path, topic="ground_truth/pose"):
     return ([times[i] for i in order], [quats[i] for i in order], [positions[i] for i in order])
 
 
-def errors(rows, truth, quaternion, position=None, skip=0.0, max_gap=0.02, align_yaw=False):
-    """Lists of orientation, tilt [rad] and position [m] errors of the CSV rows."""
+def errors(rows, truth, quaternion, position=None, skip=0.0, max_gap=0.02, align_yaw=False,
+           window=None):
+    """Lists of orientation, tilt [rad] and position [m] errors of the CSV rows (those from
+    `skip` s after the first row on, or those in `window`, (start, end) times [s])."""
     times, quats, positions = truth
     out = {"orientation": [], "tilt": [], "position": []}
     offset = None
     start = rows[0]["time"] + skip if rows else 0.0
+    end = float("inf")
+    if window is not None:
+        start, end = window
     for row in rows:
-        if row["time"] < start:
+        if not start <= row["time"] <= end:
             continue
         k = bisect.bisect_left(times, row["time"])
         near = [j for j in (k - 1, k) if 0 <= j < len(times)]
@@ -127,9 +135,16 @@ def main():
     parser.add_argument("--skip", type=float, default=0.0, help="seconds left out at the start")
     parser.add_argument("--max-gap", type=float, default=0.02, help="s to the nearest truth")
     parser.add_argument("--align-yaw", action="store_true")
+    parser.add_argument("--window", type=float, nargs=2, metavar=("A", "B"),
+                        help="only the estimates A to B s after the truth bag's first message")
     args = parser.parse_args()
+    window = None
+    if args.window:
+        import rosbag
+        with rosbag.Bag(args.truth) as bag:
+            window = tuple(bag.get_start_time() + a for a in args.window)
     e = errors(read_rows(args.csv), load_truth(args.truth, args.truth_topic), args.quaternion,
-               args.position, args.skip, args.max_gap, args.align_yaw)
+               args.position, args.skip, args.max_gap, args.align_yaw, window)
     print("compared %d estimates" % len(e["orientation"]))
     for name in ("orientation", "tilt"):
         deg = [math.degrees(v) for v in e[name]]
