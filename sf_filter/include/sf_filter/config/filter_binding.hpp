@@ -47,3 +47,12 @@ Filter makeModelFilter(const sf_config::Parameters& p, const Own&... own) {
 #define SF_METHOD_PART SF_METHOD_PART_BINDING
 #include "sf_filter/config/methods.hpp"
 #undef SF_METHOD_PART
+
+// What of the header's filter a node built by sf_add_filter() compiles in its second unit
+// (fusion_node_smoothers.cpp) besides the smoothers: declared extern (PREFIX extern) in the
+// node's unit, instantiated (PREFIX empty) in the second, at global scope. A method
+// whose model-dependent code is too large for one unit defines it in its binding part
+// (doc/build_cost.md, "The 3D headers' Jacobians"); nothing otherwise.
+#ifndef SF_CFG_SECOND_UNIT_INSTANCES
+#define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX)
+#endif

@@ -50,6 +50,9 @@ namespace generated {
 #if SF_CFG_HAS_QUATERNION_STATES
 using Filter = estimation::LayoutExtendedKalmanFilter<sf_config::Model, sf_config::StateLayout,
                                                       sf_config::MeasurementLayout>;
+// Its AutoDiff Jacobians in the node's second unit (filter_binding.hpp).
+#define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX) \
+  SF_ESTIMATION_LAYOUT_EKF_JACOBIANS(PREFIX, sf_filter::generated::Filter)
 #else
 using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
 #endif
