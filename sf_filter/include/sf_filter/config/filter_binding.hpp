@@ -43,7 +43,10 @@ Filter makeModelFilter(const sf_config::Parameters& p, const Own&... own) {
 }  // namespace sf_filter
 
 // Filter and makeFilter(const sf_config::Parameters&) of the chosen method, from its traits
-// header (config/methods/<method>.hpp, SF_METHOD_PART_BINDING).
+// header (config/methods/<method>.hpp, SF_METHOD_PART_BINDING). A model-based method's
+// makeFilter is a template (of a defaulted, unused parameter): an inline function's body is
+// compiled, and the filter's construction instantiated, in every unit that includes it, the
+// node's second unit too, which never builds the filter (doc/build_cost.md).
 #define SF_METHOD_PART SF_METHOD_PART_BINDING
 #include "sf_filter/config/methods.hpp"
 #undef SF_METHOD_PART

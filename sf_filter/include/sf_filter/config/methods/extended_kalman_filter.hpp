@@ -56,7 +56,10 @@ using Filter = estimation::LayoutExtendedKalmanFilter<sf_config::Model, sf_confi
 #else
 using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
 #endif
-inline Filter makeFilter(const sf_config::Parameters& p) { return makeModelFilter<Filter>(p); }
+template <class = void>  // see filter_binding.hpp
+Filter makeFilter(const sf_config::Parameters& p) {
+  return makeModelFilter<Filter>(p);
+}
 
 }  // namespace generated
 }  // namespace sf_filter
