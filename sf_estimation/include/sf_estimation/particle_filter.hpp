@@ -447,38 +447,7 @@ class ParticleFilterSIR {
   /// Angle states: the circular mean atan2(sum w sin, sum w cos) of the particles, and
   /// deviations from it wrapped to (-pi, pi]. A planar pose: the SE(2) mean, from that
   /// start; the covariance is then the mean square deviation from it.
-  void updateMoments() {
-    state_.setZero();
-    forEachDistinctParticle([&](Index i, double w) { state_ += w * particles_.col(i); });
-    if (angleStates_.any()) {
-      for (Index r = 0; r < stateSize(); ++r) {
-        if (!angleStates_(r)) continue;
-        double s = 0.0, c = 0.0;
-        forEachDistinctParticle([&](Index i, double w) {
-          s += w * std::sin(particles_(r, i));
-          c += w * std::cos(particles_(r, i));
-        });
-        state_(r) = std::atan2(s, c);
-      }
-    }
-    if (params_.planarPose) {
-      planarPoseMean(
-          *params_.planarPose,
-          [&](auto&& f) {
-            forEachDistinctParticle([&](Index i, double w) { f(particles_.col(i), w); });
-          },
-          state_);
-    }
-    Vector<N> deviation(stateSize()), weighted(stateSize());
-    covariance_.setZero();
-    forEachDistinctParticle([&](Index i, double w) {
-      deviation = particles_.col(i) - state_;
-      angleStates_.wrap(deviation);
-      weighted = w * deviation;
-      covariance_.noalias() += weighted * deviation.transpose();
-    });
-    symmetrize(covariance_);
-  }
+  void updateMoments();  // defined below, as step
 
   /// Calls f(i, w) for each run of equal adjacent particles, with i its first particle and w
   /// their summed weight, skipping zero weights. Resampling copies a particle to adjacent
@@ -525,6 +494,40 @@ class ParticleFilterSIR {
   Matrix<N, N> sharedSpread_;  // what the shared block adds to the particles' spread in a step
   std::optional<LinearisedProposal<Model>> proposal_;  // ParticleProposal::Linearised
 };
+
+template <class Model>
+void ParticleFilterSIR<Model>::updateMoments() {
+  state_.setZero();
+  forEachDistinctParticle([&](Index i, double w) { state_ += w * particles_.col(i); });
+  if (angleStates_.any()) {
+    for (Index r = 0; r < stateSize(); ++r) {
+      if (!angleStates_(r)) continue;
+      double s = 0.0, c = 0.0;
+      forEachDistinctParticle([&](Index i, double w) {
+        s += w * std::sin(particles_(r, i));
+        c += w * std::cos(particles_(r, i));
+      });
+      state_(r) = std::atan2(s, c);
+    }
+  }
+  if (params_.planarPose) {
+    planarPoseMean(
+        *params_.planarPose,
+        [&](auto&& f) {
+          forEachDistinctParticle([&](Index i, double w) { f(particles_.col(i), w); });
+        },
+        state_);
+  }
+  Vector<N> deviation(stateSize()), weighted(stateSize());
+  covariance_.setZero();
+  forEachDistinctParticle([&](Index i, double w) {
+    deviation = particles_.col(i) - state_;
+    angleStates_.wrap(deviation);
+    weighted = w * deviation;
+    covariance_.noalias() += weighted * deviation.transpose();
+  });
+  symmetrize(covariance_);
+}
 
 template <class Model>
 void ParticleFilterSIR<Model>::predictMeasurement(MeasurementPrediction<M>& out) const {
@@ -605,4 +608,5 @@ void ParticleFilterSIR<Model>::step(const Measurement<M>& z) {
 #define SF_ESTIMATION_PARTICLE_FILTER_STEP(PREFIX, FILTER)                                       \
   PREFIX template void FILTER::step(const estimation::Measurement<FILTER::M>&);                  \
   PREFIX template void FILTER::predictMeasurement(estimation::MeasurementPrediction<FILTER::M>&) \
-      const;
+      const;                                                                                     \
+  PREFIX template void FILTER::updateMoments();
