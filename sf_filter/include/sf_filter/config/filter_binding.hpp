@@ -53,9 +53,9 @@ Filter makeModelFilter(const sf_config::Parameters& p, const Own&... own) {
 
 // What of the header's filter a node built by sf_add_filter() compiles in its second unit
 // (fusion_node_smoothers.cpp) besides the smoothers: declared extern (PREFIX extern) in the
-// node's unit, instantiated (PREFIX empty) in the second, at global scope. A method
-// whose model-dependent code is too large for one unit defines it in its binding part
-// (doc/build_cost.md, "The 3D headers' Jacobians"); nothing otherwise.
+// node's unit, instantiated (PREFIX empty) in the second, at global scope. A method whose
+// model-dependent code is too large for one unit defines it in its binding part; nothing
+// otherwise (doc/build_cost.md, "The 3D headers' Jacobians and the particle filter's step").
 #ifndef SF_CFG_SECOND_UNIT_INSTANCES
 #define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX)
 #endif
