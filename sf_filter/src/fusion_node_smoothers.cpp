@@ -20,5 +20,6 @@
 namespace sf_filter {
 SF_FILTER_SMOOTHER_INSTANCES(, FusionCore<generated::Filter>)
 }  // namespace sf_filter
+SF_CFG_SECOND_UNIT_INSTANCES()
 
 #endif  // SF_CONFIG_OK

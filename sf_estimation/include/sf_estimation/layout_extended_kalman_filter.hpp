@@ -52,7 +52,7 @@ class LayoutExtendedKalmanFilter
     if (z.anyAvailable()) {
       Matrix<M, D> H;
       Vector<M> expected;
-      Manifold::observationJacobianAt(this->model_, x, expected, H);
+      observationJacobian(x, expected, H);
       if constexpr (MeasurementLayout::IsFlat) {
         correct(z, z.value - expected, H, x, P);
       } else {
@@ -72,7 +72,7 @@ class LayoutExtendedKalmanFilter
     Covariance P;
     predict(x, P);
     Matrix<M, D> H;
-    Manifold::observationJacobianAt(this->model_, x, out.mean, H);
+    observationJacobian(x, out.mean, H);
     this->angleMeasurements_.wrap(out.mean);
     projectCovariance<D, M>(H, P, out.covariance);
     out.noise = this->R_;
@@ -101,21 +101,48 @@ class LayoutExtendedKalmanFilter
     propagateCovariance<D>(F, this->P_, this->Q_, P);
   }
 
+  // The model's Jacobians by AutoDiff, most of the filter's compile cost: defined below, out
+  // of the class (not inline), so that a node compiles them in its second unit
+  // (SF_ESTIMATION_LAYOUT_EKF_JACOBIANS).
+
   /// F at the current state (see the top of the file) and f(x, u).
-  void transitionJacobian(State& next, Matrix<D, D>& F) const {
-    using Ad = Eigen::AutoDiffScalar<Vector<D>>;
-    typename Layout::template Tangent<Ad> e;
-    for (Index i = 0; i < D; ++i) e(i) = Ad(0.0, D, i);
-    const typename Layout::template Stored<Ad> x =
-        Layout::template plus<Ad>(this->x_.template cast<Ad>(), e);
-    typename Layout::template Stored<Ad> f;
-    this->model_.flat.transition(x, this->u_, f);
-    for (Index i = 0; i < N; ++i) next(i) = f(i).value();
-    Layout::normalise(next);
-    const typename Layout::template Tangent<Ad> deviation =
-        Layout::template minus<Ad>(f, next.template cast<Ad>());
-    for (Index i = 0; i < D; ++i) F.row(i) = deviation(i).derivatives().transpose();
-  }
+  void transitionJacobian(State& next, Matrix<D, D>& F) const;
+
+  /// H at the state x and h(x).
+  void observationJacobian(const State& x, Vector<M>& expected, Matrix<M, D>& H) const;
 };
 
+template <class FlatModel, class Layout, class MeasurementLayout>
+void LayoutExtendedKalmanFilter<FlatModel, Layout, MeasurementLayout>::transitionJacobian(
+    State& next, Matrix<D, D>& F) const {
+  using Ad = Eigen::AutoDiffScalar<Vector<D>>;
+  typename Layout::template Tangent<Ad> e;
+  for (Index i = 0; i < D; ++i) e(i) = Ad(0.0, D, i);
+  const typename Layout::template Stored<Ad> x =
+      Layout::template plus<Ad>(this->x_.template cast<Ad>(), e);
+  typename Layout::template Stored<Ad> f;
+  this->model_.flat.transition(x, this->u_, f);
+  for (Index i = 0; i < N; ++i) next(i) = f(i).value();
+  Layout::normalise(next);
+  const typename Layout::template Tangent<Ad> deviation =
+      Layout::template minus<Ad>(f, next.template cast<Ad>());
+  for (Index i = 0; i < D; ++i) F.row(i) = deviation(i).derivatives().transpose();
+}
+
+template <class FlatModel, class Layout, class MeasurementLayout>
+void LayoutExtendedKalmanFilter<FlatModel, Layout, MeasurementLayout>::observationJacobian(
+    const State& x, Vector<M>& expected, Matrix<M, D>& H) const {
+  Manifold::observationJacobianAt(this->model_, x, expected, H);
+}
+
 }  // namespace estimation
+
+// The Jacobians of FILTER (a LayoutExtendedKalmanFilter), declared extern (PREFIX extern) in
+// a node's unit and instantiated (PREFIX empty) in its second unit, like the smoothers
+// (doc/build_cost.md, "The 3D headers' Jacobians and the particle filter's step").
+#define SF_ESTIMATION_LAYOUT_EKF_JACOBIANS(PREFIX, FILTER)              \
+  PREFIX template void FILTER::transitionJacobian(                      \
+      FILTER::State&, estimation::Matrix<FILTER::D, FILTER::D>&) const; \
+  PREFIX template void FILTER::observationJacobian(                     \
+      const FILTER::State&, estimation::Vector<FILTER::M>&,             \
+      estimation::Matrix<FILTER::M, FILTER::D>&) const;

@@ -228,78 +228,16 @@ class ParticleFilterSIR {
   /// numbers, from a copy of the engine, with the current control and weights); the filter is
   /// unchanged. The moments are accumulated in one pass (West's weighted update), so no
   /// buffer of p predicted particles is needed.
-  void predictMeasurement(MeasurementPrediction<M>& out) const {
-    const Index n = stateSize(), m = measurementSize(), p = particleCount();
-    probability::RandomEngine engine = engine_;
-    Vector<N> in(n), transitioned(n), noise(n), sample(n);
-    Vector<M> expected(m), deviation(m), after(m);
-    // Sized here: a caller's prediction of dynamic size may come in empty (or of another
-    // size); for a fixed M, m is M.
-    out.mean.setZero(m);
-    out.covariance.setZero(m, m);
-    double weightSum = 0.0;
-    for (Index i = 0; i < p; ++i) {
-      in = particles_.col(i);
-      sampleTransition(in, engine, transitioned, noise, sample);
-      const double w = weights_(i);
-      if (w == 0.0) continue;
-      model_.observation(sample, expected);
-      weightSum += w;
-      // For an angle the running mean moves by the wrapped deviation: the mean on the
-      // circle in the chart around the running mean.
-      deviation = expected - out.mean;
-      angleMeasurements_.wrap(deviation);
-      out.mean += (w / weightSum) * deviation;
-      angleMeasurements_.wrap(out.mean);
-      after = expected - out.mean;
-      angleMeasurements_.wrap(after);
-      out.covariance.noalias() += w * deviation * after.transpose();
-    }
-    out.covariance /= weightSum;
-    symmetrize(out.covariance);
-    out.noise = R_;
-    out.angular = angleMeasurements_.mask();
-  }
+  void predictMeasurement(MeasurementPrediction<M>& out) const;  // defined below, as step
 
   const Model& model() const { return model_; }
   Model& model() { return model_; }
 
  private:
-  void step(const Measurement<M>& z) {
-    const Index n = stateSize(), p = particleCount();
-    // Sample: x_i' = f(x_i, u) + w_i, w_i ~ N(0, Q). One particle at a time, so that its
-    // values stay in registers; the normals are drawn in the same order as when filling a
-    // whole n x p matrix column by column.
-    if (anyDeadReckoned_) propagateSharedCovariance();
-    newLogWeights_ = logWeights_;
-    if (proposal_ && z.anyAvailable()) {
-      sampleFromProposal(z);
-    } else {
-      Vector<N> in(n), out(n), noise(n), sample(n);
-      for (Index i = 0; i < p; ++i) {
-        in = particles_.col(i);
-        sampleTransition(in, engine_, out, noise, sample);
-        scratch_.col(i) = sample;
-      }
-    }
-    // Weight: log w_i += log N(z; h(x_i), R) over the present entries.
-    if (z.anyAvailable()) weigh(z);
-    // Every weight vanished (the likelihood is zero or not a number for every particle): the
-    // measurement is dropped, the weights stay those before it.
-    const bool weightsVanished = !(newLogWeights_.maxCoeff() > -kInfinity);
-    if (weightsVanished) newLogWeights_ = logWeights_;
-    normaliseWeights();
-
-    particles_.swap(scratch_);
-    logWeights_.swap(newLogWeights_);
-    effectiveSampleSize_ = std::min(1.0 / weights_.squaredNorm(), static_cast<double>(p));
-    // The moments of the weighted particles, before resampling replaces them by copies.
-    updateMoments();
-    if (anyDeadReckoned_) covariance_ += sharedSpread_;
-    resampled_ = effectiveSampleSize_ <= params_.resamplingThreshold * static_cast<double>(p);
-    if (resampled_) resample();
-    if (weightsVanished) ++repairs_.weights;
-  }
+  // One step (sampling, weighing, resampling), most of the filter's compile cost: defined
+  // below, out of the class (not inline), so that a node compiles it in its second unit
+  // (SF_ESTIMATION_PARTICLE_FILTER_STEP).
+  void step(const Measurement<M>& z);
 
   /// sample = f(in, u) + w with w ~ N(0, Q) drawn from `engine`; `out` and `noise` are
   /// scratch. Throws NumericalError for a non-finite sample. Shared dead reckoning: `in`'s
@@ -509,38 +447,7 @@ class ParticleFilterSIR {
   /// Angle states: the circular mean atan2(sum w sin, sum w cos) of the particles, and
   /// deviations from it wrapped to (-pi, pi]. A planar pose: the SE(2) mean, from that
   /// start; the covariance is then the mean square deviation from it.
-  void updateMoments() {
-    state_.setZero();
-    forEachDistinctParticle([&](Index i, double w) { state_ += w * particles_.col(i); });
-    if (angleStates_.any()) {
-      for (Index r = 0; r < stateSize(); ++r) {
-        if (!angleStates_(r)) continue;
-        double s = 0.0, c = 0.0;
-        forEachDistinctParticle([&](Index i, double w) {
-          s += w * std::sin(particles_(r, i));
-          c += w * std::cos(particles_(r, i));
-        });
-        state_(r) = std::atan2(s, c);
-      }
-    }
-    if (params_.planarPose) {
-      planarPoseMean(
-          *params_.planarPose,
-          [&](auto&& f) {
-            forEachDistinctParticle([&](Index i, double w) { f(particles_.col(i), w); });
-          },
-          state_);
-    }
-    Vector<N> deviation(stateSize()), weighted(stateSize());
-    covariance_.setZero();
-    forEachDistinctParticle([&](Index i, double w) {
-      deviation = particles_.col(i) - state_;
-      angleStates_.wrap(deviation);
-      weighted = w * deviation;
-      covariance_.noalias() += weighted * deviation.transpose();
-    });
-    symmetrize(covariance_);
-  }
+  void updateMoments();  // defined below, as step
 
   /// Calls f(i, w) for each run of equal adjacent particles, with i its first particle and w
   /// their summed weight, skipping zero weights. Resampling copies a particle to adjacent
@@ -588,4 +495,118 @@ class ParticleFilterSIR {
   std::optional<LinearisedProposal<Model>> proposal_;  // ParticleProposal::Linearised
 };
 
+template <class Model>
+void ParticleFilterSIR<Model>::updateMoments() {
+  state_.setZero();
+  forEachDistinctParticle([&](Index i, double w) { state_ += w * particles_.col(i); });
+  if (angleStates_.any()) {
+    for (Index r = 0; r < stateSize(); ++r) {
+      if (!angleStates_(r)) continue;
+      double s = 0.0, c = 0.0;
+      forEachDistinctParticle([&](Index i, double w) {
+        s += w * std::sin(particles_(r, i));
+        c += w * std::cos(particles_(r, i));
+      });
+      state_(r) = std::atan2(s, c);
+    }
+  }
+  if (params_.planarPose) {
+    planarPoseMean(
+        *params_.planarPose,
+        [&](auto&& f) {
+          forEachDistinctParticle([&](Index i, double w) { f(particles_.col(i), w); });
+        },
+        state_);
+  }
+  Vector<N> deviation(stateSize()), weighted(stateSize());
+  covariance_.setZero();
+  forEachDistinctParticle([&](Index i, double w) {
+    deviation = particles_.col(i) - state_;
+    angleStates_.wrap(deviation);
+    weighted = w * deviation;
+    covariance_.noalias() += weighted * deviation.transpose();
+  });
+  symmetrize(covariance_);
+}
+
+template <class Model>
+void ParticleFilterSIR<Model>::predictMeasurement(MeasurementPrediction<M>& out) const {
+  const Index n = stateSize(), m = measurementSize(), p = particleCount();
+  probability::RandomEngine engine = engine_;
+  Vector<N> in(n), transitioned(n), noise(n), sample(n);
+  Vector<M> expected(m), deviation(m), after(m);
+  // Sized here: a caller's prediction of dynamic size may come in empty (or of another
+  // size); for a fixed M, m is M.
+  out.mean.setZero(m);
+  out.covariance.setZero(m, m);
+  double weightSum = 0.0;
+  for (Index i = 0; i < p; ++i) {
+    in = particles_.col(i);
+    sampleTransition(in, engine, transitioned, noise, sample);
+    const double w = weights_(i);
+    if (w == 0.0) continue;
+    model_.observation(sample, expected);
+    weightSum += w;
+    // For an angle the running mean moves by the wrapped deviation: the mean on the
+    // circle in the chart around the running mean.
+    deviation = expected - out.mean;
+    angleMeasurements_.wrap(deviation);
+    out.mean += (w / weightSum) * deviation;
+    angleMeasurements_.wrap(out.mean);
+    after = expected - out.mean;
+    angleMeasurements_.wrap(after);
+    out.covariance.noalias() += w * deviation * after.transpose();
+  }
+  out.covariance /= weightSum;
+  symmetrize(out.covariance);
+  out.noise = R_;
+  out.angular = angleMeasurements_.mask();
+}
+
+template <class Model>
+void ParticleFilterSIR<Model>::step(const Measurement<M>& z) {
+  const Index n = stateSize(), p = particleCount();
+  // Sample: x_i' = f(x_i, u) + w_i, w_i ~ N(0, Q). One particle at a time, so that its
+  // values stay in registers; the normals are drawn in the same order as when filling a
+  // whole n x p matrix column by column.
+  if (anyDeadReckoned_) propagateSharedCovariance();
+  newLogWeights_ = logWeights_;
+  if (proposal_ && z.anyAvailable()) {
+    sampleFromProposal(z);
+  } else {
+    Vector<N> in(n), out(n), noise(n), sample(n);
+    for (Index i = 0; i < p; ++i) {
+      in = particles_.col(i);
+      sampleTransition(in, engine_, out, noise, sample);
+      scratch_.col(i) = sample;
+    }
+  }
+  // Weight: log w_i += log N(z; h(x_i), R) over the present entries.
+  if (z.anyAvailable()) weigh(z);
+  // Every weight vanished (the likelihood is zero or not a number for every particle): the
+  // measurement is dropped, the weights stay those before it.
+  const bool weightsVanished = !(newLogWeights_.maxCoeff() > -kInfinity);
+  if (weightsVanished) newLogWeights_ = logWeights_;
+  normaliseWeights();
+
+  particles_.swap(scratch_);
+  logWeights_.swap(newLogWeights_);
+  effectiveSampleSize_ = std::min(1.0 / weights_.squaredNorm(), static_cast<double>(p));
+  // The moments of the weighted particles, before resampling replaces them by copies.
+  updateMoments();
+  if (anyDeadReckoned_) covariance_ += sharedSpread_;
+  resampled_ = effectiveSampleSize_ <= params_.resamplingThreshold * static_cast<double>(p);
+  if (resampled_) resample();
+  if (weightsVanished) ++repairs_.weights;
+}
+
 }  // namespace estimation
+
+// The step of FILTER (a ParticleFilterSIR), declared extern (PREFIX extern) in a node's unit
+// and instantiated (PREFIX empty) in its second unit, like the smoothers (doc/build_cost.md,
+// "The 3D headers' Jacobians and the particle filter's step").
+#define SF_ESTIMATION_PARTICLE_FILTER_STEP(PREFIX, FILTER)                                       \
+  PREFIX template void FILTER::step(const estimation::Measurement<FILTER::M>&);                  \
+  PREFIX template void FILTER::predictMeasurement(estimation::MeasurementPrediction<FILTER::M>&) \
+      const;                                                                                     \
+  PREFIX template void FILTER::updateMoments();

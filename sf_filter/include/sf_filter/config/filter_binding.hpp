@@ -43,7 +43,19 @@ Filter makeModelFilter(const sf_config::Parameters& p, const Own&... own) {
 }  // namespace sf_filter
 
 // Filter and makeFilter(const sf_config::Parameters&) of the chosen method, from its traits
-// header (config/methods/<method>.hpp, SF_METHOD_PART_BINDING).
+// header (config/methods/<method>.hpp, SF_METHOD_PART_BINDING). A model-based method's
+// makeFilter is a template (of a defaulted, unused parameter): an inline function's body is
+// compiled, and the filter's construction instantiated, in every unit that includes it, the
+// node's second unit too, which never builds the filter (doc/build_cost.md).
 #define SF_METHOD_PART SF_METHOD_PART_BINDING
 #include "sf_filter/config/methods.hpp"
 #undef SF_METHOD_PART
+
+// What of the header's filter a node built by sf_add_filter() compiles in its second unit
+// (fusion_node_smoothers.cpp) besides the smoothers: declared extern (PREFIX extern) in the
+// node's unit, instantiated (PREFIX empty) in the second, at global scope. A method whose
+// model-dependent code is too large for one unit defines it in its binding part; nothing
+// otherwise (doc/build_cost.md, "The 3D headers' Jacobians and the particle filter's step").
+#ifndef SF_CFG_SECOND_UNIT_INSTANCES
+#define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX)
+#endif

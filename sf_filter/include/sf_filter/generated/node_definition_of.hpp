@@ -35,12 +35,16 @@ static_assert(BOOST_PP_SEQ_ELEM(0, POSE_OUT) < sf_config::kStateSize &&
               "POSE_OUT: every state index must be < n (the state size)");
 #endif
 
+#if !SF_CFG_IS_AVERAGING && defined(SF_FILTER_SMOOTHERS_UNIT)
+SF_CFG_SECOND_UNIT_INSTANCES(extern)
+#endif
+
 namespace sf_filter {
 
 #if !SF_CFG_IS_AVERAGING && defined(SF_FILTER_SMOOTHERS_UNIT)
-// In a node built by sf_add_filter() the smoothers of the header's filter are compiled in a
-// unit of their own (fusion_node_smoothers.cpp); other units of a header (tests, tools)
-// instantiate them where they use them.
+// In a node built by sf_add_filter() the smoothers of the header's filter (and what its method
+// puts beside them) are compiled in a unit of their own (fusion_node_smoothers.cpp); other
+// units of a header (tests, tools) instantiate them where they use them.
 SF_FILTER_SMOOTHER_INSTANCES(extern, FusionCore<generated::Filter>)
 #endif
 

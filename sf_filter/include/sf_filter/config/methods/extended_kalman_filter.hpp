@@ -50,10 +50,16 @@ namespace generated {
 #if SF_CFG_HAS_QUATERNION_STATES
 using Filter = estimation::LayoutExtendedKalmanFilter<sf_config::Model, sf_config::StateLayout,
                                                       sf_config::MeasurementLayout>;
+// Its AutoDiff Jacobians in the node's second unit (filter_binding.hpp).
+#define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX) \
+  SF_ESTIMATION_LAYOUT_EKF_JACOBIANS(PREFIX, sf_filter::generated::Filter)
 #else
 using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
 #endif
-inline Filter makeFilter(const sf_config::Parameters& p) { return makeModelFilter<Filter>(p); }
+template <class = void>  // see filter_binding.hpp
+Filter makeFilter(const sf_config::Parameters& p) {
+  return makeModelFilter<Filter>(p);
+}
 
 }  // namespace generated
 }  // namespace sf_filter

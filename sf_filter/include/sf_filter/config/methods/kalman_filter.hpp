@@ -68,7 +68,8 @@ namespace generated {
 
 using Filter = estimation::KalmanFilter<sf_config::kStateSize, sf_config::kMeasurementSize,
                                         sf_config::kControlSize>;
-inline Filter makeFilter(const sf_config::Parameters& p) {
+template <class = void>  // see filter_binding.hpp
+Filter makeFilter(const sf_config::Parameters& p) {
   sf_config::Model model;
   model.T = periodSeconds(p);  // matrices may use T
   return Filter(model.transitionMatrix(), model.controlInputMatrix(), model.observationMatrix(),

@@ -1,7 +1,7 @@
 // Traits of METHOD PARTICLE_FILTER_SIR (thesis Algorithm 3.4): included once per pass by
 // config/methods.hpp, which explains the passes. Its own macros: NUMBER_OF_PARTICLES,
-// RANDOM_SEED, RESAMPLING_THRESHOLD, PF_SHARED_DEAD_RECKONING, PF_LINEARISED_PROPOSAL. The model's macros are checked for every model-based
-// method by validation.hpp (SF_METHOD_KIND_MODEL).
+// RANDOM_SEED, RESAMPLING_THRESHOLD, PF_SHARED_DEAD_RECKONING, PF_LINEARISED_PROPOSAL. The model's
+// macros are checked for every model-based method by validation.hpp (SF_METHOD_KIND_MODEL).
 
 // clang-format off
 #if SF_METHOD_PART == SF_METHOD_PART_DECLARE
@@ -115,7 +115,11 @@ namespace sf_filter {
 namespace generated {
 
 using Filter = estimation::ParticleFilterSIR<sf_config::Model>;
-inline Filter makeFilter(const sf_config::Parameters& p) {
+// Its step in the node's second unit (filter_binding.hpp).
+#define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX) \
+  SF_ESTIMATION_PARTICLE_FILTER_STEP(PREFIX, sf_filter::generated::Filter)
+template <class = void>  // see filter_binding.hpp
+Filter makeFilter(const sf_config::Parameters& p) {
   estimation::ParticleFilterParameters pf;
   pf.particles = p.number_of_particles;
   pf.seed = p.random_seed;

@@ -100,7 +100,8 @@ namespace generated {
 
 using Filter = estimation::LayoutUnscentedKalmanFilter<sf_config::Model, sf_config::StateLayout,
                                                        sf_config::MeasurementLayout>;
-inline Filter makeFilter(const sf_config::Parameters& p) {
+template <class = void>  // see filter_binding.hpp
+Filter makeFilter(const sf_config::Parameters& p) {
   if (!p.ukf_propagated_mean) {
     throw estimation::ParameterError(
         "ukf_propagated_mean: false is not possible with QUATERNION_STATES, whose UKF (UKF-M) "
@@ -120,11 +121,12 @@ namespace sf_filter {
 namespace generated {
 
 using Filter = estimation::UnscentedKalmanFilter<sf_config::Model>;
-inline Filter makeFilter(const sf_config::Parameters& p) {
-  const estimation::UnscentedParameters ut{
-      p.ukf_alpha, p.ukf_beta, p.ukf_kappa,
-      p.ukf_propagated_mean ? estimation::PredictedMean::Propagated
-                            : estimation::PredictedMean::SigmaPointAverage};
+template <class = void>  // see filter_binding.hpp
+Filter makeFilter(const sf_config::Parameters& p) {
+  const estimation::UnscentedParameters ut{p.ukf_alpha, p.ukf_beta, p.ukf_kappa,
+                                           p.ukf_propagated_mean
+                                               ? estimation::PredictedMean::Propagated
+                                               : estimation::PredictedMean::SigmaPointAverage};
   return makeModelFilter<Filter>(p, ut);
 }
 
