@@ -118,10 +118,12 @@ void kalmanGain(const Matrix<N, M>& crossCovariance, const Matrix<M, M>& S, Matr
       LD(i, k) = sum / pivot;
     }
   }
-  // K L D L^T = crossCovariance.
-  K = crossCovariance;
+  // K L D L^T = crossCovariance. K <- crossCovariance L^-T column by column: copied as one
+  // block, an odd column's entries were stored at other boundaries than the solve loads them
+  // at, and each load waited for the stores to reach the cache.
 #pragma GCC unroll 8
-  for (Index i = 0; i < m; ++i) {  // K <- K L^-T
+  for (Index i = 0; i < m; ++i) {
+    K.col(i) = crossCovariance.col(i);
 #pragma GCC unroll 8
     for (Index j = 0; j < i; ++j) K.col(i) -= LD(i, j) * K.col(j);
   }
@@ -150,8 +152,8 @@ void linearCorrection(Vector<N>& x, Matrix<N, N>& P, const Matrix<M, N>& H, cons
   Matrix<N, M> K(n, m);
   kalmanGain<N, M>(PHt, S, K);
   multiply<Store::Add>(K, y, x);
-  Matrix<N, N> IKH = Matrix<N, N>::Identity(n, n);
-  multiply<Store::Subtract>(K, H, IKH);
+  Matrix<N, N> IKH(n, n);
+  multiplyOnto<Store::Subtract>(Matrix<N, N>::Identity(n, n), K, H, IKH);
   // (I - K H) P = P - K (P H^T)^T as P is symmetric: reuses P H^T, n^2 m instead of n^3.
   Matrix<N, N> IKHP(n, n);
   multiplyOnto<Store::Subtract, true>(P, K, PHt, IKHP);

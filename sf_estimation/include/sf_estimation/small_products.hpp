@@ -45,10 +45,19 @@ inline void multiplyOnto(const Base& base, const A& a, const B& b, Out& out) {
   static_assert(!A::IsRowMajor || A::RowsAtCompileTime == 1, "a: column-major or a single row");
   static_assert(!Out::IsRowMajor || Out::RowsAtCompileTime == 1,
                 "out: column-major or a single row");
-  static_assert(!Base::IsRowMajor || Base::RowsAtCompileTime == 1,
-                "base: column-major or a single row");
+  static_assert(
+      !Base::IsRowMajor || Base::RowsAtCompileTime == 1 || !(Base::Flags & Eigen::DirectAccessBit),
+      "base: column-major, a single row or an expression");
   using pairs::load;
   using pairs::Pair;
+  // An expression without storage (the identity) as the base gives its entries by value.
+  const auto basePair = [&base](Index i, Index j) {
+    if constexpr (bool(Base::Flags & Eigen::DirectAccessBit)) {
+      return load(&base.coeffRef(i, j));
+    } else {
+      return Pair{base.coeff(i, j), base.coeff(i + 1, j)};
+    }
+  };
   const auto rhs = [&b](Index k, Index j) { return TransposeB ? b.coeff(j, k) : b.coeff(k, j); };
   const Index rows = a.rows();
   const Index inner = a.cols();
@@ -60,8 +69,8 @@ inline void multiplyOnto(const Base& base, const A& a, const B& b, Out& out) {
       if (inner > 0) sum = load(&a.coeffRef(i, 0)) * rhs(0, j);
 #pragma GCC unroll 8
       for (Index k = 1; k < inner; ++k) sum += load(&a.coeffRef(i, k)) * rhs(k, j);
-      if constexpr (store == Store::Add) sum = load(&base.coeffRef(i, j)) + sum;
-      if constexpr (store == Store::Subtract) sum = load(&base.coeffRef(i, j)) - sum;
+      if constexpr (store == Store::Add) sum = basePair(i, j) + sum;
+      if constexpr (store == Store::Subtract) sum = basePair(i, j) - sum;
       pairs::store(sum, &out.coeffRef(i, j));
     }
     if (i < rows) {
