@@ -73,4 +73,21 @@ void symmetrize(Eigen::MatrixBase<Derived>& P) {
   }
 }
 
+/// symmetrize(P), returning whether every entry of the result is finite: the test is fused into
+/// the pass that writes the entries (a separate pass over P cost as much as the averaging).
+template <class Derived>
+bool symmetrizeFinite(Eigen::MatrixBase<Derived>& P) {
+  bool finite = true;
+  for (Index j = 0; j < P.cols(); ++j) {
+    finite &= P(j, j) - P(j, j) == 0.0;  // false for an infinity or a NaN
+    for (Index i = j + 1; i < P.rows(); ++i) {
+      const double mean = 0.5 * (P(i, j) + P(j, i));
+      P(i, j) = mean;
+      P(j, i) = mean;
+      finite &= mean - mean == 0.0;
+    }
+  }
+  return finite;
+}
+
 }  // namespace estimation
