@@ -315,7 +315,7 @@ TEST(FusionCoreStamps, AnUnstampedValueReadAfterAClockJumpGoesWhereItsCadencePut
 }
 
 // Issue 38 D10, round seven: a stall longer than the lag (0.5 s here, from 0.45 s: as the node
-// stalled 0.45-0.64 s of bag time beside stress-ng) estimated the period of the first value
+// stalled 0.43-0.65 s of bag time beside stress-ng) estimated the period of the first value
 // of the backlog before it was read, and that value kept its arrival. The cadence then went on
 // from the arrival, so the backlog's later values, whose periods were still open, were
 // placed at their arrival too: three periods without a speed. The cadence goes on from the
