@@ -314,6 +314,32 @@ TEST(FusionCoreStamps, AnUnstampedValueReadAfterAClockJumpGoesWhereItsCadencePut
   }
 }
 
+// Issue 38 D10, round seven: a stall longer than the lag (0.5 s here, from 0.45 s: as the node
+// stalled 0.43-0.65 s of bag time beside stress-ng) estimated the period of the first value
+// of the backlog before it was read, and that value kept its arrival. The cadence then went on
+// from the arrival, so the backlog's later values, whose periods were still open, were
+// placed at their arrival too: three periods without a speed. The cadence goes on from the
+// predicted time instead, and each of them counts for the period it was sent in; the reference
+// is the train stepped by hand up to the period before the stall's end, where the value of
+// [0.5, 0.6) s joined the arrival's (as before).
+TEST(FusionCoreStamps, AfterAStallLongerThanTheLagTheBacklogStillGoesWhereItsCadencePutsIt) {
+  constexpr std::size_t kEmpty = 3;  // the periods ending at -0.2, -0.1 and 0 s
+  CadenceRun run;
+  run.stallFrom = 0.45;
+  run.stallTo = 0.95;
+  const std::vector<Core::Estimate> estimates = runCadence(run);
+  ASSERT_EQ(estimates.size(), kEmpty + 10);
+  Train reference = makeTrain();
+  for (std::size_t k = 0; k < kEmpty + 9; ++k) {
+    const double j = static_cast<double>(k) - static_cast<double>(kEmpty);
+    reference.estimate(k < kEmpty || j == 5.0 ? Measurement<2>::missing()
+                       : j > 5.0              ? speedOnly(1.0 + 0.5 * j)
+                                              : speedAndAcceleration(1.0 + 0.5 * j, 0.0));
+    EXPECT_NEAR(estimates[k].time, 0.1 * (j + 1.0), 1e-9);
+    expectSameBelief(estimates[k], reference);
+  }
+}
+
 // The cadence moves nothing when the evidence is missing: a value the sensor skipped (the
 // 200 ms gap at 21.64 s of bags/pioneer_seed1.bag's wheels) while the acceleration kept
 // arriving, and a stall longer than the lag (the period of the prediction already estimated).

@@ -353,15 +353,19 @@ double FusionCoreBase::arrivalTime(double now, double stamp) const {
 double FusionCoreBase::cadenceTime(Index input, double arrival, double now) {
   ArrivalCadence& cadence = cadences_[static_cast<std::size_t>(input)];
   const double expected = cadence.lateExpected(arrival);
-  double time = arrival;
+  double time = arrival, sent = arrival;
   if (!std::isnan(expected) && othersSilentSince(input, expected, now)) {
     bool estimated = false, beyond = false, arrivalEstimated = false, arrivalBeyond = false;
     const std::uint64_t k = ring_->openPeriodOf(expected, estimated, beyond);
     if (!estimated && k < ring_->openPeriodOf(arrival, arrivalEstimated, arrivalBeyond)) {
       time = expected;
     }
+    // The cadence goes on from when the value was sent, also when its period was estimated
+    // already (a stall longer than the lag): the backlog's next values then still reach
+    // their periods that are open (issue 38 D10, round seven).
+    sent = expected;
   }
-  cadence.note(arrival, time);
+  cadence.note(arrival, sent);
   return time;
 }
 

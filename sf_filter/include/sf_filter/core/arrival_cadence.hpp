@@ -22,13 +22,13 @@ class ArrivalCadence {
   /// Intervals needed before the cadence predicts anything.
   static constexpr int kMinIntervals = 4;
 
-  /// The time the cadence predicts for a value arriving at `arrival` (the previous value's
-  /// placement plus the median interval) if the value is later than that by more than half an
-  /// interval (a late delivery, not jitter); NaN otherwise, while the cadence is unknown, and
-  /// when the previous value arrived less than half an interval before the prediction and
-  /// not in the same backlog (the same arrival): then the input is on time again, and a
-  /// prediction from a value placed early (a skipped value taken for a late one) would carry
-  /// the error on.
+  /// The time the cadence predicts for a value arriving at `arrival` (the time the previous
+  /// value was sent, as noted, plus the median interval) if the value is later than that by
+  /// more than half an interval (a late delivery, not jitter); NaN otherwise, while the
+  /// cadence is unknown, and when the previous value arrived less than half an interval before
+  /// the prediction and not in the same backlog (the same arrival): then the input is on time
+  /// again, and a prediction from a value placed early (a skipped value taken for a late one)
+  /// would carry the error on.
   double lateExpected(double arrival) const {
     if (count_ < kMinIntervals) return std::numeric_limits<double>::quiet_NaN();
     const double interval = median();
@@ -40,7 +40,8 @@ class ArrivalCadence {
     return expected;
   }
 
-  /// A value of this input that arrived at `arrival` was placed at `time`.
+  /// A value of this input that arrived at `arrival` was sent at `time` (its placement, or the
+  /// cadence's prediction where its period was estimated already).
   void note(double arrival, double time) {
     if (arrival > lastArrival_) {  // -inf before the first: no interval
       if (!std::isinf(lastArrival_)) {
