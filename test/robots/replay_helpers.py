@@ -27,16 +27,34 @@ def built_lib_dir(*exe_names):
     return lib_dir
 
 
+def built_exe(exe_name):
+    """The path of the built executable `exe_name` (built_lib_dir(): skips when not built)."""
+    return os.path.join(built_lib_dir(exe_name), exe_name)
+
+
 def replay_exe(exe_name, bag, csv_path, *extra):
     """Runs `<exe> --replay BAG --csv CSV [extra]` from built_lib_dir(); the finished process.
     Skips the test when the executable is not built, fails it when the replay fails."""
-    exe = os.path.join(built_lib_dir(exe_name), exe_name)
+    exe = built_exe(exe_name)
     proc = subprocess.run([exe, "--replay", bag, "--csv", csv_path] + list(extra),
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                           universal_newlines=True, timeout=120)
     if proc.returncode != 0:
         raise AssertionError("replay failed (%d): %s%s" % (proc.returncode, proc.stdout, proc.stderr))
     return proc
+
+
+def assert_smoothed_csv_extends_plain(test, plain_path, smoothed_path, proc):
+    """A smoothing replay's CSV (`smoothed_path`, its process `proc`) is the plain replay's
+    (`plain_path`) line for line, followed by the smoothed columns, over one segment."""
+    with open(plain_path) as a, open(smoothed_path) as b:
+        plain, smoothed = a.read().splitlines(), b.read().splitlines()
+    test.assertEqual(len(plain), len(smoothed))
+    columns = plain[0].count(",") + 1
+    test.assertEqual(smoothed[0].split(",")[columns], "smoothed_x0")
+    for p, s in zip(plain, smoothed):
+        test.assertEqual(",".join(s.split(",")[:columns]), p)
+    test.assertIn("smoothed %d periods (1 segments)" % (len(plain) - 1), proc.stdout)
 
 
 def read_rows(csv_path):

@@ -31,20 +31,12 @@ when not built).
 
 import math
 import os
-import subprocess
 import sys
-import tempfile
 import unittest
 
 sys.dont_write_bytecode = True
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
-import pose3d_error  # noqa: E402
-from replay_helpers import read_rows, replay_exe  # noqa: E402
+from rigid_body_case import RigidBodyReplayCase, pose3d_error, rms_deg  # noqa: E402
 
-SIM = os.path.join(REPO, "tools", "sim", "rigid_body_sim.py")
 EKF, UKF = "sf_armesto_inertial_vision_ekf", "sf_armesto_inertial_vision_ukf"
 BIAS = 0.1
 SKIP_S = 2.0
@@ -57,10 +49,6 @@ IMU_ONLY_MIN_M = 1.0
 Q, P, B = 12, 0, 9  # state indices of the quaternion's w, the position's x, the bias's x
 
 
-def rms_deg(values):
-    return math.degrees(pose3d_error.rms(values))
-
-
 def without_vision(bag, out):
     """A copy of `bag` without its vision/pose messages."""
     import rosbag  # Debian: python3-rosbag
@@ -70,28 +58,8 @@ def without_vision(bag, out):
                 target.write(topic, msg, t)
 
 
-class ArmestoReplay(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.tmp = tempfile.TemporaryDirectory()
-        cls.bag = os.path.join(cls.tmp.name, "rigid_body.bag")
-        subprocess.run([sys.executable, SIM, "--seed", "5", "--duration", "30", "--motion", "fast",
-                        "--accel-bias", repr(BIAS), "--out", cls.bag],
-                       check=True, stdout=subprocess.PIPE)
-        cls.truth = pose3d_error.load_truth(cls.bag)
-        cls.rows = {}
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.tmp.cleanup()
-
-    def replay(self, node, bag=None, *extra):
-        key = (node, bag) + extra
-        if key not in self.rows:
-            csv_path = os.path.join(self.tmp.name, "%s_%d.csv" % (node, len(self.rows)))
-            replay_exe(node, bag or self.bag, csv_path, *extra)
-            self.rows[key] = read_rows(csv_path)
-        return self.rows[key]
+class ArmestoReplay(RigidBodyReplayCase):
+    SIM_ARGS = ("--seed", "5", "--duration", "30", "--motion", "fast", "--accel-bias", repr(BIAS))
 
     def errors(self, rows):
         return pose3d_error.errors(rows, self.truth, quaternion=Q, position=P, skip=SKIP_S)
@@ -135,7 +103,7 @@ class ArmestoReplay(unittest.TestCase):
         start = [px, py, pz] + [0.0] * 9 + [w, x, y, z] + [0.0] * 3
         with open(params, "w") as f:
             f.write("initial_state: [%s]\n" % ", ".join(repr(v) for v in start))
-        rows = self.replay(EKF, imu_only, "--params", params, "--allow-missing-topics")
+        rows = self.replay(EKF, "--params", params, "--allow-missing-topics", bag=imu_only)
         e = self.errors(rows)
         self.assertGreater(pose3d_error.rms(e["position"]), IMU_ONLY_MIN_M)
 

@@ -29,7 +29,8 @@ sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
 sys.path.insert(0, HERE)
 sys.dont_write_bytecode = True
 import evaluate  # noqa: E402
-from replay_helpers import built_lib_dir, read_rows, replay_exe  # noqa: E402
+from replay_helpers import (assert_smoothed_csv_extends_plain, built_exe,  # noqa: E402
+                            read_rows, replay_exe)
 
 SOCCER_BAG = os.path.join(REPO, "bags", "soccer_lost_vision_ideal.bag")
 DIFF_DRIVE_BAG = os.path.join(REPO, "bags", "diff_drive_seed1.bag")
@@ -85,14 +86,7 @@ class BatchSmoothingCase(unittest.TestCase):
         cls.tmp.cleanup()
 
     def check_filtered_columns_are_the_plain_replay(self):
-        with open(self.plain_path) as a, open(self.batch_path) as b:
-            plain, batch = a.read().splitlines(), b.read().splitlines()
-        self.assertEqual(len(plain), len(batch))
-        columns = plain[0].count(",") + 1
-        self.assertEqual(batch[0].split(",")[columns], "smoothed_x0")
-        for p, s in zip(plain, batch):
-            self.assertEqual(",".join(s.split(",")[:columns]), p)
-        self.assertIn("smoothed %d periods (1 segments)" % (len(plain) - 1), self.proc.stdout)
+        assert_smoothed_csv_extends_plain(self, self.plain_path, self.batch_path, self.proc)
 
 
 class LinearBatchSmoothingTest(BatchSmoothingCase):
@@ -181,7 +175,7 @@ class DeadReckoningBatchSmoothingTest(unittest.TestCase):
 
 class RefusalTest(unittest.TestCase):
     def test_particle_filter_has_no_batch_smoother(self):
-        exe = os.path.join(built_lib_dir("sf_train_pf"), "sf_train_pf")
+        exe = built_exe("sf_train_pf")
         with tempfile.TemporaryDirectory(prefix="sf_batch_smoothing_test_") as tmp:
             out = os.path.join(tmp, "pf.csv")
             proc = subprocess.run([exe, "--replay", PIONEER_BAG, "--smooth", "batch", "--csv", out],

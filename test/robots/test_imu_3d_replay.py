@@ -27,47 +27,20 @@ The executables come from $SF_LIB_DIR or the sourced devel space (skipped when n
 
 import math
 import os
-import subprocess
 import sys
-import tempfile
 import unittest
 
 sys.dont_write_bytecode = True
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
-import pose3d_error  # noqa: E402
-from replay_helpers import read_rows, replay_exe  # noqa: E402
+from rigid_body_case import RigidBodyReplayCase, pose3d_error, rms_deg  # noqa: E402
 
-SIM = os.path.join(REPO, "tools", "sim", "rigid_body_sim.py")
 BOUND_TILT_DEG = 2.0
 BOUND_3D_DEG = 1.0
 BOUND_POSITION_M = 0.03
 SKIP_S = 2.0
 
 
-def rms_deg(values):
-    return math.degrees(pose3d_error.rms(values))
-
-
-class Imu3dReplay(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.tmp = tempfile.TemporaryDirectory()
-        cls.bag = os.path.join(cls.tmp.name, "rigid_body.bag")
-        subprocess.run([sys.executable, SIM, "--seed", "5", "--duration", "30", "--out", cls.bag],
-                       check=True, stdout=subprocess.PIPE)
-        cls.truth = pose3d_error.load_truth(cls.bag)
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.tmp.cleanup()
-
-    def replay(self, node, *extra):
-        csv_path = os.path.join(self.tmp.name, node + ".csv")
-        replay_exe(node, self.bag, csv_path, *extra)
-        return read_rows(csv_path)
+class Imu3dReplay(RigidBodyReplayCase):
+    SIM_ARGS = ("--seed", "5", "--duration", "30")
 
     def test_attitude_from_gyro_and_accelerometer(self):
         w, x, y, z = self.truth[1][0]

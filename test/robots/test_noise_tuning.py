@@ -34,7 +34,8 @@ sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
 sys.dont_write_bytecode = True
 import cart_sim  # noqa: E402
 import evaluate  # noqa: E402  (the tools' parser of the replay summary)
-import pioneer_nodes  # noqa: E402  (devel-space lookup)
+sys.path.insert(0, HERE)
+from replay_helpers import built_exe as executable  # noqa: E402
 
 TRUE_Q = (cart_sim.Q_POSITION, cart_sim.Q_SPEED)
 TRUE_R = (cart_sim.R_POSITION, cart_sim.R_SPEED)
@@ -42,14 +43,6 @@ HEADER_Q = (4e-3, 1e-2)   # test/configs/tune_cart_kf.h
 HEADER_R = (2.5e-4, 2.5e-4)
 PERIODS = 3000
 T = 0.1
-
-
-def executable(name):
-    lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_nodes.find_lib_dir(name)
-    exe = os.path.join(lib_dir or "", name)
-    if not os.access(exe, os.X_OK):
-        raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel space)" % name)
-    return exe
 
 
 def kalman_cost(readings, q, r):

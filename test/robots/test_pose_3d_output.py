@@ -18,20 +18,12 @@ The executables come from $SF_LIB_DIR or the sourced devel space (skipped when n
 
 import math
 import os
-import subprocess
 import sys
-import tempfile
 import unittest
 
 sys.dont_write_bytecode = True
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
-import pose3d_error  # noqa: E402
-from replay_helpers import read_rows, replay_exe  # noqa: E402
+from rigid_body_case import RigidBodyReplayCase, pose3d_error  # noqa: E402
 
-SIM = os.path.join(REPO, "tools", "sim", "rigid_body_sim.py")
 NODE = "sf_imu_odometry_3d"
 BOUND_POSITION_M = 0.03
 BOUND_DEG = 1.0
@@ -52,24 +44,16 @@ def euler_of(w, x, y, z):
     return roll, pitch, yaw
 
 
-class Pose3dOutput(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.tmp = tempfile.TemporaryDirectory()
-        sim_bag = os.path.join(cls.tmp.name, "rigid_body.bag")
-        subprocess.run([sys.executable, SIM, "--seed", "7", "--duration", "20", "--out", sim_bag],
-                       check=True, stdout=subprocess.PIPE)
-        cls.truth = pose3d_error.load_truth(sim_bag)
-        csv_path = os.path.join(cls.tmp.name, NODE + ".csv")
-        out_bag = os.path.join(cls.tmp.name, NODE + ".bag")
-        replay_exe(NODE, sim_bag, csv_path, "--bag", out_bag)
-        cls.rows = read_rows(csv_path)
-        cls.odometry = bag_messages(out_bag, "/odometry/filtered")
-        cls.euler = bag_messages(out_bag, "/fused/euler")
+class Pose3dOutput(RigidBodyReplayCase):
+    SIM_ARGS = ("--seed", "7", "--duration", "20")
 
     @classmethod
-    def tearDownClass(cls):
-        cls.tmp.cleanup()
+    def setUpClass(cls):
+        super().setUpClass()
+        out_bag = os.path.join(cls.tmp.name, NODE + ".bag")
+        cls.rows = cls.replay(NODE, "--bag", out_bag)
+        cls.odometry = bag_messages(out_bag, "/odometry/filtered")
+        cls.euler = bag_messages(out_bag, "/fused/euler")
 
     def test_odometry_is_the_state(self):
         self.assertGreater(len(self.rows), 1900)

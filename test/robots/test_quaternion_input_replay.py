@@ -15,22 +15,13 @@ rotation by 180 deg and fail both (checked, doc/manifolds.md).
 The executables come from $SF_LIB_DIR or the sourced devel space (skipped when not built).
 """
 
-import math
 import os
-import subprocess
 import sys
-import tempfile
 import unittest
 
 sys.dont_write_bytecode = True
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
-import pose3d_error  # noqa: E402
-from replay_helpers import read_rows, replay_exe  # noqa: E402
+from rigid_body_case import RigidBodyReplayCase, pose3d_error, rms_deg  # noqa: E402
 
-SIM = os.path.join(REPO, "tools", "sim", "rigid_body_sim.py")
 GYRO_BIAS = 0.02
 RATIO = 1.5
 SKIP_S = 2.0
@@ -51,44 +42,33 @@ def flip_every_other_orientation(source, target):
     return count
 
 
-class QuaternionInputReplay(unittest.TestCase):
+class QuaternionInputReplay(RigidBodyReplayCase):
+    SIM_ARGS = ("--seed", "5", "--duration", "30", "--gyro-bias-init", str(GYRO_BIAS))
+
     @classmethod
     def setUpClass(cls):
-        cls.tmp = tempfile.TemporaryDirectory()
-        cls.bag = os.path.join(cls.tmp.name, "simulated.bag")
-        subprocess.run([sys.executable, SIM, "--seed", "5", "--duration", "30",
-                        "--gyro-bias-init", str(GYRO_BIAS), "--out", cls.bag],
-                       check=True, stdout=subprocess.PIPE)
+        super().setUpClass()
         cls.flipped = os.path.join(cls.tmp.name, "flipped.bag")
         cls.poses = flip_every_other_orientation(cls.bag, cls.flipped)
-        cls.truth = pose3d_error.load_truth(cls.bag)
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.tmp.cleanup()
-
-    def replay(self, node, bag):
-        csv_path = os.path.join(self.tmp.name, "%s_%s.csv" % (node, os.path.basename(bag)))
-        replay_exe(node, bag, csv_path)
-        return read_rows(csv_path)
 
     def orientation_rms_deg(self, rows):
         e = pose3d_error.errors(rows, self.truth, quaternion=3, position=0, skip=SKIP_S)
         self.assertGreater(len(e["orientation"]), 2500)
-        return math.degrees(pose3d_error.rms(e["orientation"]))
+        return rms_deg(e["orientation"])
 
     def test_minus_q_is_the_same_reading(self):
         self.assertGreater(self.poses, 300)
-        plain = self.replay("sf_imu_odometry_pose_3d", self.bag)
-        flipped = self.replay("sf_imu_odometry_pose_3d", self.flipped)
+        plain = self.replay("sf_imu_odometry_pose_3d")
+        flipped = self.replay("sf_imu_odometry_pose_3d", bag=self.flipped)
         self.assertEqual(len(plain), len(flipped))
         for a, b in zip(plain, flipped):
             for i in range(16):
                 self.assertAlmostEqual(a["x%d" % i], b["x%d" % i], places=9)
 
     def test_orientation_input_helps(self):
-        with_input = self.orientation_rms_deg(self.replay("sf_imu_odometry_pose_3d", self.flipped))
-        without = self.orientation_rms_deg(self.replay("sf_imu_odometry_3d", self.flipped))
+        with_input = self.orientation_rms_deg(
+            self.replay("sf_imu_odometry_pose_3d", bag=self.flipped))
+        without = self.orientation_rms_deg(self.replay("sf_imu_odometry_3d", bag=self.flipped))
         print("orientation RMSE: %.3f deg with the quaternion input, %.3f deg without"
               % (with_input, without))
         self.assertLess(with_input, without / RATIO)

@@ -29,7 +29,8 @@ sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
 sys.path.insert(0, HERE)
 sys.dont_write_bytecode = True
 import evaluate  # noqa: E402
-from replay_helpers import built_lib_dir, read_rows, replay_exe  # noqa: E402
+from replay_helpers import (assert_smoothed_csv_extends_plain, built_exe,  # noqa: E402
+                            read_rows, replay_exe)
 
 SOCCER_BAG = os.path.join(REPO, "bags", "soccer_lost_vision_ideal.bag")
 PIONEER_BAG = os.path.join(REPO, "bags", "pioneer_seed1.bag")
@@ -57,14 +58,7 @@ class SoccerSmoothingTest(unittest.TestCase):
         cls.tmp.cleanup()
 
     def test_filtered_columns_are_the_plain_replay(self):
-        with open(self.plain) as a, open(self.smoothed) as b:
-            plain, smoothed = a.read().splitlines(), b.read().splitlines()
-        self.assertEqual(len(plain), len(smoothed))
-        columns = plain[0].count(",") + 1
-        self.assertEqual(smoothed[0].split(",")[columns], "smoothed_x0")
-        for p, s in zip(plain, smoothed):
-            self.assertEqual(",".join(s.split(",")[:columns]), p)
-        self.assertIn("smoothed %d periods (1 segments)" % (len(plain) - 1), self.proc.stdout)
+        assert_smoothed_csv_extends_plain(self, self.plain, self.smoothed, self.proc)
 
     def test_smoothed_track_closer_to_the_truth(self):
         filtered = evaluation(self.smoothed, self.truth, "")
@@ -112,7 +106,7 @@ class DeadReckoningSmoothingTest(unittest.TestCase):
 
 class RefusalTest(unittest.TestCase):
     def test_particle_filter_has_no_smoother(self):
-        exe = os.path.join(built_lib_dir("sf_train_pf"), "sf_train_pf")
+        exe = built_exe("sf_train_pf")
         with tempfile.TemporaryDirectory(prefix="sf_smoothing_test_") as tmp:
             out = os.path.join(tmp, "pf.csv")
             proc = subprocess.run([exe, "--replay", PIONEER_BAG, "--smooth", "--csv", out],

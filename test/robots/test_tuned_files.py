@@ -29,20 +29,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(REPO, "tools", "eval"))
 sys.dont_write_bytecode = True
-import pioneer_nodes  # noqa: E402  (devel-space lookup)
+sys.path.insert(0, HERE)
+from replay_helpers import built_exe as executable  # noqa: E402
 
 TUNED_DIR = os.path.join(REPO, "config", "tuned")
 SLOW_TO_TUNE = {"soccer_kf_on_soccer_seed1.yaml"}
 NIS_ALL = re.compile(r"^(\S+): NIS all inputs: mean (\S+) over .*\]: (.+?); window of (\d+) "
                      r"periods inconsistent in (\d+) of (\d+) judged periods$", re.M)
-
-
-def executable(name):
-    lib_dir = os.environ.get("SF_LIB_DIR") or pioneer_nodes.find_lib_dir(name)
-    exe = os.path.join(lib_dir or "", name)
-    if not os.access(exe, os.X_OK):
-        raise unittest.SkipTest("%s not built (set SF_LIB_DIR or source the devel space)" % name)
-    return exe
 
 
 def run(args):
