@@ -34,6 +34,9 @@ TEST(RotationHelpers, EachCallRotatesItsOwnVector) {
     EXPECT_NEAR(sf_config::quat_rotate_inverse(turn, 0, 0, 0.0, 1.0, 0.0), 1.0, 1e-15);
     EXPECT_NEAR(sf_config::quat_rotate_inverse(turn, 0, 1, 1.0, 0.0, 0.0), -1.0, 1e-15);
     EXPECT_NEAR(sf_config::quat_rotate_inverse(turn, 0, 1, 0.0, 1.0, 0.0), 0.0, 1e-15);
+    // The same x component, another y: R^T (1, 1, 0) = (1, -1, 0).
+    EXPECT_NEAR(sf_config::quat_rotate_inverse(turn, 0, 0, 1.0, 1.0, 0.0), 1.0, 1e-15);
+    EXPECT_NEAR(sf_config::quat_rotate_inverse(turn, 0, 0, 1.0, 0.0, 0.0), 0.0, 1e-15);
     // R (1, 0, 0) = (0, 1, 0); the other direction is a helper of its own.
     EXPECT_NEAR(sf_config::quat_rotate(turn, 0, 1, 1.0, 0.0, 0.0), 1.0, 1e-15);
     EXPECT_NEAR(sf_config::quat_rotate_inverse(turn, 0, 1, 1.0, 0.0, 0.0), -1.0, 1e-15);
@@ -51,11 +54,11 @@ TEST(RotationHelpers, EachCallTurnsItsOwnQuaternion) {
   // The same quaternion, another rotation vector: 90 deg about x.
   EXPECT_NEAR(sf_config::quat_integrate(identity, 0, 1, quarter, 0.0, 0.0), kHalf, 1e-15);
   EXPECT_NEAR(sf_config::quat_integrate(identity, 0, 3, quarter, 0.0, 0.0), 0.0, 1e-15);
-  // The quaternion read at another index of the state.
-  Vector7 shifted = Vector7::Zero();
-  shifted.segment<4>(3) << kHalf, 0, 0, kHalf;
-  EXPECT_NEAR(sf_config::quat_integrate(shifted, 3, 3, 0.0, 0.0, quarter), 1.0, 1e-15);
-  EXPECT_NEAR(sf_config::quat_integrate(identity, 0, 3, 0.0, 0.0, quarter), kHalf, 1e-15);
+  // One state holding two quaternions: the identity at 0, the turn at 4.
+  Eigen::Matrix<double, 8, 1> two;
+  two << 1, 0, 0, 0, kHalf, 0, 0, kHalf;
+  EXPECT_NEAR(sf_config::quat_integrate(two, 4, 3, 0.0, 0.0, quarter), 1.0, 1e-15);
+  EXPECT_NEAR(sf_config::quat_integrate(two, 0, 3, 0.0, 0.0, quarter), kHalf, 1e-15);
 }
 
 TEST(RotationHelpers, TheBitsOfTheirOwnComputation) {
