@@ -16,10 +16,14 @@
 //                                              (Z-Y-X, as tf2's getRPY)
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <type_traits>
+#include <utility>
 
 #include <Eigen/Core>
 #include <sf_estimation/manifold/so3.hpp>
+#include <unsupported/Eigen/AutoDiff>
 
 namespace sf_config {
 namespace rotation_detail {
@@ -47,13 +51,69 @@ S quaternionComponent(const mf::Quaternion<S>& q, int k) {
   return k == 0 ? q.w() : q.vec()(k - 1);
 }
 
+/// Whether a and b have the same bits (an AutoDiff scalar: its value and derivatives). Equal
+/// doubles differ in their bits only as +0 and -0; NaN never compares equal (computed anew).
+/// Other scalars never compare equal, so they are always computed.
+inline bool sameBits(double a, double b) { return a == b && std::signbit(a) == std::signbit(b); }
+
+template <class D>
+bool sameBits(const Eigen::AutoDiffScalar<D>& a, const Eigen::AutoDiffScalar<D>& b) {
+  const auto &da = a.derivatives(), &db = b.derivatives();
+  if (!sameBits(a.value(), b.value()) || da.size() != db.size()) return false;
+  for (Eigen::Index i = 0; i < da.size(); ++i) {
+    if (!sameBits(da(i), db(i))) return false;
+  }
+  return true;
+}
+
+template <class S>
+bool sameBits(const S&, const S&) {
+  return false;
+}
+
+/// compute(), or the result of the last call from the same helper (Compute, a lambda of one
+/// helper and scalar) on this thread when its arguments had the same bits. A header's
+/// expression asks for one component: the 4 of a turned quaternion (the 3 of a rotated vector)
+/// repeat one rotation with the same arguments, e.g. ARMESTO_TURN(0..3) of
+/// config/armesto_inertial_vision_ekf.h, whose UKF evaluated it 4 times at each of its 37
+/// sigma points (doc/node_benchmarks.md, "The Armesto headers' step"). The helpers are pure,
+/// so the remembered result has the bits a new computation would have.
+template <class Compute, class S, std::size_t K>
+const auto& remembered(const std::array<S, K>& args, const Compute& compute) {
+  using Result = std::decay_t<decltype(std::declval<const Compute&>()())>;
+  struct Last {
+    std::array<S, K> args;
+    Result result;
+    bool valid = false;
+  };
+  thread_local Last last;
+  bool same = last.valid;
+  for (std::size_t i = 0; same && i < K; ++i) same = sameBits(args[i], last.args[i]);
+  if (!same) {
+    last.result = compute();
+    last.args = args;
+    last.valid = true;
+  }
+  return last.result;
+}
+
+/// The quaternion x[q..q+3] and three more arguments, the key of remembered().
+template <class S, int N>
+std::array<S, 7> quaternionAndVector(const Eigen::Matrix<S, N, 1>& x, int q, const Arg<S>& a,
+                                     const Arg<S>& b, const Arg<S>& c) {
+  return {x(q), x(q + 1), x(q + 2), x(q + 3), a, b, c};
+}
+
 }  // namespace rotation_detail
 
 template <class S, int N>
 S quat_rotate(const Eigen::Matrix<S, N, 1>& x, int q, int k, const rotation_detail::Arg<S>& vx,
               const rotation_detail::Arg<S>& vy, const rotation_detail::Arg<S>& vz) {
   namespace rd = rotation_detail;
-  return rd::mf::so3Rotate<S>(rd::quaternionAt(x, q), rd::vector3<S>(vx, vy, vz))(k);
+  const auto compute = [&] {
+    return rd::mf::so3Rotate<S>(rd::quaternionAt(x, q), rd::vector3<S>(vx, vy, vz));
+  };
+  return rd::remembered(rd::quaternionAndVector(x, q, vx, vy, vz), compute)(k);
 }
 
 template <class S, int N>
@@ -61,7 +121,10 @@ S quat_rotate_inverse(const Eigen::Matrix<S, N, 1>& x, int q, int k,
                       const rotation_detail::Arg<S>& vx, const rotation_detail::Arg<S>& vy,
                       const rotation_detail::Arg<S>& vz) {
   namespace rd = rotation_detail;
-  return rd::mf::so3RotateInverse<S>(rd::quaternionAt(x, q), rd::vector3<S>(vx, vy, vz))(k);
+  const auto compute = [&] {
+    return rd::mf::so3RotateInverse<S>(rd::quaternionAt(x, q), rd::vector3<S>(vx, vy, vz));
+  };
+  return rd::remembered(rd::quaternionAndVector(x, q, vx, vy, vz), compute)(k);
 }
 
 template <class S, int N>
@@ -86,8 +149,11 @@ template <class S, int N>
 S quat_integrate(const Eigen::Matrix<S, N, 1>& x, int q, int k, const rotation_detail::Arg<S>& rx,
                  const rotation_detail::Arg<S>& ry, const rotation_detail::Arg<S>& rz) {
   namespace rd = rotation_detail;
-  return rd::quaternionComponent(
-      rd::mf::so3Plus<S>(rd::quaternionAt(x, q), rd::vector3<S>(rx, ry, rz)), k);
+  const auto compute = [&] {
+    return rd::mf::so3Plus<S>(rd::quaternionAt(x, q), rd::vector3<S>(rx, ry, rz));
+  };
+  return rd::quaternionComponent(rd::remembered(rd::quaternionAndVector(x, q, rx, ry, rz), compute),
+                                 k);
 }
 
 template <class S, int N>
