@@ -100,6 +100,9 @@ namespace generated {
 
 using Filter = estimation::LayoutUnscentedKalmanFilter<sf_config::Model, sf_config::StateLayout,
                                                        sf_config::MeasurementLayout>;
+// Its step (UKF-M's propagation, the corrections) in the node's third unit (filter_binding.hpp).
+#define SF_CFG_THIRD_UNIT_INSTANCES(PREFIX) \
+  SF_ESTIMATION_LAYOUT_UKF_STEP(PREFIX, sf_filter::generated::Filter)
 template <class = void>  // see filter_binding.hpp
 Filter makeFilter(const sf_config::Parameters& p) {
   if (!p.ukf_propagated_mean) {
