@@ -1,5 +1,5 @@
 // The check of a measurement's given covariances, compiled once for the dynamic size and the
-// measurement sizes 1..6, 13, 15 and 19 (measurement.hpp).
+// measurement sizes 1..6 (measurement.hpp).
 #define SF_ESTIMATION_INSTANTIATING_MEASUREMENT_CHECKS
 #include "sf_estimation/measurement.hpp"
 

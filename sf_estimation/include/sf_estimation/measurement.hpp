@@ -126,10 +126,9 @@ void Measurement<M>::validateCovariances() const {
 }
 
 // The check of given covariances (a Cholesky factorisation of the block) is compiled once in
-// the library for the dynamic size, the measurement sizes 1..6 and the shipped 3D headers' 13,
-// 15 and 19 (src/measurement_checks.cpp); other sizes instantiate it where they use it.
-#define SF_ESTIMATION_FOR_CHECKED_MEASUREMENT_SIZES(X) \
-  X(Dynamic) X(1) X(2) X(3) X(4) X(5) X(6) X(13) X(15) X(19)
+// the library for the dynamic size and the measurement sizes 1..6 (src/measurement_checks.cpp);
+// other sizes instantiate it where they use it.
+#define SF_ESTIMATION_FOR_CHECKED_MEASUREMENT_SIZES(X) X(Dynamic) X(1) X(2) X(3) X(4) X(5) X(6)
 #ifndef SF_ESTIMATION_INSTANTIATING_MEASUREMENT_CHECKS
 #define SF_ESTIMATION_EXTERN_MEASUREMENT_CHECK(M) \
   extern template void Measurement<M>::validateCovariances() const;
