@@ -100,7 +100,10 @@ namespace generated {
 
 using Filter = estimation::LayoutUnscentedKalmanFilter<sf_config::Model, sf_config::StateLayout,
                                                        sf_config::MeasurementLayout>;
-// Its step (UKF-M's propagation, the corrections) in the node's third unit (filter_binding.hpp).
+// UKF-M's propagation in the node's second unit, the rest of its step (the corrections, the
+// measurement's moments) in the third (filter_binding.hpp).
+#define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX) \
+  SF_ESTIMATION_MANIFOLD_UKF_PREDICT(PREFIX, sf_filter::generated::Filter::Manifold)
 #define SF_CFG_THIRD_UNIT_INSTANCES(PREFIX) \
   SF_ESTIMATION_LAYOUT_UKF_STEP(PREFIX, sf_filter::generated::Filter)
 template <class = void>  // see filter_binding.hpp
