@@ -159,7 +159,7 @@ void LayoutExtendedKalmanFilter<FlatModel, Layout, MeasurementLayout>::observati
 // The step of FILTER (estimate and predictMeasurement: the corrections, a measured rotation's
 // rows), likewise in a node's third unit (fusion_node_step.cpp, doc/build_cost.md "The 3D
 // headers' step").
-#define SF_ESTIMATION_LAYOUT_EKF_STEP(PREFIX, FILTER)                                        \
-  PREFIX template void FILTER::estimate(const estimation::Measurement<FILTER::M>&);          \
+#define SF_ESTIMATION_LAYOUT_EKF_STEP(PREFIX, FILTER)                                            \
+  PREFIX template void FILTER::estimate(const estimation::Measurement<FILTER::M>&);              \
   PREFIX template void FILTER::predictMeasurement(estimation::MeasurementPrediction<FILTER::M>&) \
       const;

@@ -135,7 +135,7 @@ void LayoutUnscentedKalmanFilter<FlatModel, Layout, MeasurementLayout>::predictM
 // The step of FILTER (a LayoutUnscentedKalmanFilter), declared extern (PREFIX extern) in a
 // node's units and instantiated (PREFIX empty) in its third (fusion_node_step.cpp,
 // doc/build_cost.md "The 3D headers' step").
-#define SF_ESTIMATION_LAYOUT_UKF_STEP(PREFIX, FILTER)                                        \
-  PREFIX template void FILTER::estimate(const estimation::Measurement<FILTER::M>&);          \
+#define SF_ESTIMATION_LAYOUT_UKF_STEP(PREFIX, FILTER)                                            \
+  PREFIX template void FILTER::estimate(const estimation::Measurement<FILTER::M>&);              \
   PREFIX template void FILTER::predictMeasurement(estimation::MeasurementPrediction<FILTER::M>&) \
       const;

@@ -182,14 +182,12 @@ void ManifoldUnscentedKalmanFilter<Model>::predict(const Control& u) {
 // 18 tangent, 13 measurement entries, 2 x 18 sigma points), compiled once in the library with
 // its Kalman steps at 18 (layout_kalman_steps_18.cpp, kalman_correction.hpp).
 #define SF_ESTIMATION_LAYOUT_UNSCENTED_STEPS_15(PREFIX)
-#define SF_ESTIMATION_LAYOUT_UNSCENTED_STEPS_18(PREFIX)                                         \
-  PREFIX template class probability::CovarianceSquareRoot<18>;                                \
-  PREFIX template void manifold::unscentedMoments<18, 36>(const Matrix<18, 36>&,              \
-                                                          const manifold::SigmaWeights&,      \
-                                                          Vector<18>&, Matrix<18, 18>&);      \
-  PREFIX template void manifold::unscentedMoments<13, 36>(const Matrix<13, 36>&,              \
-                                                          const manifold::SigmaWeights&,      \
-                                                          Vector<13>&, Matrix<13, 13>&);
+#define SF_ESTIMATION_LAYOUT_UNSCENTED_STEPS_18(PREFIX)                                    \
+  PREFIX template class probability::CovarianceSquareRoot<18>;                             \
+  PREFIX template void manifold::unscentedMoments<18, 36>(                                 \
+      const Matrix<18, 36>&, const manifold::SigmaWeights&, Vector<18>&, Matrix<18, 18>&); \
+  PREFIX template void manifold::unscentedMoments<13, 36>(                                 \
+      const Matrix<13, 36>&, const manifold::SigmaWeights&, Vector<13>&, Matrix<13, 13>&);
 #if !defined(SF_ESTIMATION_INSTANTIATING_KALMAN_STEPS) && !defined(SF_ESTIMATION_IMPLICIT_INSTANCES)
 SF_ESTIMATION_LAYOUT_UNSCENTED_STEPS_18(extern)
 #endif
