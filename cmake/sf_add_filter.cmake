@@ -26,6 +26,7 @@ endif()
 get_filename_component(_sf_pkg_src "${SF_PKG_FILTER_MAIN}" DIRECTORY)
 set(SF_PKG_NODELET_UNIT "${_sf_pkg_src}/fusion_node_unit.cpp")
 set(SF_PKG_FILTER_SMOOTHERS "${_sf_pkg_src}/fusion_node_smoothers.cpp")
+set(SF_PKG_FILTER_STEP "${_sf_pkg_src}/fusion_node_step.cpp")
 set(SF_PKG_NODELET_PLUGIN "${_sf_pkg_src}/fusion_nodelet_plugin.cpp")
 
 # Installed, the headers (sf_filter/, sf_estimation/) are in the package's own include folder,
@@ -153,13 +154,16 @@ function(sf_add_filter name header)
   # built, which in a clean build would hold every node back until the package's libraries
   # are done (doc/build_cost.md). With NODELET it is compiled once for the node and the
   # plugin. The header's smoothers are a second unit of the same object library, compiled
-  # beside the first (fusion_node_smoothers.cpp, doc/build_cost.md "The smoothers' unit").
+  # beside the first (fusion_node_smoothers.cpp, doc/build_cost.md "The smoothers' unit"), and
+  # a 3D header's filter step a third (fusion_node_step.cpp, "The 3D headers' step").
   set(_unit ${name}_unit)
   if(_sf_NODELET)
     _sf_check_nodelet_xml(${name} "${_sf_NODELET}")
-    add_library(${_unit} OBJECT "${SF_PKG_NODELET_UNIT}" "${SF_PKG_FILTER_SMOOTHERS}")
+    add_library(${_unit} OBJECT "${SF_PKG_NODELET_UNIT}" "${SF_PKG_FILTER_SMOOTHERS}"
+      "${SF_PKG_FILTER_STEP}")
   else()
-    add_library(${_unit} OBJECT "${SF_PKG_FILTER_MAIN}" "${SF_PKG_FILTER_SMOOTHERS}")
+    add_library(${_unit} OBJECT "${SF_PKG_FILTER_MAIN}" "${SF_PKG_FILTER_SMOOTHERS}"
+      "${SF_PKG_FILTER_STEP}")
   endif()
   _sf_filter_unit(${_unit} "${_header}")
   # The node unit then declares the smoothers extern (node_definition_of.hpp); any other unit

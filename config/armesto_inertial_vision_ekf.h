@@ -51,12 +51,6 @@
 // The node publishes the pose (POSE_OUT_3D); not the twist (the state's velocity is in the
 // world frame, TWIST_OUT_3D wants the body's). METHOD is the EKF unless the including file
 // defines another one first.
-#include <boost/preprocessor/arithmetic/div.hpp>
-#include <boost/preprocessor/arithmetic/mod.hpp>
-#include <boost/preprocessor/comparison/equal.hpp>
-#include <boost/preprocessor/control/iif.hpp>
-#include <boost/preprocessor/repetition/repeat.hpp>
-#include <boost/preprocessor/seq/elem.hpp>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <sensor_msgs/Imu.h>
 #include <sf_filter/config/diagonal.hpp>
@@ -87,27 +81,42 @@
   (x[16])(x[17])(x[18]) \
   (x[0])(x[1])(x[2]) \
   (x[12])(x[13])(x[14])(x[15])
-// Q = G diag(0.7447 I3, 0.38 I3, 0.19e-6 I3) G^T (above). Its 18 x 18 entries are generated
+// Q = G diag(0.7447 I3, 0.38 I3, 0.19e-6 I3) G^T (above). Its 18 x 18 entries are written
 // from the 6 x 6 coefficients of the tangent's blocks of three (p, v, a, b, q, omega): entry
-// (i, j) is block (i / 3, j / 3)'s coefficient when i and j are the same axis, else 0.
+// (i, j) is block (i / 3, j / 3)'s coefficient when i and j are the same axis, else 0. Row by
+// row with plain macros, not Boost.Preprocessor's arithmetic over the 324 entries: the
+// configuration layer expands the matrix several times, and that arithmetic took 3 s of
+// every unit's preprocessing and about 100 MB (doc/build_cost.md).
 #define ARMESTO_JERK(g1, g2) (0.7447 * (g1) * (g2))
-#define ARMESTO_Q_BLOCKS \
-  ((ARMESTO_JERK(T * T * T / 6, T * T * T / 6))(ARMESTO_JERK(T * T * T / 6, T * T / 2)) \
-   (ARMESTO_JERK(T * T * T / 6, T))(0)(0)(0)) \
-  ((ARMESTO_JERK(T * T / 2, T * T * T / 6))(ARMESTO_JERK(T * T / 2, T * T / 2)) \
-   (ARMESTO_JERK(T * T / 2, T))(0)(0)(0)) \
-  ((ARMESTO_JERK(T, T * T * T / 6))(ARMESTO_JERK(T, T * T / 2))(ARMESTO_JERK(T, T))(0)(0)(0)) \
-  ((0)(0)(0)(0.19e-6 * T * T)(0)(0)) \
-  ((0)(0)(0)(0)(0.38 * (T * T / 2) * (T * T / 2))(0)) \
-  ((0)(0)(0)(0)(0)(0.38 * T * T))
-#define ARMESTO_Q_ENTRY(z, j, i) \
-  BOOST_PP_IIF(BOOST_PP_EQUAL(BOOST_PP_MOD(i, 3), BOOST_PP_MOD(j, 3)), ARMESTO_Q_COEFFICIENT, \
-               ARMESTO_Q_ZERO)(i, j)
-#define ARMESTO_Q_COEFFICIENT(i, j) \
-  (BOOST_PP_SEQ_ELEM(BOOST_PP_DIV(j, 3), BOOST_PP_SEQ_ELEM(BOOST_PP_DIV(i, 3), ARMESTO_Q_BLOCKS)))
-#define ARMESTO_Q_ZERO(i, j) (0)
-#define ARMESTO_Q_ROW(z, i, data) (BOOST_PP_REPEAT_##z(18, ARMESTO_Q_ENTRY, i))
-#define PROCESS_NOISE_COVARIANCE BOOST_PP_REPEAT(18, ARMESTO_Q_ROW, ~)
+#define ARMESTO_Q_PP ARMESTO_JERK(T * T * T / 6, T * T * T / 6)
+#define ARMESTO_Q_PV ARMESTO_JERK(T * T * T / 6, T * T / 2)
+#define ARMESTO_Q_PA ARMESTO_JERK(T * T * T / 6, T)
+#define ARMESTO_Q_VP ARMESTO_JERK(T * T / 2, T * T * T / 6)
+#define ARMESTO_Q_VV ARMESTO_JERK(T * T / 2, T * T / 2)
+#define ARMESTO_Q_VA ARMESTO_JERK(T * T / 2, T)
+#define ARMESTO_Q_AP ARMESTO_JERK(T, T * T * T / 6)
+#define ARMESTO_Q_AV ARMESTO_JERK(T, T * T / 2)
+#define ARMESTO_Q_AA ARMESTO_JERK(T, T)
+#define ARMESTO_Q_BB 0.19e-6 * T * T
+#define ARMESTO_Q_QQ 0.38 * (T * T / 2) * (T * T / 2)
+#define ARMESTO_Q_WW 0.38 * T * T
+// Row i of block b = i / 3, axis k = i % 3: block (b, c)'s coefficient on column 3 c + k.
+#define ARMESTO_AXIS_0(c) (c)(0)(0)
+#define ARMESTO_AXIS_1(c) (0)(c)(0)
+#define ARMESTO_AXIS_2(c) (0)(0)(c)
+#define ARMESTO_Q_ROW(k, c0, c1, c2, c3, c4, c5)                                       \
+  (ARMESTO_AXIS_##k(c0) ARMESTO_AXIS_##k(c1) ARMESTO_AXIS_##k(c2) ARMESTO_AXIS_##k(c3) \
+       ARMESTO_AXIS_##k(c4) ARMESTO_AXIS_##k(c5))
+#define ARMESTO_Q_BLOCK_ROWS(c0, c1, c2, c3, c4, c5)                        \
+  ARMESTO_Q_ROW(0, c0, c1, c2, c3, c4, c5) ARMESTO_Q_ROW(1, c0, c1, c2, c3, c4, c5) \
+      ARMESTO_Q_ROW(2, c0, c1, c2, c3, c4, c5)
+#define PROCESS_NOISE_COVARIANCE                                              \
+  ARMESTO_Q_BLOCK_ROWS(ARMESTO_Q_PP, ARMESTO_Q_PV, ARMESTO_Q_PA, 0, 0, 0)    \
+  ARMESTO_Q_BLOCK_ROWS(ARMESTO_Q_VP, ARMESTO_Q_VV, ARMESTO_Q_VA, 0, 0, 0)    \
+  ARMESTO_Q_BLOCK_ROWS(ARMESTO_Q_AP, ARMESTO_Q_AV, ARMESTO_Q_AA, 0, 0, 0)    \
+  ARMESTO_Q_BLOCK_ROWS(0, 0, 0, ARMESTO_Q_BB, 0, 0)                          \
+  ARMESTO_Q_BLOCK_ROWS(0, 0, 0, 0, ARMESTO_Q_QQ, 0)                          \
+  ARMESTO_Q_BLOCK_ROWS(0, 0, 0, 0, 0, ARMESTO_Q_WW)
 #define MEASUREMENT_NOISE_COVARIANCE \
   SF_DIAGONAL((1e-3)(1e-3)(1e-3)(1e-4)(1e-4)(1e-4)(1e-7)(1e-7)(1e-7)(0)(4e-6)(4e-6)(4e-6))
 #define INITIAL_STATE (0)(0)(0)(0)(0)(0)(0)(0)(0)(0)(0)(0)(1)(0)(0)(0)(0)(0)(0)

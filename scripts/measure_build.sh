@@ -52,8 +52,8 @@ configure() {
 }
 
 # unit_cost <workspace> <header> [<source>]: "cpu_s peak_MB" of compiling the header's node
-# unit (fusion_node_main), or its smoothers' unit (fusion_node_smoothers; a tree before it has
-# none: "n/a n/a").
+# unit (fusion_node_main), its smoothers' unit (fusion_node_smoothers) or its step's unit
+# (fusion_node_step; a tree before one has none: "n/a n/a").
 unit_cost() {
   local cmd
   cmd="$(/usr/bin/python3 - "$1/build/compile_commands.json" "$2" "${3:-fusion_node_main}" <<'EOF'
@@ -113,11 +113,13 @@ if [[ -n "$baseline" ]]; then prelude_cost "$work/baseline" >/dev/null; fi
 printf '%-28s %14s %14s' "translation unit (header)" "CPU s" "peak MB"
 [[ -n "$baseline" ]] && printf ' %14s %14s' "CPU s ($baseline)" "peak MB ($baseline)"
 echo
-# Each header's node unit, then its smoothers' unit (sf_add_filter compiles both; "+ smoothers").
+# Each header's node unit, then its smoothers' and its step's unit (sf_add_filter compiles the
+# three; "+ smoothers", "+ step").
 for h in "${headers[@]}"; do
-  for source in fusion_node_main fusion_node_smoothers; do
+  for source in fusion_node_main fusion_node_smoothers fusion_node_step; do
     label="$h"
-    [[ "$source" == fusion_node_main ]] || label="  + smoothers"
+    [[ "$source" == fusion_node_smoothers ]] && label="  + smoothers"
+    [[ "$source" == fusion_node_step ]] && label="  + step"
     read -r cpu mem < <(unit_cost "$work/current" "$h" "$source")
     printf '%-28s %14s %14s' "$label" "$cpu" "$mem"
     if [[ -n "$baseline" ]]; then

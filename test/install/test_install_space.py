@@ -107,7 +107,7 @@ class InstallSpaceTest(unittest.TestCase):
     def test_installed_files(self):
         share = os.path.join(PREFIX, "share", "sf_pkg")
         for rel in ["cmake/sf_add_filter.cmake", "sf_filter/src/fusion_node_main.cpp",
-                    "sf_filter/src/fusion_node_smoothers.cpp",
+                    "sf_filter/src/fusion_node_smoothers.cpp", "sf_filter/src/fusion_node_step.cpp",
                     "config/train_kf.h", "launch/filter.launch", "bags/pioneer_seed1.bag",
                     "tools/eval/evaluate.py"]:
             self.assertTrue(os.path.isfile(os.path.join(share, rel)), rel)

@@ -267,6 +267,34 @@ bool settleBelief(Vector<N>& x, Matrix<N, N>& P, const AngleMask<N>& angleStates
 #define SF_ESTIMATION_LINEAR_KALMAN_STEPS(N) \
   SF_ESTIMATION_COVARIANCE_PROPAGATION(N)    \
   SF_ESTIMATION_FOR_MEASUREMENT_SIZES(SF_ESTIMATION_LINEAR_CORRECTION, N)
+/// The shipped 3D headers' tangent sizes (QUATERNION_STATES) with their measurements, outside
+/// the grid: 15 with 15 and 19 (config/imu_odometry_3d.h, imu_odometry_pose_3d.h), 18 with 13
+/// (the Armesto headers, their UKF's correction too); one unit per state size
+/// (layout_kalman_steps_N.cpp, doc/build_cost.md "The 3D headers' step").
+#define SF_ESTIMATION_LAYOUT_KALMAN_STEPS_15(PREFIX)  \
+  SF_ESTIMATION_COVARIANCE_PROPAGATION_OF(PREFIX, 15) \
+  SF_ESTIMATION_LINEAR_CORRECTION_OF(PREFIX, 15, 15)  \
+  SF_ESTIMATION_LINEAR_CORRECTION_OF(PREFIX, 15, 19)
+#define SF_ESTIMATION_LAYOUT_KALMAN_STEPS_18(PREFIX)  \
+  SF_ESTIMATION_COVARIANCE_PROPAGATION_OF(PREFIX, 18) \
+  SF_ESTIMATION_LINEAR_CORRECTION_OF(PREFIX, 18, 13)  \
+  SF_ESTIMATION_CROSS_COVARIANCE_CORRECTION_OF(PREFIX, 18, 13)
+// The same declarations with a prefix ("extern" or none), one declaration each: "extern"
+// applies to the first declaration only.
+#define SF_ESTIMATION_LINEAR_CORRECTION_OF(PREFIX, N, M)                                      \
+  PREFIX template void linearCorrection<N, M>(Vector<N>&, Matrix<N, N>&, const Matrix<M, N>&, \
+                                              const Vector<M>&, const Matrix<M, M>&);         \
+  PREFIX template void projectCovariance<N, M>(const Matrix<M, N>&, const Matrix<N, N>&,      \
+                                               Matrix<M, M>&);
+#define SF_ESTIMATION_CROSS_COVARIANCE_CORRECTION_OF(PREFIX, N, M)                       \
+  PREFIX template void crossCovarianceCorrection<N, M>(                                  \
+      const Measurement<M>&, const Vector<M>&, const AngleMask<M>&, const Matrix<M, M>&, \
+      Matrix<N, M>&, Matrix<M, M>&, Vector<N>&, Matrix<N, N>&);
+#define SF_ESTIMATION_COVARIANCE_PROPAGATION_OF(PREFIX, N)                              \
+  PREFIX template void propagateCovariance<N>(const Matrix<N, N>&, const Matrix<N, N>&, \
+                                              const Matrix<N, N>&, Matrix<N, N>&);      \
+  PREFIX template bool settleBelief<N>(Vector<N>&, Matrix<N, N>&, const AngleMask<N>&,  \
+                                       const std::string&);
 #if !defined(SF_ESTIMATION_INSTANTIATING_KALMAN_STEPS) && !defined(SF_ESTIMATION_IMPLICIT_INSTANCES)
 // "extern" applies to the first declaration only; each size's declarations are listed apart.
 #define SF_ESTIMATION_EXTERN_LINEAR_CORRECTION(N, M)                                          \
@@ -296,6 +324,8 @@ SF_ESTIMATION_EXTERN_STEPS(6)
 SF_ESTIMATION_EXTERN_STEPS(7)
 SF_ESTIMATION_EXTERN_LINEAR_STEPS(8)
 SF_ESTIMATION_EXTERN_LINEAR_STEPS(13)
+SF_ESTIMATION_LAYOUT_KALMAN_STEPS_15(extern)
+SF_ESTIMATION_LAYOUT_KALMAN_STEPS_18(extern)
 #undef SF_ESTIMATION_EXTERN_STEPS
 #undef SF_ESTIMATION_EXTERN_LINEAR_STEPS
 #undef SF_ESTIMATION_EXTERN_CROSS_COVARIANCE_CORRECTION

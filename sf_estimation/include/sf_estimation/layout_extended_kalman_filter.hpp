@@ -44,40 +44,11 @@ class LayoutExtendedKalmanFilter
 
   /// Time update with the last control, then the correction by the present entries of z.
   /// Throws InvalidInputError or NumericalError and keeps the belief on failure.
-  void estimate(const Measurement<M>& z) {
-    z.validate(M);
-    State x;
-    Covariance P;
-    predict(x, P);
-    if (z.anyAvailable()) {
-      Matrix<M, D> H;
-      Vector<M> expected;
-      observationJacobian(x, expected, H);
-      if constexpr (MeasurementLayout::IsFlat) {
-        correct(z, z.value - expected, H, x, P);
-      } else {
-        Measurement<M> present = z;
-        Rows::withoutTangentFreeRows(present);
-        Rows::tangentRows(expected, H);
-        correct(present, Rows::innovation(z.value, expected), H, x, P);
-      }
-    }
-    this->commit(x, P);
-  }
+  void estimate(const Measurement<M>& z);
 
   /// z^ = h(x(k|k-1)) and H P(k|k-1) H^T for the next step; the filter is unchanged. The
   /// covariance is over the flat measurement, as the gates and the NIS expect.
-  void predictMeasurement(MeasurementPrediction<M>& out) const {
-    State x;
-    Covariance P;
-    predict(x, P);
-    Matrix<M, D> H;
-    observationJacobian(x, out.mean, H);
-    this->angleMeasurements_.wrap(out.mean);
-    projectCovariance<D, M>(H, P, out.covariance);
-    out.noise = this->R_;
-    out.angular = this->angleMeasurements_.mask();
-  }
+  void predictMeasurement(MeasurementPrediction<M>& out) const;
 
   const FlatModel& model() const { return this->model_.flat; }
 
@@ -103,7 +74,8 @@ class LayoutExtendedKalmanFilter
 
   // The model's Jacobians by AutoDiff, most of the filter's compile cost: defined below, out
   // of the class (not inline), so that a node compiles them in its second unit
-  // (SF_ESTIMATION_LAYOUT_EKF_JACOBIANS).
+  // (SF_ESTIMATION_LAYOUT_EKF_JACOBIANS), and the step above in its third
+  // (SF_ESTIMATION_LAYOUT_EKF_STEP).
 
   /// F at the current state (see the top of the file) and f(x, u).
   void transitionJacobian(State& next, Matrix<D, D>& F) const;
@@ -111,6 +83,43 @@ class LayoutExtendedKalmanFilter
   /// H at the state x and h(x).
   void observationJacobian(const State& x, Vector<M>& expected, Matrix<M, D>& H) const;
 };
+
+template <class FlatModel, class Layout, class MeasurementLayout>
+void LayoutExtendedKalmanFilter<FlatModel, Layout, MeasurementLayout>::estimate(
+    const Measurement<M>& z) {
+  z.validate(M);
+  State x;
+  Covariance P;
+  predict(x, P);
+  if (z.anyAvailable()) {
+    Matrix<M, D> H;
+    Vector<M> expected;
+    observationJacobian(x, expected, H);
+    if constexpr (MeasurementLayout::IsFlat) {
+      correct(z, z.value - expected, H, x, P);
+    } else {
+      Measurement<M> present = z;
+      Rows::withoutTangentFreeRows(present);
+      Rows::tangentRows(expected, H);
+      correct(present, Rows::innovation(z.value, expected), H, x, P);
+    }
+  }
+  this->commit(x, P);
+}
+
+template <class FlatModel, class Layout, class MeasurementLayout>
+void LayoutExtendedKalmanFilter<FlatModel, Layout, MeasurementLayout>::predictMeasurement(
+    MeasurementPrediction<M>& out) const {
+  State x;
+  Covariance P;
+  predict(x, P);
+  Matrix<M, D> H;
+  observationJacobian(x, out.mean, H);
+  this->angleMeasurements_.wrap(out.mean);
+  projectCovariance<D, M>(H, P, out.covariance);
+  out.noise = this->R_;
+  out.angular = this->angleMeasurements_.mask();
+}
 
 template <class FlatModel, class Layout, class MeasurementLayout>
 void LayoutExtendedKalmanFilter<FlatModel, Layout, MeasurementLayout>::transitionJacobian(
@@ -146,3 +155,11 @@ void LayoutExtendedKalmanFilter<FlatModel, Layout, MeasurementLayout>::observati
   PREFIX template void FILTER::observationJacobian(                     \
       const FILTER::State&, estimation::Vector<FILTER::M>&,             \
       estimation::Matrix<FILTER::M, FILTER::D>&) const;
+
+// The step of FILTER (estimate and predictMeasurement: the corrections, a measured rotation's
+// rows), likewise in a node's third unit (fusion_node_step.cpp, doc/build_cost.md "The 3D
+// headers' step").
+#define SF_ESTIMATION_LAYOUT_EKF_STEP(PREFIX, FILTER)                                            \
+  PREFIX template void FILTER::estimate(const estimation::Measurement<FILTER::M>&);              \
+  PREFIX template void FILTER::predictMeasurement(estimation::MeasurementPrediction<FILTER::M>&) \
+      const;

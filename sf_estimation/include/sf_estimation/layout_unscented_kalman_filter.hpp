@@ -42,33 +42,11 @@ class LayoutUnscentedKalmanFilter
 
   /// Time update with the last control, then the correction by the present entries of z.
   /// Throws InvalidInputError or NumericalError and keeps the belief on failure.
-  void estimate(const Measurement<M>& z) {
-    z.validate(M);
-    const State x = this->x_;
-    const Covariance P = this->P_;
-    try {
-      Manifold::predict(this->u_);
-      if (z.anyAvailable()) correct(z);
-    } catch (const EstimationError&) {
-      this->x_ = x;
-      this->P_ = P;
-      throw;
-    }
-  }
+  void estimate(const Measurement<M>& z);
 
   /// z^ and the covariance of h over the sigma points of the next step's predicted belief, for
   /// the gates and the NIS; the filter is unchanged (a copy predicts).
-  void predictMeasurement(MeasurementPrediction<M>& out) const {
-    LayoutUnscentedKalmanFilter predicted = *this;
-    predicted.Manifold::predict(this->u_);
-    Matrix<D, M> Pxz;
-    Vector<M> deviationMean;
-    predicted.measurementMoments(out.mean, deviationMean, out.covariance, Pxz);
-    out.mean += deviationMean;
-    this->angleMeasurements_.wrap(out.mean);
-    out.noise = this->R_;
-    out.angular = this->angleMeasurements_.mask();
-  }
+  void predictMeasurement(MeasurementPrediction<M>& out) const;
 
   const FlatModel& model() const { return this->model_.flat; }
 
@@ -120,4 +98,44 @@ class LayoutUnscentedKalmanFilter
   }
 };
 
+// The step, defined out of the class (not inline), so that a node compiles it, most of the
+// filter's compile cost, in its third unit (SF_ESTIMATION_LAYOUT_UKF_STEP).
+template <class FlatModel, class Layout, class MeasurementLayout>
+void LayoutUnscentedKalmanFilter<FlatModel, Layout, MeasurementLayout>::estimate(
+    const Measurement<M>& z) {
+  z.validate(M);
+  const State x = this->x_;
+  const Covariance P = this->P_;
+  try {
+    Manifold::predict(this->u_);
+    if (z.anyAvailable()) correct(z);
+  } catch (const EstimationError&) {
+    this->x_ = x;
+    this->P_ = P;
+    throw;
+  }
+}
+
+template <class FlatModel, class Layout, class MeasurementLayout>
+void LayoutUnscentedKalmanFilter<FlatModel, Layout, MeasurementLayout>::predictMeasurement(
+    MeasurementPrediction<M>& out) const {
+  LayoutUnscentedKalmanFilter predicted = *this;
+  predicted.Manifold::predict(this->u_);
+  Matrix<D, M> Pxz;
+  Vector<M> deviationMean;
+  predicted.measurementMoments(out.mean, deviationMean, out.covariance, Pxz);
+  out.mean += deviationMean;
+  this->angleMeasurements_.wrap(out.mean);
+  out.noise = this->R_;
+  out.angular = this->angleMeasurements_.mask();
+}
+
 }  // namespace estimation
+
+// The step of FILTER (a LayoutUnscentedKalmanFilter), declared extern (PREFIX extern) in a
+// node's units and instantiated (PREFIX empty) in its third (fusion_node_step.cpp,
+// doc/build_cost.md "The 3D headers' step").
+#define SF_ESTIMATION_LAYOUT_UKF_STEP(PREFIX, FILTER)                                            \
+  PREFIX template void FILTER::estimate(const estimation::Measurement<FILTER::M>&);              \
+  PREFIX template void FILTER::predictMeasurement(estimation::MeasurementPrediction<FILTER::M>&) \
+      const;

@@ -93,37 +93,10 @@ class ManifoldUnscentedKalmanFilter : public manifold::ManifoldFilterBase<Model>
     noiseRoot_.compute(this->Q_);
   }
 
-  /// x <- f(x, u, 0), P <- covariance of the propagated state and noise sigma points.
-  void predict(const Control& u) {
-    this->checkControl(u);
-    const Vector<W> noNoise = Vector<W>::Zero();
-    State next;
-    this->model_.transition(this->x_, u, noNoise, next);
-    Matrix<D, 2 * D> xis;
-    sigmaPoints(this->P_, stateWeights_, xis);
-    Matrix<D, 2 * D> deviations;
-    State in, out;
-    for (Index j = 0; j < 2 * D; ++j) {
-      in = Space::template plus<double>(this->x_, xis.col(j));
-      this->model_.transition(in, u, noNoise, out);
-      deviations.col(j) = Space::template minus<double>(out, next);
-    }
-    Vector<D> mean;
-    Covariance P, PNoise;
-    manifold::unscentedMoments<D, 2 * D>(deviations, stateWeights_, mean, P);
-    Matrix<D, 2 * W> noiseDeviations;
-    Vector<W> w;
-    for (Index j = 0; j < W; ++j) {
-      for (const int sign : {1, -1}) {
-        w = sign * noiseWeights_.spread * noiseRoot_.matrix().col(j);
-        this->model_.transition(this->x_, u, w, out);
-        noiseDeviations.col(sign > 0 ? j : W + j) = Space::template minus<double>(out, next);
-      }
-    }
-    manifold::unscentedMoments<D, 2 * W>(noiseDeviations, noiseWeights_, mean, PNoise);
-    P += PNoise;
-    this->commit(next, P);
-  }
+  /// x <- f(x, u, 0), P <- covariance of the propagated state and noise sigma points. Defined
+  /// below, out of the class (not inline): a node of a 3D header compiles it in its second unit
+  /// (SF_ESTIMATION_MANIFOLD_UKF_PREDICT).
+  void predict(const Control& u);
 
   /// x <- x [+] K nu, P <- P - K Pzz K^T, nu = z [-] z^ (z^ the predicted measurement).
   void update(const MeasurementValue& z) {
@@ -173,4 +146,56 @@ class ManifoldUnscentedKalmanFilter : public manifold::ManifoldFilterBase<Model>
   probability::CovarianceSquareRoot<D> root_{D};  // scratch of sigmaPoints()
 };
 
+template <class Model>
+void ManifoldUnscentedKalmanFilter<Model>::predict(const Control& u) {
+  this->checkControl(u);
+  const Vector<W> noNoise = Vector<W>::Zero();
+  State next;
+  this->model_.transition(this->x_, u, noNoise, next);
+  Matrix<D, 2 * D> xis;
+  sigmaPoints(this->P_, stateWeights_, xis);
+  Matrix<D, 2 * D> deviations;
+  State in, out;
+  for (Index j = 0; j < 2 * D; ++j) {
+    in = Space::template plus<double>(this->x_, xis.col(j));
+    this->model_.transition(in, u, noNoise, out);
+    deviations.col(j) = Space::template minus<double>(out, next);
+  }
+  Vector<D> mean;
+  Covariance P, PNoise;
+  manifold::unscentedMoments<D, 2 * D>(deviations, stateWeights_, mean, P);
+  Matrix<D, 2 * W> noiseDeviations;
+  Vector<W> w;
+  for (Index j = 0; j < W; ++j) {
+    for (const int sign : {1, -1}) {
+      w = sign * noiseWeights_.spread * noiseRoot_.matrix().col(j);
+      this->model_.transition(this->x_, u, w, out);
+      noiseDeviations.col(sign > 0 ? j : W + j) = Space::template minus<double>(out, next);
+    }
+  }
+  manifold::unscentedMoments<D, 2 * W>(noiseDeviations, noiseWeights_, mean, PNoise);
+  P += PNoise;
+  this->commit(next, P);
+}
+
+// The size-only parts at the shipped 3D UKF's sizes (config/armesto_inertial_vision_ukf.h:
+// 18 tangent, 13 measurement entries, 2 x 18 sigma points), compiled once in the library with
+// its Kalman steps at 18 (layout_kalman_steps_18.cpp, kalman_correction.hpp).
+#define SF_ESTIMATION_LAYOUT_UNSCENTED_STEPS_15(PREFIX)
+#define SF_ESTIMATION_LAYOUT_UNSCENTED_STEPS_18(PREFIX)                                    \
+  PREFIX template class probability::CovarianceSquareRoot<18>;                             \
+  PREFIX template void manifold::unscentedMoments<18, 36>(                                 \
+      const Matrix<18, 36>&, const manifold::SigmaWeights&, Vector<18>&, Matrix<18, 18>&); \
+  PREFIX template void manifold::unscentedMoments<13, 36>(                                 \
+      const Matrix<13, 36>&, const manifold::SigmaWeights&, Vector<13>&, Matrix<13, 13>&);
+#if !defined(SF_ESTIMATION_INSTANTIATING_KALMAN_STEPS) && !defined(SF_ESTIMATION_IMPLICIT_INSTANCES)
+SF_ESTIMATION_LAYOUT_UNSCENTED_STEPS_18(extern)
+#endif
+
 }  // namespace estimation
+
+// UKF-M's propagation of FILTER (a ManifoldUnscentedKalmanFilter), declared extern (PREFIX
+// extern) in a node's units and instantiated (PREFIX empty) in its second unit, beside the step
+// in the third (doc/build_cost.md, "The 3D headers' step").
+#define SF_ESTIMATION_MANIFOLD_UKF_PREDICT(PREFIX, FILTER) \
+  PREFIX template void FILTER::predict(const FILTER::Control&);

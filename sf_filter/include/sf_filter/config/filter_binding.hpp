@@ -59,3 +59,9 @@ Filter makeModelFilter(const sf_config::Parameters& p, const Own&... own) {
 #ifndef SF_CFG_SECOND_UNIT_INSTANCES
 #define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX)
 #endif
+// Likewise the third unit (fusion_node_step.cpp), which includes the configuration layer only
+// for a header with QUATERNION_STATES: the layout filters' step (doc/build_cost.md, "The 3D
+// headers' step").
+#ifndef SF_CFG_THIRD_UNIT_INSTANCES
+#define SF_CFG_THIRD_UNIT_INSTANCES(PREFIX)
+#endif

@@ -37,6 +37,7 @@ static_assert(BOOST_PP_SEQ_ELEM(0, POSE_OUT) < sf_config::kStateSize &&
 
 #if !SF_CFG_IS_AVERAGING && defined(SF_FILTER_SMOOTHERS_UNIT)
 SF_CFG_SECOND_UNIT_INSTANCES(extern)
+SF_CFG_THIRD_UNIT_INSTANCES(extern)
 #endif
 
 namespace sf_filter {

@@ -53,6 +53,9 @@ using Filter = estimation::LayoutExtendedKalmanFilter<sf_config::Model, sf_confi
 // Its AutoDiff Jacobians in the node's second unit (filter_binding.hpp).
 #define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX) \
   SF_ESTIMATION_LAYOUT_EKF_JACOBIANS(PREFIX, sf_filter::generated::Filter)
+// Its step (the corrections, a measured rotation's rows) in the third (filter_binding.hpp).
+#define SF_CFG_THIRD_UNIT_INSTANCES(PREFIX) \
+  SF_ESTIMATION_LAYOUT_EKF_STEP(PREFIX, sf_filter::generated::Filter)
 #else
 using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
 #endif

@@ -100,6 +100,12 @@ namespace generated {
 
 using Filter = estimation::LayoutUnscentedKalmanFilter<sf_config::Model, sf_config::StateLayout,
                                                        sf_config::MeasurementLayout>;
+// UKF-M's propagation in the node's second unit, the rest of its step (the corrections, the
+// measurement's moments) in the third (filter_binding.hpp).
+#define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX) \
+  SF_ESTIMATION_MANIFOLD_UKF_PREDICT(PREFIX, sf_filter::generated::Filter::Manifold)
+#define SF_CFG_THIRD_UNIT_INSTANCES(PREFIX) \
+  SF_ESTIMATION_LAYOUT_UKF_STEP(PREFIX, sf_filter::generated::Filter)
 template <class = void>  // see filter_binding.hpp
 Filter makeFilter(const sf_config::Parameters& p) {
   if (!p.ukf_propagated_mean) {
