@@ -104,16 +104,23 @@ std::array<S, 7> quaternionAndVector(const Eigen::Matrix<S, N, 1>& x, int q, con
   return {x(q), x(q + 1), x(q + 2), x(q + 3), a, b, c};
 }
 
+/// op(the quaternion x[q..q+3], the vector (a, b, c)), remembered() per op (a lambda of one
+/// helper) and arguments.
+template <class Op, class S, int N>
+const auto& rememberedOfQuaternionAndVector(const Op& op, const Eigen::Matrix<S, N, 1>& x, int q,
+                                            const Arg<S>& a, const Arg<S>& b, const Arg<S>& c) {
+  return remembered(quaternionAndVector(x, q, a, b, c),
+                    [&] { return op(quaternionAt(x, q), vector3<S>(a, b, c)); });
+}
+
 }  // namespace rotation_detail
 
 template <class S, int N>
 S quat_rotate(const Eigen::Matrix<S, N, 1>& x, int q, int k, const rotation_detail::Arg<S>& vx,
               const rotation_detail::Arg<S>& vy, const rotation_detail::Arg<S>& vz) {
   namespace rd = rotation_detail;
-  const auto compute = [&] {
-    return rd::mf::so3Rotate<S>(rd::quaternionAt(x, q), rd::vector3<S>(vx, vy, vz));
-  };
-  return rd::remembered(rd::quaternionAndVector(x, q, vx, vy, vz), compute)(k);
+  const auto rotate = [](const auto& p, const auto& v) { return rd::mf::so3Rotate<S>(p, v); };
+  return rd::rememberedOfQuaternionAndVector(rotate, x, q, vx, vy, vz)(k);
 }
 
 template <class S, int N>
@@ -121,10 +128,10 @@ S quat_rotate_inverse(const Eigen::Matrix<S, N, 1>& x, int q, int k,
                       const rotation_detail::Arg<S>& vx, const rotation_detail::Arg<S>& vy,
                       const rotation_detail::Arg<S>& vz) {
   namespace rd = rotation_detail;
-  const auto compute = [&] {
-    return rd::mf::so3RotateInverse<S>(rd::quaternionAt(x, q), rd::vector3<S>(vx, vy, vz));
+  const auto rotateInverse = [](const auto& p, const auto& v) {
+    return rd::mf::so3RotateInverse<S>(p, v);
   };
-  return rd::remembered(rd::quaternionAndVector(x, q, vx, vy, vz), compute)(k);
+  return rd::rememberedOfQuaternionAndVector(rotateInverse, x, q, vx, vy, vz)(k);
 }
 
 template <class S, int N>
@@ -149,11 +156,8 @@ template <class S, int N>
 S quat_integrate(const Eigen::Matrix<S, N, 1>& x, int q, int k, const rotation_detail::Arg<S>& rx,
                  const rotation_detail::Arg<S>& ry, const rotation_detail::Arg<S>& rz) {
   namespace rd = rotation_detail;
-  const auto compute = [&] {
-    return rd::mf::so3Plus<S>(rd::quaternionAt(x, q), rd::vector3<S>(rx, ry, rz));
-  };
-  return rd::quaternionComponent(rd::remembered(rd::quaternionAndVector(x, q, rx, ry, rz), compute),
-                                 k);
+  const auto plus = [](const auto& p, const auto& r) { return rd::mf::so3Plus<S>(p, r); };
+  return rd::quaternionComponent(rd::rememberedOfQuaternionAndVector(plus, x, q, rx, ry, rz), k);
 }
 
 template <class S, int N>
