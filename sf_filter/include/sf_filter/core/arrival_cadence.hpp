@@ -16,8 +16,10 @@ namespace sf_filter {
 
 class ArrivalCadence {
  public:
-  /// Arrival intervals kept; their median is the cadence (a stall's long and zero intervals,
-  /// one pair per stall, do not move it).
+  /// Intervals between the times values were sent (as noted) kept; their median is the
+  /// cadence. Not the arrival intervals: a stall's value arrives late and the next one on time,
+  /// a long and a short interval, and the median of eight (the upper one of the middle two)
+  /// rose to the shortest of the long ones after four stalls (issue 38 D10, round eight).
   static constexpr int kIntervals = 8;
   /// Intervals needed before the cadence predicts anything.
   static constexpr int kMinIntervals = 4;
@@ -41,16 +43,15 @@ class ArrivalCadence {
   }
 
   /// A value of this input that arrived at `arrival` was sent at `time` (its placement, or the
-  /// cadence's prediction where its period was estimated already).
+  /// cadence's prediction where its period was estimated already). A value predicted adds the
+  /// cadence itself; values of one backlog kept at its arrival add none.
   void note(double arrival, double time) {
-    if (arrival > lastArrival_) {  // -inf before the first: no interval
-      if (!std::isinf(lastArrival_)) {
-        intervals_[static_cast<std::size_t>(next_)] = arrival - lastArrival_;
-        next_ = (next_ + 1) % kIntervals;
-        count_ = std::min(count_ + 1, kIntervals);
-      }
-      lastArrival_ = arrival;
+    if (time > lastTime_ && !std::isinf(lastArrival_)) {  // -inf before the first: no interval
+      intervals_[static_cast<std::size_t>(next_)] = time - lastTime_;
+      next_ = (next_ + 1) % kIntervals;
+      count_ = std::min(count_ + 1, kIntervals);
     }
+    if (arrival > lastArrival_) lastArrival_ = arrival;
     lastTime_ = time;
   }
 
