@@ -188,7 +188,9 @@ TEST(ArmestoMultiRate, VisionMakesTheAccelerometerBiasObservable) {
   const Vector<19> imuOnly = restWithBias<estimation::ManifoldExtendedKalmanFilter>(false);
   EXPECT_TRUE(imuOnly.allFinite());
   // 30 s of a bias read as acceleration: the position drifts by metres.
-  if (sftest::kStatisticsAsserted) EXPECT_GT(imuOnly.head<3>().norm(), 1.0);
+  if (sftest::kStatisticsAsserted) {
+    EXPECT_GT(imuOnly.head<3>().norm(), 1.0);
+  }
 }
 
 }  // namespace

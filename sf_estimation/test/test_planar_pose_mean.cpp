@@ -118,7 +118,9 @@ TEST(PlanarPoseMean, ParticleFilterPoseStaysOnTheTrack) {
                "track of its own velocity estimates: "
             << "entry-wise mean " << entryWise << " m, SE(2) mean " << onGroup << " m\n";
   EXPECT_TRUE(std::isfinite(entryWise) && std::isfinite(onGroup));
-  if (sftest::kStatisticsAsserted) EXPECT_LT(onGroup, 0.5 * entryWise);
+  if (sftest::kStatisticsAsserted) {
+    EXPECT_LT(onGroup, 0.5 * entryWise);
+  }
 }
 
 TEST(PlanarPoseMean, ParticleFilterRefusesABadPose) {
