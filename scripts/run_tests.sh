@@ -20,7 +20,8 @@ rm -rf "$results"
 # Two steps, so that what measures wall-clock behaviour runs without a compiler beside it
 # (doc/reliability.md, "Test order"): (1) one goal, sf_untimed_tests, builds every test
 # executable and the sanitizer tree (`tests`) and runs the tests that do not depend on timing,
-# each as soon as what it runs is built, two jobs at a time; (2) the rostests run two at a time
+# each as soon as what it runs is built, two jobs at a time, the longest chains first (the
+# sanitizer checks, the robot replay suite; CMakeLists.txt); (2) the rostests run two at a time
 # (SF_ROSTEST_JOBS) but those playing a bag in real time alone, then the soak and the
 # under-load check (which brings its own load, stress-ng) one at a time. Under a plain
 # `catkin_make -j2 run_tests` a compiler or the fuzz run would compete with the 1 kHz nodes of

@@ -65,7 +65,9 @@ CONFIGURE_OPTIONS = ["-DCMAKE_BUILD_TYPE=Sanitize", "-DCMAKE_CXX_COMPILER=clang+
 # minutes (LinearisedProposal's 2 x 3000 steps of 1000 particles: 123 s, against 0.45 s in the
 # normal build, which runs them). The code they run is the sanitizers' all the same, in the
 # shorter tests of the same filter (the proposal's one-step and refusal tests, the shared
-# dead reckoning's).
+# dead reckoning's). The long statistical loops of a few other tests run a short count in
+# this tree instead (sf_estimation/test/statistical_steps.hpp; the regular build runs the
+# full count and asserts their statistics).
 SLOW_AT_O0 = ["LinearisedProposal.UnobservableBiasKeepsTheKalmanFiltersValue"]
 
 TARGETS = {"unit-tests": ["sf_estimation_tests"], "fuzz": ["sf_estimation_fuzz"],

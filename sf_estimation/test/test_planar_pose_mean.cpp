@@ -11,6 +11,7 @@
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/particle_filter.hpp"
 #include "sf_estimation/planar_pose_mean.hpp"
+#include "statistical_steps.hpp"
 
 namespace {
 
@@ -98,7 +99,8 @@ double finalDistanceFromOwnVelocities(bool planarPose) {
   double px = 0.0, py = 0.0, theta = 0.0;
   Measurement<2> z(2);
   z.available << false, false;
-  for (int k = 0; k < 600; ++k) {
+  // 60 s for the headings to spread; 3 s under the sanitizers.
+  for (int k = 0; k < sftest::statisticalSteps(600, 30); ++k) {
     // The model steps the pose with the previous period's speed and turn rate.
     const double v = pf.state()(3), w = pf.state()(4);
     pf.estimate(z);
@@ -115,7 +117,10 @@ TEST(PlanarPoseMean, ParticleFilterPoseStaysOnTheTrack) {
   std::cout << "[ measured ] particle filter, 60 s dead reckoning, final distance from the "
                "track of its own velocity estimates: "
             << "entry-wise mean " << entryWise << " m, SE(2) mean " << onGroup << " m\n";
-  EXPECT_LT(onGroup, 0.5 * entryWise);
+  EXPECT_TRUE(std::isfinite(entryWise) && std::isfinite(onGroup));
+  if (sftest::kStatisticsAsserted) {
+    EXPECT_LT(onGroup, 0.5 * entryWise);
+  }
 }
 
 TEST(PlanarPoseMean, ParticleFilterRefusesABadPose) {
