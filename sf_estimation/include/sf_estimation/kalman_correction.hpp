@@ -76,7 +76,7 @@ __attribute__((always_inline)) inline void divideColumns(const Matrix<M, M>& dia
 /// written into the columns before). Written one at a time, each pair load of two means waited
 /// until both stores reached the cache.
 template <int M>
-void symmetrizeInPairs(Matrix<M, M>& S) {
+__attribute__((always_inline)) inline void symmetrizeInPairs(Matrix<M, M>& S) {
   const auto entry = [&S](Index i, Index j) {
     return i < j ? S(j, i) : (i == j ? S(j, j) : 0.5 * (S(i, j) + S(j, i)));
   };
