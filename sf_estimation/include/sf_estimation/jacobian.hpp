@@ -9,7 +9,6 @@
 #include <unsupported/Eigen/AutoDiff>
 
 #include "sf_estimation/model.hpp"
-#include "sf_estimation/small_products.hpp"
 #include "sf_estimation/types.hpp"
 
 namespace estimation {
@@ -50,30 +49,22 @@ void seedDerivatives(const Vector<ADVector::RowsAtCompileTime>& x, ADVector& see
 
 /// Copies the derivative rows of an AutoDiff result into a Jacobian, and its values into
 /// `plain` when given. Entries that do not depend on x (constants, controls) may carry an
-/// empty derivative vector. The Jacobian is written column by column, two rows to a store, as
-/// the Kalman steps' products load it (small_products.hpp): written by rows, each such load
-/// spanned two single stores and waited until they reached the cache.
+/// empty derivative vector.
 template <class ADVector, class JacobianType>
 void extractJacobian(const ADVector& values, Index cols, JacobianType& jacobian,
                      Vector<ADVector::RowsAtCompileTime>* plain = nullptr) {
-  const Index rows = values.size();
-  jacobian.resize(rows, cols);
+  jacobian.resize(values.size(), cols);
   if (plain) {
-    plain->resize(rows);
-    for (Index i = 0; i < rows; ++i) (*plain)(i) = values(i).value();
+    plain->resize(values.size());
+    for (Index i = 0; i < values.size(); ++i) (*plain)(i) = values(i).value();
   }
-  const auto entry = [&values, cols](Index i, Index j) {
+  for (Index i = 0; i < values.size(); ++i) {
     const auto& d = values(i).derivatives();
-    return d.size() == cols ? d(j) : 0.0;
-  };
-  for (Index j = 0; j < cols; ++j) {
-    Index i = 0;
-    if constexpr (!JacobianType::IsRowMajor) {
-      for (; i + 2 <= rows; i += 2) {
-        pairs::store(pairs::Pair{entry(i, j), entry(i + 1, j)}, &jacobian.coeffRef(i, j));
-      }
+    if (d.size() == cols) {
+      jacobian.row(i) = d.transpose();
+    } else {
+      jacobian.row(i).setZero();
     }
-    for (; i < rows; ++i) jacobian.coeffRef(i, j) = entry(i, j);
   }
 }
 

@@ -5,7 +5,6 @@
 #pragma once
 
 #include "sf_estimation/measurement.hpp"
-#include "sf_estimation/small_products.hpp"
 
 namespace estimation {
 
@@ -13,7 +12,7 @@ namespace estimation {
 /// entries the off-diagonal entries, missing entries are decoupled.
 template <int M>
 void effectiveMeasurementNoise(const Matrix<M, M>& R, const Measurement<M>& z, Matrix<M, M>& out) {
-  copyColumns(R, out);
+  out = R;
   for (Index i = 0; i < z.size(); ++i) {
     if (!z.available(i)) {
       out.row(i).setZero();

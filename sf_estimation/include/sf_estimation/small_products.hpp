@@ -90,23 +90,4 @@ inline void multiply(const A& a, const B& b, Out& out) {
   multiplyOnto<store, TransposeB>(out, a, b, out);
 }
 
-/// to = from, column by column and two rows to a store, as multiplyOnto reads columns: a plain
-/// loop, so that the copy is inlined wherever it is used (Eigen's fixed-size copy kernel was
-/// compiled as a call in some units: R's copy in a Kalman step then cost 5 % of the step).
-template <class From, class To>
-inline void copyColumns(const From& from, To& to) {
-  const Index rows = from.rows();
-  const Index cols = from.cols();
-  to.resize(rows, cols);
-#pragma GCC unroll 8
-  for (Index j = 0; j < cols; ++j) {
-    Index i = 0;
-#pragma GCC unroll 8
-    for (; i + 2 <= rows; i += 2) {
-      pairs::store(pairs::load(&from.coeffRef(i, j)), &to.coeffRef(i, j));
-    }
-    if (i < rows) to.coeffRef(i, j) = from.coeff(i, j);
-  }
-}
-
 }  // namespace estimation
