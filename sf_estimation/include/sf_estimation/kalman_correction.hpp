@@ -71,6 +71,25 @@ __attribute__((always_inline)) inline void divideColumns(const Matrix<M, M>& dia
   if (i < m) K(last, i) /= diagonal(i, i);
 }
 
+/// symmetrize(S) for kalmanGain, which loads S's columns two rows at a time paired from the last
+/// row up: the means are written that way, column by column (above the diagonal the ones already
+/// written into the columns before). Written one at a time, each pair load of two means waited
+/// until both stores reached the cache.
+template <int M>
+__attribute__((always_inline)) inline void symmetrizeInPairs(Matrix<M, M>& S) {
+  const auto entry = [&S](Index i, Index j) {
+    return i < j ? S(j, i) : (i == j ? S(j, j) : 0.5 * (S(i, j) + S(j, i)));
+  };
+  const Index m = S.rows();
+#pragma GCC unroll 8
+  for (Index j = 0; j < m; ++j) {
+    Index i = 0;
+    if (m % 2 != 0) S(i++, j) = entry(0, j);
+#pragma GCC unroll 8
+    for (; i < m; i += 2) pairs::store(pairs::Pair{entry(i, j), entry(i + 1, j)}, &S(i, j));
+  }
+}
+
 /// K = crossCovariance * S^-1. Throws NumericalError when S is not positive definite or the
 /// gain is not finite.
 ///
@@ -103,19 +122,23 @@ void kalmanGain(const Matrix<N, M>& crossCovariance, const Matrix<M, M>& S, Matr
       throw NumericalError("innovation covariance is not positive definite; step rejected");
     }
     LD(k, k) = pivot;
+    // Rows paired from the last one up, the same pairs in every column: paired from row k + 1
+    // down, a column's pairs straddled the next one's, and each of those loads of L waited
+    // until the two stores reached the cache.
     Index i = k + 1;
-#pragma GCC unroll 8
-    for (; i + 2 <= m; i += 2) {
-      Pair sum = load(&S(i, k));
-#pragma GCC unroll 8
-      for (Index j = 0; j < k; ++j) sum -= load(&LD(i, j)) * scaled(j);
-      pairs::store(sum / pivot, &LD(i, k));
-    }
-    if (i < m) {
+    if ((m - i) % 2 != 0) {
       double sum = S(i, k);
 #pragma GCC unroll 8
       for (Index j = 0; j < k; ++j) sum -= LD(i, j) * scaled(j);
       LD(i, k) = sum / pivot;
+      ++i;
+    }
+#pragma GCC unroll 8
+    for (; i < m; i += 2) {
+      Pair sum = load(&S(i, k));
+#pragma GCC unroll 8
+      for (Index j = 0; j < k; ++j) sum -= load(&LD(i, j)) * scaled(j);
+      pairs::store(sum / pivot, &LD(i, k));
     }
   }
   // K L D L^T = crossCovariance. K <- crossCovariance L^-T column by column: copied as one
@@ -148,7 +171,7 @@ void linearCorrection(Vector<N>& x, Matrix<N, N>& P, const Matrix<M, N>& H, cons
   multiply<Store::Assign, true>(P, H, PHt);
   Matrix<M, M> S(m, m);
   multiplyOnto<Store::Add>(R, H, PHt, S);
-  symmetrize(S);
+  symmetrizeInPairs<M>(S);
   Matrix<N, M> K(n, m);
   kalmanGain<N, M>(PHt, S, K);
   multiply<Store::Add>(K, y, x);
@@ -188,7 +211,7 @@ void crossCovarianceCorrection(const Measurement<M>& z, const Vector<M>& zMean,
   Matrix<M, M> R(m, m);
   effectiveMeasurementNoise(noise, z, R);
   Matrix<M, M> S = Pzz + R;
-  symmetrize(S);
+  symmetrizeInPairs<M>(S);
   Matrix<N, M> K(x.size(), m);
   kalmanGain<N, M>(Pxz, S, K);
   multiply<Store::Add>(K, y, x);
