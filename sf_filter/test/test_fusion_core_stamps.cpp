@@ -288,6 +288,26 @@ std::vector<Core::Estimate> runCadence(const CadenceRun& run) {
   return out.estimates;
 }
 
+constexpr std::size_t kEmpty = 3;  // the periods ending at -0.2, -0.1 and 0 s
+
+/// Checks the first `count` estimates of a cadence run, which start with the kEmpty periods
+/// of the lag before the first reading: estimate k against the train stepped by hand with
+/// measurementOf(j) in period j = k - kEmpty (the missing measurement while j < 0), in time
+/// (the period's end, 0.1 * (j + 1) s) and belief.
+
+template <class MeasurementOf>
+void expectHandSteppedTrain(const std::vector<Core::Estimate>& estimates, std::size_t count,
+                            MeasurementOf measurementOf) {
+  ASSERT_GE(estimates.size(), count);
+  Train reference = makeTrain();
+  for (std::size_t k = 0; k < count; ++k) {
+    const double j = static_cast<double>(k) - static_cast<double>(kEmpty);
+    reference.estimate(k < kEmpty ? Measurement<2>::missing() : measurementOf(j));
+    EXPECT_NEAR(estimates[k].time, 0.1 * (j + 1.0), 1e-9) << k;
+    expectSameBelief(estimates[k], reference);
+  }
+}
+
 // Issue 38 D10: a node stalled under load read an unstamped value after roscpp's clock had
 // jumped past the period it was sent in; placed at its arrival it joined the next period's
 // value (AVERAGE merged them) and its own period had none. Placed by its input's cadence (the
@@ -297,7 +317,6 @@ std::vector<Core::Estimate> runCadence(const CadenceRun& run) {
 // acceleration 0 except in the period the stall covers whole ([0.7, 0.8) s), whose
 // accelerations arrived (by arrival) in the period after the stall.
 TEST(FusionCoreStamps, AnUnstampedValueReadAfterAClockJumpGoesWhereItsCadencePutsIt) {
-  constexpr std::size_t kEmpty = 3;  // the periods ending at -0.2, -0.1 and 0 s
   CadenceRun run;
   run.cadence = false;
   const std::vector<Core::Estimate> atArrival = runCadence(run);
@@ -308,16 +327,9 @@ TEST(FusionCoreStamps, AnUnstampedValueReadAfterAClockJumpGoesWhereItsCadencePut
   run.cadence = true;
   const std::vector<Core::Estimate> estimates = runCadence(run);
   ASSERT_EQ(estimates.size(), kEmpty + 10);
-  Train reference = makeTrain();
-  for (std::size_t k = 0; k < estimates.size(); ++k) {
-    const double j = static_cast<double>(k) - static_cast<double>(kEmpty);
-    const bool stalled = j == 7.0;
-    reference.estimate(k < kEmpty ? Measurement<2>::missing()
-                       : stalled  ? speedOnly(1.0 + 0.5 * j)
-                                  : speedAndAcceleration(1.0 + 0.5 * j, 0.0));
-    EXPECT_NEAR(estimates[k].time, 0.1 * (j + 1.0), 1e-9);
-    expectSameBelief(estimates[k], reference);
-  }
+  expectHandSteppedTrain(estimates, estimates.size(), [](double j) {
+    return j == 7.0 ? speedOnly(1.0 + 0.5 * j) : speedAndAcceleration(1.0 + 0.5 * j, 0.0);
+  });
 }
 
 // Issue 38 D10, round seven: a stall longer than the lag (0.5 s here, from 0.45 s: as the node
@@ -329,20 +341,15 @@ TEST(FusionCoreStamps, AnUnstampedValueReadAfterAClockJumpGoesWhereItsCadencePut
 // is the train stepped by hand up to the period before the stall's end, where the value of
 // [0.5, 0.6) s joined the arrival's (as before).
 TEST(FusionCoreStamps, AfterAStallLongerThanTheLagTheBacklogStillGoesWhereItsCadencePutsIt) {
-  constexpr std::size_t kEmpty = 3;  // the periods ending at -0.2, -0.1 and 0 s
   CadenceRun run;
   run.stalls = {{0.45, 0.95}};
   const std::vector<Core::Estimate> estimates = runCadence(run);
   ASSERT_EQ(estimates.size(), kEmpty + 10);
-  Train reference = makeTrain();
-  for (std::size_t k = 0; k < kEmpty + 9; ++k) {
-    const double j = static_cast<double>(k) - static_cast<double>(kEmpty);
-    reference.estimate(k < kEmpty || j == 5.0 ? Measurement<2>::missing()
-                       : j > 5.0              ? speedOnly(1.0 + 0.5 * j)
-                                              : speedAndAcceleration(1.0 + 0.5 * j, 0.0));
-    EXPECT_NEAR(estimates[k].time, 0.1 * (j + 1.0), 1e-9);
-    expectSameBelief(estimates[k], reference);
-  }
+  expectHandSteppedTrain(estimates, kEmpty + 9, [](double j) {
+    return j == 5.0  ? Measurement<2>::missing()
+           : j > 5.0 ? speedOnly(1.0 + 0.5 * j)
+                     : speedAndAcceleration(1.0 + 0.5 * j, 0.0);
+  });
 }
 
 // Issue 38 D10, round eight: the cadence was the median of the last eight arrival intervals.
@@ -356,21 +363,16 @@ TEST(FusionCoreStamps, AfterAStallLongerThanTheLagTheBacklogStillGoesWhereItsCad
 // reference is the train given the speed 1 + j / 2 and the acceleration 0 in every period j
 // (no stall covers a period whole).
 TEST(FusionCoreStamps, StallsDoNotStretchTheCadence) {
-  constexpr std::size_t kEmpty = 3;  // the periods ending at -0.2, -0.1 and 0 s
   CadenceRun run;
   run.periods = 15;
   run.stalls = {{0.53, 0.61}, {0.73, 0.81}, {0.93, 1.01}, {1.13, 1.21}, {1.33, 1.41}};
   const std::vector<Core::Estimate> estimates = runCadence(run);
   ASSERT_EQ(estimates.size(), kEmpty + 15);
-  Train reference = makeTrain();
   for (std::size_t k = 0; k < estimates.size(); ++k) {
-    const double j = static_cast<double>(k) - static_cast<double>(kEmpty);
-    reference.estimate(k < kEmpty ? Measurement<2>::missing()
-                                  : speedAndAcceleration(1.0 + 0.5 * j, 0.0));
-    EXPECT_NEAR(estimates[k].time, 0.1 * (j + 1.0), 1e-9);
     EXPECT_EQ(estimates[k].presentInputs, k < kEmpty ? 0 : 2) << k;
-    expectSameBelief(estimates[k], reference);
   }
+  expectHandSteppedTrain(estimates, estimates.size(),
+                         [](double j) { return speedAndAcceleration(1.0 + 0.5 * j, 0.0); });
 }
 
 // The cadence moves nothing when the evidence is missing: a value the sensor skipped (the
