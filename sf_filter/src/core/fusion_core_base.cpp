@@ -244,7 +244,9 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
   ++c.received;
   c.lastArrival = now;
   noteReading(now);
-  if (options_.unstampedCadence) cadences_[static_cast<std::size_t>(input)].noteDelivery(now);
+  // Every input's deliveries are noted: the cadence also tells, with ~unstamped_cadence off,
+  // which unstamped values a stall placed late (InputCounters::placedLate).
+  cadences_[static_cast<std::size_t>(input)].noteDelivery(now);
   if (!std::isfinite(value)) {
     ++c.nonFinite;
     return Rejection::NonFinite;
@@ -269,8 +271,8 @@ Rejection FusionCoreBase::place(Index input, double now, double value,
   double time = arrival;
   if (byStamp) {
     time = stamp;
-  } else if (options_.unstampedCadence && std::isnan(stamp)) {
-    time = cadenceTime(input, arrival, now);
+  } else if (std::isnan(stamp)) {
+    time = cadenceTime(input, c, arrival, now);
   }
   bool estimated = false, beyond = false;
   const std::uint64_t k = placeValue(time, estimated, beyond);
@@ -350,15 +352,22 @@ double FusionCoreBase::arrivalTime(double now, double stamp) const {
   return now < time ? time : now;
 }
 
-double FusionCoreBase::cadenceTime(Index input, double arrival, double now) {
+double FusionCoreBase::cadenceTime(Index input, InputCounters& c, double arrival, double now) {
   ArrivalCadence& cadence = cadences_[static_cast<std::size_t>(input)];
   const double expected = cadence.lateExpected(arrival);
   double time = arrival, sent = arrival;
   if (!std::isnan(expected) && othersSilentSince(input, expected, now)) {
     bool estimated = false, beyond = false, arrivalEstimated = false, arrivalBeyond = false;
     const std::uint64_t k = ring_->openPeriodOf(expected, estimated, beyond);
-    if (!estimated && k < ring_->openPeriodOf(arrival, arrivalEstimated, arrivalBeyond)) {
+    const bool earlier =
+        estimated || k < ring_->openPeriodOf(arrival, arrivalEstimated, arrivalBeyond);
+    if (earlier && !estimated && options_.unstampedCadence) {
       time = expected;
+    } else if (earlier) {
+      // kept at its arrival, a period after the one it was sent in: reported, so that a
+      // comparison with the offline replay knows from where on the node could not follow it
+      ++c.placedLate;
+      if (std::isnan(c.firstPlacedLate)) c.firstPlacedLate = expected;
     }
     // The cadence goes on from when the value was sent, also when its period was estimated
     // already (a stall longer than the lag): the backlog's next values then still reach

@@ -254,10 +254,11 @@ class FusionCoreBase {
   /// (a stamped value) or the newest stamp (anything else).
   double arrivalTime(double now, double stamp) const;
   /// The time an unstamped value of input `input` aligned by arrival at `arrival` (received
-  /// at `now`) belongs to (Options::unstampedCadence): its arrival, or the time its input's
+  /// at `now`) belongs to: its arrival, or with Options::unstampedCadence the time its input's
   /// cadence predicts when it came late, every other input was silent since (a stalled
-  /// delivery, not a skipped value) and that period is still open. Notes the value.
-  double cadenceTime(Index input, double arrival, double now);
+  /// delivery, not a skipped value) and that period is still open. Notes the value, and in
+  /// `c` a value kept at its arrival although sent in an earlier period (placedLate).
+  double cadenceTime(Index input, InputCounters& c, double arrival, double now);
   /// Whether every other input that delivered at all delivered nothing from time t until the
   /// values received at `now`, and at least one did deliver: a stall, vouched for by others.
   bool othersSilentSince(Index input, double t, double now) const;
@@ -279,7 +280,7 @@ class FusionCoreBase {
   /// (-inf: none since the clock last moved). Stamps stand in for a stalled clock.
   std::vector<double> leadStamps_;
   double leadStamp_ = -std::numeric_limits<double>::infinity();  ///< the largest of them
-  std::vector<ArrivalCadence> cadences_;  ///< per input (Options::unstampedCadence)
+  std::vector<ArrivalCadence> cadences_;  ///< per input (placement and placedLate)
   int leaders_ = 0;  ///< inputs with a lead stamp: two or more mean the clock stands still
   /// The latest clock reading seen, by readClock() or as an arrival time.
   double reading_ = -std::numeric_limits<double>::infinity();

@@ -90,6 +90,13 @@ inline std::string lateReason(const InputInterval& in, std::uint64_t late) {
   return " (" + std::to_string(late) + " late: stamp-to-arrival delay " +
          delayFigures(in.now.delays) + (advice.empty() ? "" : "; " + advice) + ")";
 }
+/// A time on the clock to the millisecond (ROS times are ~1e9 s), "never" if NaN.
+inline std::string stampText(double t) {
+  if (std::isnan(t)) return "never";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", t);
+  return text;
+}
 /// A delay quantile [ms] for the report, "n/a" before the first stamped value.
 inline std::string delayMs(const StampDelays& d, double q) {
   return d.count() ? format(1e3 * d.quantile(q)) : std::string("n/a");
@@ -143,6 +150,8 @@ inline HealthStatus inputHealth(const InputOptions& o, const InputInterval& in) 
   s.add("superseded", c.superseded);
   s.add("substituted", c.substituted);
   s.add("timed-out periods", c.timedOutPeriods);
+  s.add("placed late", c.placedLate);
+  s.add("first placed late, sent at [s]", health_detail::stampText(c.firstPlacedLate));
   return s;
 }
 

@@ -75,6 +75,13 @@ struct InputCounters {
   std::uint64_t substituted = 0;      ///< periods given a HOLD or FILL substitute (not values)
   std::uint64_t aheadOfClock = 0;     ///< stamps beyond the open periods, used in the newest one
   std::uint64_t timedOutPeriods = 0;  ///< periods estimated while the input was timed out
+  /// Unstamped values the input's cadence found sent in an earlier period than the one they
+  /// went to (a stalled delivery: kept at their arrival because that period was estimated
+  /// already, or ~unstamped_cadence is off). Where one was, the estimates from its period on
+  /// may differ from the offline replay's, which places it by its recorded time (issue 38 D10).
+  std::uint64_t placedLate = 0;
+  /// The time the cadence says the first of them was sent (NaN: none); kept across resets.
+  double firstPlacedLate = std::numeric_limits<double>::quiet_NaN();
   double lastArrival = std::numeric_limits<double>::quiet_NaN();
   /// Arrival of the newest value that reached the filter (NaN: none since the start or the
   /// last reset): set when its period is estimated, for a value that passed the checks on
