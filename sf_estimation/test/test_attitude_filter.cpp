@@ -13,7 +13,8 @@
 #include "sf_estimation/errors.hpp"
 #include "statistical_steps.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace attitude_filter_test {
 
 using estimation::AttitudeFilter;
 using estimation::AttitudeParameters;
@@ -160,4 +161,4 @@ TEST(AttitudeFilter, NoiseSettersRefuseANonCovarianceAndKeepTheOldOne) {
   EXPECT_EQ(ekf.measurementNoise(), 2.0 * R);
 }
 
-}  // namespace
+}  // namespace attitude_filter_test

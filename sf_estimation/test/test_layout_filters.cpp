@@ -15,7 +15,8 @@
 #include "sf_estimation/manifold/layout_embedding.hpp"
 #include "sf_estimation/manifold/so3_world_block.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace layout_filters_test {
 
 namespace mf = estimation::manifold;
 using estimation::Matrix;
@@ -202,4 +203,4 @@ TEST(LayoutFilters, RefusalsKeepTheBelief) {
   EXPECT_EQ(ekf.covariance(), P0);
 }
 
-}  // namespace
+}  // namespace layout_filters_test

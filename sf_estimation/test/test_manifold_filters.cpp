@@ -13,7 +13,8 @@
 #include "sf_estimation/manifold_extended_kalman_filter.hpp"
 #include "sf_estimation/manifold_unscented_kalman_filter.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace manifold_filters_test {
 
 namespace mf = estimation::manifold;
 using estimation::Matrix;
@@ -208,4 +209,4 @@ TEST(ManifoldFilters, BadInputIsRefusedAndTheBeliefKept) {
   EXPECT_EQ(filter.covariance()(0, 0), 1.0);
 }
 
-}  // namespace
+}  // namespace manifold_filters_test

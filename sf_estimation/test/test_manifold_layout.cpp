@@ -15,7 +15,8 @@
 #include "sf_estimation/manifold/se2.hpp"
 #include "sf_estimation/manifold/state_layout.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace manifold_layout_test {
 
 namespace mf = estimation::manifold;
 using mf::So2Block;
@@ -240,4 +241,4 @@ TEST(Se2Block, AutoDiffJacobianAgainstFiniteDifferences) {
   }
 }
 
-}  // namespace
+}  // namespace manifold_layout_test

@@ -11,7 +11,8 @@
 #include "sf_estimation/manifold/so2.hpp"
 #include "sf_estimation/manifold/so3.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace manifold_rotations_test {
 
 namespace mf = estimation::manifold;
 using Quat = Eigen::Quaterniond;
@@ -203,4 +204,4 @@ TEST(So3, AutoDiffOfExpAndLogAtTheIdentity) {
   EXPECT_EQ(v(1).derivatives(), V3(0.0, 2.0, 0.0));
 }
 
-}  // namespace
+}  // namespace manifold_rotations_test

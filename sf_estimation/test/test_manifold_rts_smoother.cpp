@@ -17,7 +17,8 @@
 #include "sf_estimation/manifold_rts_smoother.hpp"
 #include "sf_estimation/rts_smoother.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace manifold_rts_smoother_test {
 
 namespace mf = estimation::manifold;
 using estimation::Matrix;
@@ -189,4 +190,4 @@ TEST(ManifoldRtsSmoother, AttitudeCloserToTheTruthThanFiltered) {
       << std::sqrt(smoothedBias / 301);
 }
 
-}  // namespace
+}  // namespace manifold_rts_smoother_test

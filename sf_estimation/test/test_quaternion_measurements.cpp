@@ -12,7 +12,8 @@
 #include "sf_estimation/layout_unscented_kalman_filter.hpp"
 #include "sf_estimation/manifold/so3_world_block.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace quaternion_measurements_test {
 
 namespace mf = estimation::manifold;
 using estimation::Matrix;
@@ -150,4 +151,4 @@ TEST(QuaternionMeasurements, AVarianceOnTheQuaternionsWIsRefused) {
                estimation::ParameterError);
 }
 
-}  // namespace
+}  // namespace quaternion_measurements_test
