@@ -13,8 +13,7 @@
 #include "sf_estimation/errors.hpp"
 #include "statistical_steps.hpp"
 
-// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
-namespace attitude_filter_test {
+namespace {
 
 using estimation::AttitudeFilter;
 using estimation::AttitudeParameters;
@@ -161,4 +160,4 @@ TEST(AttitudeFilter, NoiseSettersRefuseANonCovarianceAndKeepTheOldOne) {
   EXPECT_EQ(ekf.measurementNoise(), 2.0 * R);
 }
 
-}  // namespace attitude_filter_test
+}  // namespace

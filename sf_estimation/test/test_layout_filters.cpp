@@ -15,8 +15,7 @@
 #include "sf_estimation/manifold/layout_embedding.hpp"
 #include "sf_estimation/manifold/so3_world_block.hpp"
 
-// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
-namespace layout_filters_test {
+namespace {
 
 namespace mf = estimation::manifold;
 using estimation::Matrix;
@@ -203,4 +202,4 @@ TEST(LayoutFilters, RefusalsKeepTheBelief) {
   EXPECT_EQ(ekf.covariance(), P0);
 }
 
-}  // namespace layout_filters_test
+}  // namespace

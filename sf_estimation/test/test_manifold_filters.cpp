@@ -13,8 +13,7 @@
 #include "sf_estimation/manifold_extended_kalman_filter.hpp"
 #include "sf_estimation/manifold_unscented_kalman_filter.hpp"
 
-// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
-namespace manifold_filters_test {
+namespace {
 
 namespace mf = estimation::manifold;
 using estimation::Matrix;
@@ -209,4 +208,4 @@ TEST(ManifoldFilters, BadInputIsRefusedAndTheBeliefKept) {
   EXPECT_EQ(filter.covariance()(0, 0), 1.0);
 }
 
-}  // namespace manifold_filters_test
+}  // namespace

@@ -15,8 +15,7 @@
 #include "sf_estimation/manifold/se2.hpp"
 #include "sf_estimation/manifold/state_layout.hpp"
 
-// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
-namespace manifold_layout_test {
+namespace {
 
 namespace mf = estimation::manifold;
 using mf::So2Block;
@@ -241,4 +240,4 @@ TEST(Se2Block, AutoDiffJacobianAgainstFiniteDifferences) {
   }
 }
 
-}  // namespace manifold_layout_test
+}  // namespace

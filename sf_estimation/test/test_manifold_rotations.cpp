@@ -11,8 +11,7 @@
 #include "sf_estimation/manifold/so2.hpp"
 #include "sf_estimation/manifold/so3.hpp"
 
-// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
-namespace manifold_rotations_test {
+namespace {
 
 namespace mf = estimation::manifold;
 using Quat = Eigen::Quaterniond;
@@ -204,4 +203,4 @@ TEST(So3, AutoDiffOfExpAndLogAtTheIdentity) {
   EXPECT_EQ(v(1).derivatives(), V3(0.0, 2.0, 0.0));
 }
 
-}  // namespace manifold_rotations_test
+}  // namespace

@@ -17,8 +17,7 @@
 #include "sf_estimation/manifold_rts_smoother.hpp"
 #include "sf_estimation/rts_smoother.hpp"
 
-// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
-namespace manifold_rts_smoother_test {
+namespace {
 
 namespace mf = estimation::manifold;
 using estimation::Matrix;
@@ -190,4 +189,4 @@ TEST(ManifoldRtsSmoother, AttitudeCloserToTheTruthThanFiltered) {
       << std::sqrt(smoothedBias / 301);
 }
 
-}  // namespace manifold_rts_smoother_test
+}  // namespace

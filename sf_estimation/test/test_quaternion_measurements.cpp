@@ -12,8 +12,7 @@
 #include "sf_estimation/layout_unscented_kalman_filter.hpp"
 #include "sf_estimation/manifold/so3_world_block.hpp"
 
-// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
-namespace quaternion_measurements_test {
+namespace {
 
 namespace mf = estimation::manifold;
 using estimation::Matrix;
@@ -151,4 +150,4 @@ TEST(QuaternionMeasurements, AVarianceOnTheQuaternionsWIsRefused) {
                estimation::ParameterError);
 }
 
-}  // namespace quaternion_measurements_test
+}  // namespace
