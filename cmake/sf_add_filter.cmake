@@ -155,20 +155,28 @@ function(sf_add_filter name header)
   # are done (doc/build_cost.md). With NODELET it is compiled once for the node and the
   # plugin. The header's smoothers are a second unit of the same object library, compiled
   # beside the first (fusion_node_smoothers.cpp, doc/build_cost.md "The smoothers' unit"), and
-  # a 3D header's filter step a third (fusion_node_step.cpp, "The 3D headers' step").
+  # a 3D header's filter step a third (fusion_node_step.cpp, "The 3D headers' step"), only for
+  # a header that names QUATERNION_STATES: for any other it would be empty.
   set(_unit ${name}_unit)
   if(_sf_NODELET)
     _sf_check_nodelet_xml(${name} "${_sf_NODELET}")
-    add_library(${_unit} OBJECT "${SF_PKG_NODELET_UNIT}" "${SF_PKG_FILTER_SMOOTHERS}"
-      "${SF_PKG_FILTER_STEP}")
+    set(_sources "${SF_PKG_NODELET_UNIT}" "${SF_PKG_FILTER_SMOOTHERS}")
   else()
-    add_library(${_unit} OBJECT "${SF_PKG_FILTER_MAIN}" "${SF_PKG_FILTER_SMOOTHERS}"
-      "${SF_PKG_FILTER_STEP}")
+    set(_sources "${SF_PKG_FILTER_MAIN}" "${SF_PKG_FILTER_SMOOTHERS}")
   endif()
+  _sf_header_names(_step "${_header}" QUATERNION_STATES)
+  if(_step)
+    list(APPEND _sources "${SF_PKG_FILTER_STEP}")
+  endif()
+  add_library(${_unit} OBJECT ${_sources})
   _sf_filter_unit(${_unit} "${_header}")
   # The node unit then declares the smoothers extern (node_definition_of.hpp); any other unit
-  # of a header (tests, tools) instantiates them itself.
+  # of a header (tests, tools) instantiates them itself. SF_FILTER_STEP_UNIT: the third unit is
+  # there (without it, a header that has QUATERNION_STATES after all stops at an #error).
   target_compile_definitions(${_unit} PRIVATE SF_FILTER_SMOOTHERS_UNIT=1)
+  if(_step)
+    target_compile_definitions(${_unit} PRIVATE SF_FILTER_STEP_UNIT=1)
+  endif()
   add_executable(${name} $<TARGET_OBJECTS:${_unit}>)
   if(_sf_TEST)
     set(_sf_NO_INSTALL TRUE)
@@ -205,6 +213,36 @@ function(sf_add_filter name header)
   if(NOT _sf_NO_INSTALL)
     install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
   endif()
+endfunction()
+
+# Sets <out> to whether <macro> occurs in the header or in a header it includes by "..." (found
+# beside the including file, where the preprocessor looks first), a comment included: a
+# configure-time look that errs toward TRUE. Headers that name the macro only through an
+# <...> include are not followed; node_definition_of.hpp stops those with an #error.
+function(_sf_header_names out header macro)
+  set(_todo "${header}")
+  set(_seen)
+  while(_todo)
+    list(POP_FRONT _todo _file)
+    list(FIND _seen "${_file}" _index)
+    if(NOT _index EQUAL -1 OR NOT EXISTS "${_file}")
+      continue()
+    endif()
+    list(APPEND _seen "${_file}")
+    file(STRINGS "${_file}" _hits REGEX "${macro}")
+    if(_hits)
+      set(${out} TRUE PARENT_SCOPE)
+      return()
+    endif()
+    file(STRINGS "${_file}" _includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+    get_filename_component(_dir "${_file}" DIRECTORY)
+    foreach(_line IN LISTS _includes)
+      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]+)\".*$" "\\1" _name "${_line}")
+      get_filename_component(_path "${_name}" ABSOLUTE BASE_DIR "${_dir}")
+      list(APPEND _todo "${_path}")
+    endforeach()
+  endwhile()
+  set(${out} FALSE PARENT_SCOPE)
 endfunction()
 
 # The plugin description must name the plugin's library and class, or pluginlib would not find

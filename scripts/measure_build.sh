@@ -53,7 +53,7 @@ configure() {
 
 # unit_cost <workspace> <header> [<source>]: "cpu_s peak_MB" of compiling the header's node
 # unit (fusion_node_main), its smoothers' unit (fusion_node_smoothers) or its step's unit
-# (fusion_node_step; a tree before one has none: "n/a n/a").
+# (fusion_node_step; a header without QUATERNION_STATES, or a tree before one, has none: "n/a n/a").
 unit_cost() {
   local cmd
   cmd="$(/usr/bin/python3 - "$1/build/compile_commands.json" "$2" "${3:-fusion_node_main}" <<'EOF'
@@ -113,8 +113,8 @@ if [[ -n "$baseline" ]]; then prelude_cost "$work/baseline" >/dev/null; fi
 printf '%-28s %14s %14s' "translation unit (header)" "CPU s" "peak MB"
 [[ -n "$baseline" ]] && printf ' %14s %14s' "CPU s ($baseline)" "peak MB ($baseline)"
 echo
-# Each header's node unit, then its smoothers' and its step's unit (sf_add_filter compiles the
-# three; "+ smoothers", "+ step").
+# Each header's node unit, then its smoothers' and its step's unit (sf_add_filter compiles the step
+# only for a 3D header; "+ smoothers", "+ step").
 for h in "${headers[@]}"; do
   for source in fusion_node_main fusion_node_smoothers fusion_node_step; do
     label="$h"

@@ -21,7 +21,8 @@
 #include "sf_estimation/unscented_rts_smoother.hpp"
 #include "smoother_test_problems.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace batch_map_smoother_test {
 
 using estimation::BatchMapOptions;
 using estimation::BatchMapReport;
@@ -342,4 +343,4 @@ TEST(BatchMapSmootherRecord, InvalidRecordIsRefused) {
                estimation::ParameterError);
 }
 
-}  // namespace
+}  // namespace batch_map_smoother_test

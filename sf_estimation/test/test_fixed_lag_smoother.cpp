@@ -18,7 +18,8 @@
 #include "sf_estimation/unscented_rts_smoother.hpp"
 #include "smoother_test_problems.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace fixed_lag_smoother_test {
 
 using estimation::ExtendedKalmanFilter;
 using estimation::FilteredPeriod;
@@ -172,4 +173,4 @@ TEST(FixedLagSmootherRecord, RefusedPeriodIsNotAdded) {
   EXPECT_NEAR(hand->P(0, 0), 5.0 / 8.0, 1e-14);
 }
 
-}  // namespace
+}  // namespace fixed_lag_smoother_test

@@ -15,7 +15,8 @@
 #include "sf_estimation/kalman_filter.hpp"
 #include "sf_estimation/particle_filter.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace particle_proposal_test {
 
 using estimation::Index;
 using estimation::KalmanFilter;
@@ -139,4 +140,4 @@ TEST(LinearisedProposal, RefusesAQThatIsNotPositiveDefinite) {
   }
 }
 
-}  // namespace
+}  // namespace particle_proposal_test

@@ -13,7 +13,8 @@
 #include "sf_estimation/planar_pose_mean.hpp"
 #include "statistical_steps.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace planar_pose_mean_test {
 
 using estimation::Index;
 using estimation::Matrix;
@@ -144,4 +145,4 @@ TEST(PlanarPoseMean, ParticleFilterRefusesABadPose) {
   }
 }
 
-}  // namespace
+}  // namespace planar_pose_mean_test

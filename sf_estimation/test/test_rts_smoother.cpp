@@ -22,7 +22,8 @@
 #include "sf_estimation/unscented_rts_smoother.hpp"
 #include "smoother_test_problems.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace rts_smoother_test {
 
 using estimation::AngularComponents;
 using estimation::ExtendedKalmanFilter;
@@ -289,4 +290,4 @@ TEST(RtsSmootherRecord, UnscentedPropagatedMeanIsTheFiltersPrediction) {
   }
 }
 
-}  // namespace
+}  // namespace rts_smoother_test

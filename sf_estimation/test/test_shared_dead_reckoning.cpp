@@ -16,7 +16,8 @@
 #include "sf_estimation/particle_filter.hpp"
 #include "statistical_steps.hpp"
 
-namespace {
+// Named, not anonymous: compiled in a unity group (sf_estimation/CMakeLists.txt).
+namespace shared_dead_reckoning_test {
 
 using estimation::Index;
 using estimation::Mask;
@@ -224,4 +225,4 @@ TEST(SharedDeadReckoning, RejectedStepChangesNothing) {
   EXPECT_EQ(pf.state(), twin.state());  // the engine was restored too
 }
 
-}  // namespace
+}  // namespace shared_dead_reckoning_test

@@ -3,9 +3,8 @@
 // corrections), which the node's unit (fusion_node_main.cpp) and its second unit
 // (fusion_node_smoothers.cpp) declare extern: with the Jacobians and the smoothers in the
 // second, the 3D headers' units were still over the package's 500 MB (doc/build_cost.md,
-// "The 3D headers' step"). sf_add_filter() compiles this file beside the other two for every
-// header; without QUATERNION_STATES it stops after the header (the precompiled prelude's load,
-// about 0.3 s).
+// "The 3D headers' step"). sf_add_filter() compiles this file beside the other two for a header
+// that names QUATERNION_STATES (for any other it would stop after the header).
 #ifndef SF_CONFIG_HEADER
 #error "SF_CONFIG_HEADER is not defined: build fusion nodes with sf_add_filter(<name> <header>)"
 #endif
