@@ -52,8 +52,9 @@ configure() {
 }
 
 # unit_cost <workspace> <header> [<source>]: "cpu_s peak_MB" of compiling the header's node
-# unit (fusion_node_main), its smoothers' unit (fusion_node_smoothers) or its step's unit
-# (fusion_node_step; a header without QUATERNION_STATES, or a tree before one, has none: "n/a n/a").
+# unit (fusion_node_main), its smoothers' unit (fusion_node_smoothers), its step's unit
+# (fusion_node_step; a header without QUATERNION_STATES, or a tree before one, has none: "n/a n/a")
+# or its observation Jacobian's (fusion_node_observation: the same headers; an EKF's only).
 unit_cost() {
   local cmd
   cmd="$(/usr/bin/python3 - "$1/build/compile_commands.json" "$2" "${3:-fusion_node_main}" <<'EOF'
@@ -113,19 +114,21 @@ if [[ -n "$baseline" ]]; then prelude_cost "$work/baseline" >/dev/null; fi
 printf '%-28s %14s %14s' "translation unit (header)" "CPU s" "peak MB"
 [[ -n "$baseline" ]] && printf ' %14s %14s' "CPU s ($baseline)" "peak MB ($baseline)"
 echo
-# Each header's node unit, then its smoothers' and its step's unit (sf_add_filter compiles the step
-# only for a 3D header; "+ smoothers", "+ step").
+# Each header's node unit, then its smoothers', its step's and its observation Jacobian's unit
+# (sf_add_filter compiles the last two only for some 3D headers; "+ smoothers", "+ step", "+ obs.").
 for h in "${headers[@]}"; do
-  for source in fusion_node_main fusion_node_smoothers fusion_node_step; do
+  for source in fusion_node_main fusion_node_smoothers fusion_node_step fusion_node_observation; do
     label="$h"
     [[ "$source" == fusion_node_smoothers ]] && label="  + smoothers"
     [[ "$source" == fusion_node_step ]] && label="  + step"
+    [[ "$source" == fusion_node_observation ]] && label="  + obs. Jacobian"
     read -r cpu mem < <(unit_cost "$work/current" "$h" "$source")
+    bcpu=n/a bmem=n/a
+    [[ -n "$baseline" ]] && read -r bcpu bmem < <(unit_cost "$work/baseline" "$h" "$source")
+    # a unit neither tree compiles for this header is not listed
+    [[ "$source" != fusion_node_main && "$cpu" == n/a && "$bcpu" == n/a ]] && continue
     printf '%-28s %14s %14s' "$label" "$cpu" "$mem"
-    if [[ -n "$baseline" ]]; then
-      read -r bcpu bmem < <(unit_cost "$work/baseline" "$h" "$source")
-      printf ' %14s %14s' "$bcpu" "$bmem"
-    fi
+    [[ -n "$baseline" ]] && printf ' %14s %14s' "$bcpu" "$bmem"
     echo
   done
 done

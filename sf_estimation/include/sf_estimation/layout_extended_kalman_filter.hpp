@@ -148,13 +148,18 @@ void LayoutExtendedKalmanFilter<FlatModel, Layout, MeasurementLayout>::observati
 
 // The Jacobians of FILTER (a LayoutExtendedKalmanFilter), declared extern (PREFIX extern) in
 // a node's unit and instantiated (PREFIX empty) in its second unit, like the smoothers
-// (doc/build_cost.md, "The 3D headers' Jacobians and the particle filter's step").
-#define SF_ESTIMATION_LAYOUT_EKF_JACOBIANS(PREFIX, FILTER)              \
-  PREFIX template void FILTER::transitionJacobian(                      \
-      FILTER::State&, estimation::Matrix<FILTER::D, FILTER::D>&) const; \
-  PREFIX template void FILTER::observationJacobian(                     \
-      const FILTER::State&, estimation::Vector<FILTER::M>&,             \
+// (doc/build_cost.md, "The 3D headers' Jacobians and the particle filter's step"), or each in
+// a unit of its own (a measured rotation: "The observation Jacobian's unit").
+#define SF_ESTIMATION_LAYOUT_EKF_TRANSITION_JACOBIAN(PREFIX, FILTER) \
+  PREFIX template void FILTER::transitionJacobian(                   \
+      FILTER::State&, estimation::Matrix<FILTER::D, FILTER::D>&) const;
+#define SF_ESTIMATION_LAYOUT_EKF_OBSERVATION_JACOBIAN(PREFIX, FILTER) \
+  PREFIX template void FILTER::observationJacobian(                   \
+      const FILTER::State&, estimation::Vector<FILTER::M>&,           \
       estimation::Matrix<FILTER::M, FILTER::D>&) const;
+#define SF_ESTIMATION_LAYOUT_EKF_JACOBIANS(PREFIX, FILTER)     \
+  SF_ESTIMATION_LAYOUT_EKF_TRANSITION_JACOBIAN(PREFIX, FILTER) \
+  SF_ESTIMATION_LAYOUT_EKF_OBSERVATION_JACOBIAN(PREFIX, FILTER)
 
 // The step of FILTER (estimate and predictMeasurement: the corrections, a measured rotation's
 // rows), likewise in a node's third unit (fusion_node_step.cpp, doc/build_cost.md "The 3D

@@ -65,3 +65,9 @@ Filter makeModelFilter(const sf_config::Parameters& p, const Own&... own) {
 #ifndef SF_CFG_THIRD_UNIT_INSTANCES
 #define SF_CFG_THIRD_UNIT_INSTANCES(PREFIX)
 #endif
+// And the observation Jacobian's unit (fusion_node_observation.cpp), which includes the
+// configuration layer only for an EXTENDED_KALMAN_FILTER header with QUATERNION_STATES
+// (doc/build_cost.md, "The observation Jacobian's unit").
+#ifndef SF_CFG_OBSERVATION_UNIT_INSTANCES
+#define SF_CFG_OBSERVATION_UNIT_INSTANCES(PREFIX)
+#endif
