@@ -7,6 +7,7 @@
 // AutoDiff over all stored entries.
 #include <cmath>
 
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <gtest/gtest.h>
