@@ -173,25 +173,48 @@ struct MixedScene {
   }
 };
 
+/// d innovation(z, h)/dz at z = h by central differences, times H: the tangent rows that
+/// MeasurementRows<L>::tangentRows should give, computed without it.
+template <class L, int D>
+Matrix<L::StoredSize, D> centralDifferenceRows(const Vector<L::StoredSize>& h,
+                                               const Matrix<L::StoredSize, D>& H) {
+  constexpr int N = L::StoredSize;
+  constexpr double kStep = 1e-6;
+  Matrix<N, N> dInnovation;
+  for (int i = 0; i < N; ++i) {
+    Vector<N> up = h, down = h;
+    up(i) += kStep;
+    down(i) -= kStep;
+    dInnovation.col(i) =
+        (mf::MeasurementRows<L>::innovation(up, h) - mf::MeasurementRows<L>::innovation(down, h)) /
+        (2.0 * kStep);
+  }
+  return dInnovation * H;
+}
+
 TEST(QuaternionMeasurements, TangentRowsAreTheInnovationsCentralDifferences) {
   const MixedScene s;
   Matrix<7, kMixedD> H = s.H;
   MixedRows::tangentRows(s.h, H);
-  constexpr double kStep = 1e-6;
-  Matrix<7, 7> dInnovation;  // d innovation(z, h) / dz at z = h, column by column
-  for (int i = 0; i < 7; ++i) {
-    Vector<7> up = s.h, down = s.h;
-    up(i) += kStep;
-    down(i) -= kStep;
-    dInnovation.col(i) =
-        (MixedRows::innovation(up, s.h) - MixedRows::innovation(down, s.h)) / (2.0 * kStep);
-  }
-  const Matrix<7, kMixedD> expected = dInnovation * s.H;
+  const Matrix<7, kMixedD> expected = centralDifferenceRows<Mixed>(s.h, s.H);
   EXPECT_LT((H - expected).cwiseAbs().maxCoeff(), 1e-8) << H << "\n\n" << expected;
   // The flat blocks' rows are H's own; the quaternion's w row (no tangent coordinate) is zero.
   EXPECT_EQ(H.topRows<2>(), s.H.topRows<2>());
   EXPECT_EQ(H.row(6), s.H.row(6));
   EXPECT_EQ(H.row(2), (Matrix<1, kMixedD>::Zero()));
+}
+
+TEST(QuaternionMeasurements, TangentRowsOfBlocksWithoutAClosedFormAreTheCentralDifferences) {
+  // So3Block (body frame) and So2Block have no minusDerivative: AutoDiff over their entries.
+  using Other = mf::StateLayout<mf::VectorBlock<1>, mf::So3Block, mf::So2Block>;
+  const MixedScene s;
+  Vector<6> h;
+  h << 0.4, s.h.segment<4>(2), 2.5;
+  const Matrix<6, kMixedD> H0 = s.H.topRows<6>();
+  Matrix<6, kMixedD> H = H0;
+  mf::MeasurementRows<Other>::tangentRows(h, H);
+  const Matrix<6, kMixedD> expected = centralDifferenceRows<Other>(h, H0);
+  EXPECT_LT((H - expected).cwiseAbs().maxCoeff(), 1e-8) << H << "\n\n" << expected;
 }
 
 TEST(QuaternionMeasurements, TangentRowsAreTheFullSizeAutoDiffsToTheBit) {
