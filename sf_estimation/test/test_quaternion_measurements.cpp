@@ -2,14 +2,20 @@
 // QUATERNION_INPUTS): the update by a small rotation against the hand-computed one (innovation
 // the rotation vector, gain p / (p + r), posterior variance p r / (p + r)), the same update for
 // the reading -q, the scalar rows beside it untouched by the comparison, a missing quaternion
-// leaving its rows out, and an R with a variance on the quaternion's w refused.
+// leaving its rows out, an R with a variance on the quaternion's w refused, and the tangent rows
+// of H (derivative block by block) against central differences of the innovation and against
+// AutoDiff over all stored entries.
 #include <cmath>
+
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
 
 #include <gtest/gtest.h>
 
 #include "sf_estimation/errors.hpp"
 #include "sf_estimation/layout_extended_kalman_filter.hpp"
 #include "sf_estimation/layout_unscented_kalman_filter.hpp"
+#include "sf_estimation/manifold/measurement_rows.hpp"
 #include "sf_estimation/manifold/so3_world_block.hpp"
 
 namespace {
@@ -148,6 +154,83 @@ TEST(QuaternionMeasurements, AVarianceOnTheQuaternionsWIsRefused) {
   s.R(0, 2) = s.R(2, 0) = 1e-4;
   EXPECT_THROW(Ukf(HeldPose(), s.Q, s.R, s.x0, s.P0, estimation::ManifoldUnscentedParameters()),
                estimation::ParameterError);
+}
+
+/// A flat block, a quaternion and another flat block: 7 stored entries, 6 tangent ones.
+using Mixed = mf::StateLayout<mf::VectorBlock<2>, mf::So3WorldBlock, mf::VectorBlock<1>>;
+using MixedRows = mf::MeasurementRows<Mixed>;
+constexpr int kMixedD = 5;  // the state's tangent size: any
+
+struct MixedScene {
+  Vector<7> h;
+  Matrix<7, kMixedD> H;  // dh/de: no zeros, no structure
+  MixedScene() {
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, -2, 0.5).normalized()));
+    h << 1.5, -0.7, q.w(), q.x(), q.y(), q.z(), 2.0;
+    for (int i = 0; i < 7; ++i) {
+      for (int j = 0; j < kMixedD; ++j) H(i, j) = std::sin(1.0 + 3.0 * i + 7.0 * j);
+    }
+  }
+};
+
+/// d innovation(z, h)/dz at z = h by central differences, times H: the tangent rows that
+/// MeasurementRows<L>::tangentRows should give, computed without it.
+template <class L, int D>
+Matrix<L::StoredSize, D> centralDifferenceRows(const Vector<L::StoredSize>& h,
+                                               const Matrix<L::StoredSize, D>& H) {
+  constexpr int N = L::StoredSize;
+  constexpr double kStep = 1e-6;
+  Matrix<N, N> dInnovation;
+  for (int i = 0; i < N; ++i) {
+    Vector<N> up = h, down = h;
+    up(i) += kStep;
+    down(i) -= kStep;
+    dInnovation.col(i) =
+        (mf::MeasurementRows<L>::innovation(up, h) - mf::MeasurementRows<L>::innovation(down, h)) /
+        (2.0 * kStep);
+  }
+  return dInnovation * H;
+}
+
+TEST(QuaternionMeasurements, TangentRowsAreTheInnovationsCentralDifferences) {
+  const MixedScene s;
+  Matrix<7, kMixedD> H = s.H;
+  MixedRows::tangentRows(s.h, H);
+  const Matrix<7, kMixedD> expected = centralDifferenceRows<Mixed>(s.h, s.H);
+  EXPECT_LT((H - expected).cwiseAbs().maxCoeff(), 1e-8) << H << "\n\n" << expected;
+  // The flat blocks' rows are H's own; the quaternion's w row (no tangent coordinate) is zero.
+  EXPECT_EQ(H.topRows<2>(), s.H.topRows<2>());
+  EXPECT_EQ(H.row(6), s.H.row(6));
+  EXPECT_EQ(H.row(2), (Matrix<1, kMixedD>::Zero()));
+}
+
+TEST(QuaternionMeasurements, TangentRowsOfBlocksWithoutAClosedFormAreTheCentralDifferences) {
+  // So3Block (body frame) and So2Block have no minusDerivative: AutoDiff over their entries.
+  using Other = mf::StateLayout<mf::VectorBlock<1>, mf::So3Block, mf::So2Block>;
+  const MixedScene s;
+  Vector<6> h;
+  h << 0.4, s.h.segment<4>(2), 2.5;
+  const Matrix<6, kMixedD> H0 = s.H.topRows<6>();
+  Matrix<6, kMixedD> H = H0;
+  mf::MeasurementRows<Other>::tangentRows(h, H);
+  const Matrix<6, kMixedD> expected = centralDifferenceRows<Other>(h, H0);
+  EXPECT_LT((H - expected).cwiseAbs().maxCoeff(), 1e-8) << H << "\n\n" << expected;
+}
+
+TEST(QuaternionMeasurements, TangentRowsAreTheFullSizeAutoDiffsToTheBit) {
+  const MixedScene s;
+  Matrix<7, kMixedD> H = s.H;
+  MixedRows::tangentRows(s.h, H);
+  // d[z [-] h]/dz over all 7 stored entries at once (measurement_rows.hpp before the derivative
+  // went block by block); equal up to an exact zero's sign, which == ignores.
+  using Ad = Eigen::AutoDiffScalar<Vector<7>>;
+  Eigen::Matrix<Ad, 7, 1> z;
+  for (int i = 0; i < 7; ++i) z(i) = Ad(s.h(i), 7, i);
+  const Eigen::Matrix<Ad, 6, 1> d = Mixed::minus<Ad>(z, s.h.cast<Ad>());
+  const std::array<int, 6> rows = mf::LayoutEmbedding<Mixed>::storedOfTangent();
+  Matrix<7, kMixedD> expected = Matrix<7, kMixedD>::Zero();
+  for (int t = 0; t < 6; ++t) expected.row(rows[t]) = d(t).derivatives().transpose() * s.H;
+  EXPECT_TRUE((H.array() == expected.array()).all()) << H << "\n\n" << expected;
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <string>
+#include <type_traits>
 
 #include <unsupported/Eigen/AutoDiff>
 
@@ -37,17 +38,29 @@ struct MeasurementRows {
   }
 
   /// Turns the rows of dh/de (M x D, e the state's tangent error) into those of
-  /// d/de [h(x [+] e) [-] h(x)] = d[z [-] h]/dz at z = h times dh/de, in the stored form.
+  /// d/de [h(x [+] e) [-] h(x)] = d[z [-] h]/dz at z = h times dh/de, in the stored form, block
+  /// by block: a flat block's rows are its own rows of dh/de, a rotation's come from the
+  /// derivative of its own minus over its own entries (blockDerivative).
   template <int D>
   static void tangentRows(const Vector<M>& h, Matrix<M, D>& H) {
-    using Ad = Eigen::AutoDiffScalar<Vector<M>>;
-    typename Layout::template Stored<Ad> z;
-    for (Index i = 0; i < M; ++i) z(i) = Ad(h(i), M, i);
-    const typename Layout::template Tangent<Ad> d =
-        Layout::template minus<Ad>(z, h.template cast<Ad>());
     const std::array<int, T> rows = Embedding::storedOfTangent();
     Matrix<M, D> out = Matrix<M, D>::Zero();
-    for (int t = 0; t < T; ++t) out.row(rows[t]) = d(t).derivatives().transpose() * H;
+    Layout::forEachBlock([&](auto block, auto at, auto tangentAt) {
+      using B = decltype(block);
+      if constexpr (B::IsFlat) {
+        for (int k = 0; k < B::TangentSize; ++k) out.row(rows[tangentAt + k]) = H.row(at + k);
+      } else {
+        const Matrix<B::TangentSize, B::StoredSize> J =
+            blockDerivative<B>(h.template segment<B::StoredSize>(at));
+        for (int k = 0; k < B::TangentSize; ++k) {
+          // Summed over all M rows of H, zeros outside the block, as AutoDiff over all M
+          // entries did: the same products in the same order, so the same rounding.
+          Vector<M> d = Vector<M>::Zero();
+          d.template segment<B::StoredSize>(at) = J.row(k).transpose();
+          out.row(rows[tangentAt + k]) = d.transpose() * H;
+        }
+      }
+    });
     H = out;
   }
 
@@ -82,6 +95,32 @@ struct MeasurementRows {
   }
 
  private:
+  /// d[z [-] h]/dz of one block at z = h (B::TangentSize x B::StoredSize): the block's own
+  /// closed form if it has one (So3WorldBlock, the measured quaternion), AutoDiff of its minus
+  /// over its own entries otherwise. AutoDiff through a quaternion's log cost a 3D header's
+  /// step unit about 100 MB (doc/build_cost.md, "The measured quaternion's rows").
+  template <class B>
+  static Matrix<B::TangentSize, B::StoredSize> blockDerivative(const Vector<B::StoredSize>& h) {
+    if constexpr (HasMinusDerivative<B>::value) {
+      return B::minusDerivative(h);
+    } else {
+      using Ad = Eigen::AutoDiffScalar<Vector<B::StoredSize>>;
+      Eigen::Matrix<Ad, B::StoredSize, 1> z;
+      for (Index i = 0; i < B::StoredSize; ++i) z(i) = Ad(h(i), B::StoredSize, i);
+      Eigen::Matrix<Ad, B::TangentSize, 1> d;
+      B::minus(z, h.template cast<Ad>(), d);
+      Matrix<B::TangentSize, B::StoredSize> J;
+      for (int t = 0; t < B::TangentSize; ++t) J.row(t) = d(t).derivatives().transpose();
+      return J;
+    }
+  }
+
+  template <class B, class = void>
+  struct HasMinusDerivative : std::false_type {};
+  template <class B>
+  struct HasMinusDerivative<B, std::void_t<decltype(B::minusDerivative(Vector<B::StoredSize>()))>>
+      : std::true_type {};
+
   static std::array<bool, M> tangentFree() {
     std::array<bool, M> free;
     free.fill(true);

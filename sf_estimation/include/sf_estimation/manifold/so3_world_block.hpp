@@ -33,6 +33,22 @@ struct So3WorldBlock {
     using S = typename std::decay_t<Out>::Scalar;
     out = so3Log<S>(storedQuaternion(y) * storedQuaternion(x).conjugate());
   }
+  /// d[y [-] x]/dy at y = x (3 x 4, stored w, x, y, z), in closed form: 2 / |x|^2 times the
+  /// vector part of dy x^*. Bit for bit what AutoDiff of minus gives there, up to an exact
+  /// zero's sign (y x^* has a zero vector part, so log takes its series with r = 0 and scales by
+  /// 2 / w, w = |x|^2 summed in the quaternion product's order); without AutoDiff, the step
+  /// unit of a node with a measured quaternion is 60-80 MB smaller (doc/build_cost.md, "The
+  /// measured quaternion's rows").
+  template <class X>
+  static Eigen::Matrix<double, 3, 4> minusDerivative(const X& x) {
+    const double w = x(0), a = x(1), b = x(2), c = x(3);
+    const double s = 2.0 / (w * w + a * a + b * b + c * c);
+    Eigen::Matrix<double, 3, 4> d;
+    d << -a * s, w * s, -c * s, b * s,  //
+        -b * s, c * s, w * s, -a * s,   //
+        -c * s, -b * s, a * s, w * s;
+    return d;
+  }
   template <class X>
   static void normalise(X&& x) {
     using S = typename std::decay_t<X>::Scalar;
