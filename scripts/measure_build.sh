@@ -60,7 +60,10 @@ unit_cost() {
   cmd="$(/usr/bin/python3 - "$1/build/compile_commands.json" "$2" "${3:-fusion_node_main}" <<'EOF'
 import json, sys
 for entry in json.load(open(sys.argv[1])):
-    if sys.argv[3] in entry['file'] and '/' + sys.argv[2] + '\\"' in entry['command']:
+    # the node's unit is fusion_node_unit.cpp for a NODELET header
+    names = [sys.argv[3]] + (['fusion_node_unit'] if sys.argv[3] == 'fusion_node_main' else [])
+    if (any(n in entry['file'] for n in names)
+            and '/' + sys.argv[2] + '\\"' in entry['command']):
         print('cd %s && %s' % (entry['directory'], entry['command'].replace(
             entry['command'].split(' -o ')[1].split()[0], '/dev/null')))
         break
