@@ -27,7 +27,7 @@ get_filename_component(_sf_pkg_src "${SF_PKG_FILTER_MAIN}" DIRECTORY)
 set(SF_PKG_NODELET_UNIT "${_sf_pkg_src}/fusion_node_unit.cpp")
 set(SF_PKG_FILTER_SMOOTHERS "${_sf_pkg_src}/fusion_node_smoothers.cpp")
 set(SF_PKG_FILTER_STEP "${_sf_pkg_src}/fusion_node_step.cpp")
-set(SF_PKG_FILTER_OBSERVATION "${_sf_pkg_src}/fusion_node_observation.cpp")
+set(SF_PKG_FILTER_JACOBIANS "${_sf_pkg_src}/fusion_node_jacobians.cpp")
 set(SF_PKG_NODELET_PLUGIN "${_sf_pkg_src}/fusion_nodelet_plugin.cpp")
 
 # Installed, the headers (sf_filter/, sf_estimation/) are in the package's own include folder,
@@ -157,9 +157,9 @@ function(sf_add_filter name header)
   # plugin. The header's smoothers are a second unit of the same object library, compiled
   # beside the first (fusion_node_smoothers.cpp, doc/build_cost.md "The smoothers' unit"), and
   # a 3D header's filter step a third (fusion_node_step.cpp, "The 3D headers' step"), only for
-  # a header that names QUATERNION_STATES: for any other it would be empty; for such a header
-  # the layout EKF's observation Jacobian is a fourth (fusion_node_observation.cpp, "The
-  # observation Jacobian's unit").
+  # a header that names QUATERNION_STATES: for any other it would be empty. An EKF's AutoDiff
+  # Jacobians are a fourth (fusion_node_jacobians.cpp, "The Jacobians' unit"), for a header that
+  # names EXTENDED_KALMAN_FILTER or QUATERNION_STATES.
   set(_unit ${name}_unit)
   if(_sf_NODELET)
     _sf_check_nodelet_xml(${name} "${_sf_NODELET}")
@@ -168,18 +168,26 @@ function(sf_add_filter name header)
     set(_sources "${SF_PKG_FILTER_MAIN}" "${SF_PKG_FILTER_SMOOTHERS}")
   endif()
   _sf_header_names(_step "${_header}" QUATERNION_STATES)
+  _sf_header_names(_jacobians "${_header}" EXTENDED_KALMAN_FILTER)
   if(_step)
-    list(APPEND _sources "${SF_PKG_FILTER_STEP}" "${SF_PKG_FILTER_OBSERVATION}")
+    list(APPEND _sources "${SF_PKG_FILTER_STEP}")
+  endif()
+  if(_step OR _jacobians)
+    list(APPEND _sources "${SF_PKG_FILTER_JACOBIANS}")
   endif()
   add_library(${_unit} OBJECT ${_sources})
   _sf_filter_unit(${_unit} "${_header}")
   # The node unit then declares the smoothers extern (node_definition_of.hpp); any other unit
   # of a header (tests, tools) instantiates them itself. SF_FILTER_STEP_UNIT: the third unit is
   # there, and the fourth (without them, a header that has QUATERNION_STATES after all stops at
-  # an #error).
+  # an #error). SF_FILTER_JACOBIAN_UNIT: the fourth is there (without it the Jacobians are
+  # compiled where they are used).
   target_compile_definitions(${_unit} PRIVATE SF_FILTER_SMOOTHERS_UNIT=1)
   if(_step)
     target_compile_definitions(${_unit} PRIVATE SF_FILTER_STEP_UNIT=1)
+  endif()
+  if(_step OR _jacobians)
+    target_compile_definitions(${_unit} PRIVATE SF_FILTER_JACOBIAN_UNIT=1)
   endif()
   add_executable(${name} $<TARGET_OBJECTS:${_unit}>)
   if(_sf_TEST)

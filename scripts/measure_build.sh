@@ -54,14 +54,17 @@ configure() {
 # unit_cost <workspace> <header> [<source>]: "cpu_s peak_MB" of compiling the header's node
 # unit (fusion_node_main), its smoothers' unit (fusion_node_smoothers), its step's unit
 # (fusion_node_step; a header without QUATERNION_STATES, or a tree before one, has none: "n/a n/a")
-# or its observation Jacobian's (fusion_node_observation: the same headers; an EKF's only).
+# or its EKF Jacobians' (fusion_node_jacobians: an EKF's or a 3D header's; a tree before
+# 2026-12-07 had it as fusion_node_observation, for the 3D headers only).
 unit_cost() {
   local cmd
   cmd="$(/usr/bin/python3 - "$1/build/compile_commands.json" "$2" "${3:-fusion_node_main}" <<'EOF'
 import json, sys
 for entry in json.load(open(sys.argv[1])):
     # the node's unit is fusion_node_unit.cpp for a NODELET header
-    names = [sys.argv[3]] + (['fusion_node_unit'] if sys.argv[3] == 'fusion_node_main' else [])
+    names = [sys.argv[3]] + {'fusion_node_main': ['fusion_node_unit'],
+                             'fusion_node_jacobians': ['fusion_node_observation']}.get(
+                                 sys.argv[3], [])
     if (any(n in entry['file'] for n in names)
             and '/' + sys.argv[2] + '\\"' in entry['command']):
         print('cd %s && %s' % (entry['directory'], entry['command'].replace(
@@ -117,14 +120,14 @@ if [[ -n "$baseline" ]]; then prelude_cost "$work/baseline" >/dev/null; fi
 printf '%-28s %14s %14s' "translation unit (header)" "CPU s" "peak MB"
 [[ -n "$baseline" ]] && printf ' %14s %14s' "CPU s ($baseline)" "peak MB ($baseline)"
 echo
-# Each header's node unit, then its smoothers', its step's and its observation Jacobian's unit
-# (sf_add_filter compiles the last two only for some 3D headers; "+ smoothers", "+ step", "+ obs.").
+# Each header's node unit, then its smoothers', its step's and its Jacobians' unit (sf_add_filter
+# compiles the step's only for the 3D headers, the Jacobians' for them and the EKF headers).
 for h in "${headers[@]}"; do
-  for source in fusion_node_main fusion_node_smoothers fusion_node_step fusion_node_observation; do
+  for source in fusion_node_main fusion_node_smoothers fusion_node_step fusion_node_jacobians; do
     label="$h"
     [[ "$source" == fusion_node_smoothers ]] && label="  + smoothers"
     [[ "$source" == fusion_node_step ]] && label="  + step"
-    [[ "$source" == fusion_node_observation ]] && label="  + obs. Jacobian"
+    [[ "$source" == fusion_node_jacobians ]] && label="  + Jacobians"
     read -r cpu mem < <(unit_cost "$work/current" "$h" "$source")
     bcpu=n/a bmem=n/a
     [[ -n "$baseline" ]] && read -r bcpu bmem < <(unit_cost "$work/baseline" "$h" "$source")

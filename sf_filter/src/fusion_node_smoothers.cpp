@@ -17,8 +17,8 @@
 #include "sf_filter/config/filter_binding.hpp"
 #include "sf_filter/core/fusion_engine_of.hpp"
 
-SF_CFG_THIRD_UNIT_INSTANCES(extern)        // the step's unit (fusion_node_step.cpp)
-SF_CFG_OBSERVATION_UNIT_INSTANCES(extern)  // fusion_node_observation.cpp
+SF_CFG_THIRD_UNIT_INSTANCES(extern)     // the step's unit (fusion_node_step.cpp)
+SF_CFG_JACOBIAN_UNIT_INSTANCES(extern)  // fusion_node_jacobians.cpp
 namespace sf_filter {
 SF_FILTER_SMOOTHER_INSTANCES(, FusionCore<generated::Filter>)
 }  // namespace sf_filter

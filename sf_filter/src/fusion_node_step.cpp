@@ -17,8 +17,8 @@
 #if SF_CONFIG_OK && !SF_CFG_IS_AVERAGING
 #include "sf_filter/config/filter_binding.hpp"
 
-SF_CFG_SECOND_UNIT_INSTANCES(extern)       // the Jacobians, in the second unit
-SF_CFG_OBSERVATION_UNIT_INSTANCES(extern)  // or that one in fusion_node_observation.cpp
+SF_CFG_SECOND_UNIT_INSTANCES(extern)    // the Jacobians, in the second unit
+SF_CFG_JACOBIAN_UNIT_INSTANCES(extern)  // or that one in fusion_node_jacobians.cpp
 SF_CFG_THIRD_UNIT_INSTANCES()
 #endif  // SF_CONFIG_OK
 #endif  // QUATERNION_STATES

@@ -108,7 +108,7 @@ class InstallSpaceTest(unittest.TestCase):
         share = os.path.join(PREFIX, "share", "sf_pkg")
         for rel in ["cmake/sf_add_filter.cmake", "sf_filter/src/fusion_node_main.cpp",
                     "sf_filter/src/fusion_node_smoothers.cpp", "sf_filter/src/fusion_node_step.cpp",
-                    "sf_filter/src/fusion_node_observation.cpp",
+                    "sf_filter/src/fusion_node_jacobians.cpp",
                     "config/train_kf.h", "launch/filter.launch", "bags/pioneer_seed1.bag",
                     "tools/eval/evaluate.py"]:
             self.assertTrue(os.path.isfile(os.path.join(share, rel)), rel)

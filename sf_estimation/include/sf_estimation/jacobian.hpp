@@ -115,3 +115,17 @@ void observationJacobian(const Model& model, const Vector<Model::StateSize>& x,
 }
 
 }  // namespace estimation
+
+// Explicit instantiation (PREFIX empty) or its declaration (PREFIX extern) of a model's two
+// Jacobians, at global scope: a node compiles them once, in a unit of its own
+// (doc/build_cost.md, "The planar Jacobians' unit").
+#define SF_ESTIMATION_MODEL_JACOBIANS(PREFIX, MODEL)                 \
+  PREFIX template void estimation::transitionJacobian<MODEL>(        \
+      const MODEL&, const estimation::Vector<MODEL::StateSize>&,     \
+      const estimation::Vector<MODEL::ControlSize>&,                 \
+      estimation::Matrix<MODEL::StateSize, MODEL::StateSize>&,       \
+      estimation::Vector<MODEL::StateSize>*);                        \
+  PREFIX template void estimation::observationJacobian<MODEL>(       \
+      const MODEL&, const estimation::Vector<MODEL::StateSize>&,     \
+      estimation::Matrix<MODEL::MeasurementSize, MODEL::StateSize>&, \
+      estimation::Vector<MODEL::MeasurementSize>*);

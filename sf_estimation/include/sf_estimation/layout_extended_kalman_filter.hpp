@@ -149,7 +149,7 @@ void LayoutExtendedKalmanFilter<FlatModel, Layout, MeasurementLayout>::observati
 // The Jacobians of FILTER (a LayoutExtendedKalmanFilter), declared extern (PREFIX extern) in
 // a node's unit and instantiated (PREFIX empty) in its second unit, like the smoothers
 // (doc/build_cost.md, "The 3D headers' Jacobians and the particle filter's step"), or each in
-// a unit of its own (a measured rotation: "The observation Jacobian's unit").
+// a unit of its own (a measured rotation: "The Jacobians' unit").
 #define SF_ESTIMATION_LAYOUT_EKF_TRANSITION_JACOBIAN(PREFIX, FILTER) \
   PREFIX template void FILTER::transitionJacobian(                   \
       FILTER::State&, estimation::Matrix<FILTER::D, FILTER::D>&) const;

@@ -65,9 +65,17 @@ Filter makeModelFilter(const sf_config::Parameters& p, const Own&... own) {
 #ifndef SF_CFG_THIRD_UNIT_INSTANCES
 #define SF_CFG_THIRD_UNIT_INSTANCES(PREFIX)
 #endif
-// And the observation Jacobian's unit (fusion_node_observation.cpp), which includes the
-// configuration layer only for an EXTENDED_KALMAN_FILTER header with QUATERNION_STATES
-// (doc/build_cost.md, "The observation Jacobian's unit").
-#ifndef SF_CFG_OBSERVATION_UNIT_INSTANCES
-#define SF_CFG_OBSERVATION_UNIT_INSTANCES(PREFIX)
+// And the Jacobians' unit (fusion_node_jacobians.cpp): an EXTENDED_KALMAN_FILTER header's
+// AutoDiff Jacobians (doc/build_cost.md, "The Jacobians' unit"). sf_add_filter() compiles it,
+// and defines SF_FILTER_JACOBIAN_UNIT, for a header in which it finds EXTENDED_KALMAN_FILTER
+// or QUATERNION_STATES by a look at the text; where it did not (a header that names the
+// method through a macro of another file, a unit of a test or tool), the Jacobians are
+// instantiated where they are used, as before the unit. This file is not part of the
+// precompiled prelude, which a macro tested there would disable (GCC refuses a precompiled
+// header when a command-line macro appears in it).
+#if !defined(SF_FILTER_JACOBIAN_UNIT)
+#undef SF_CFG_JACOBIAN_UNIT_INSTANCES
+#endif
+#ifndef SF_CFG_JACOBIAN_UNIT_INSTANCES
+#define SF_CFG_JACOBIAN_UNIT_INSTANCES(PREFIX)
 #endif

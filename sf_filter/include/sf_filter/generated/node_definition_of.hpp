@@ -36,17 +36,18 @@ static_assert(BOOST_PP_SEQ_ELEM(0, POSE_OUT) < sf_config::kStateSize &&
 #endif
 
 #if !SF_CFG_IS_AVERAGING && defined(SF_FILTER_SMOOTHERS_UNIT)
-// sf_add_filter() compiles the third and fourth units (fusion_node_step.cpp,
-// fusion_node_observation.cpp) only for a header in which it finds QUATERNION_STATES by a look
-// at the text (cmake/sf_add_filter.cmake); without them the step and the observation Jacobian
-// would be undefined references at the link.
+// sf_add_filter() compiles the third unit (fusion_node_step.cpp) only for a header in which it
+// finds QUATERNION_STATES by a look at the text (cmake/sf_add_filter.cmake), and the fourth
+// (fusion_node_jacobians.cpp) for one in which it finds that or EXTENDED_KALMAN_FILTER; without
+// them the step and the layout EKF's observation Jacobian would be undefined references at the
+// link (a planar EKF's Jacobians are then compiled here: filter_binding.hpp).
 #if defined(QUATERNION_STATES) && !defined(SF_FILTER_STEP_UNIT)
-#error QUATERNION_STATES: sf_add_filter() did not find it in the configuration header or in a header that one includes with double quotes, so it left out the units of the filter step and the observation Jacobian (fusion_node_step.cpp, fusion_node_observation.cpp); name QUATERNION_STATES in the header itself (a comment will do) and re-run CMake
+#error QUATERNION_STATES: sf_add_filter() did not find it in the configuration header or in a header that one includes with double quotes, so it left out the unit of the filter step (fusion_node_step.cpp) and for an EKF that of its Jacobians (fusion_node_jacobians.cpp); name QUATERNION_STATES in the header itself (a comment will do) and re-run CMake
 #include "SF_CONFIGURATION_ERROR__compilation_stopped__fix_the_first_error_above"
 #endif
 SF_CFG_SECOND_UNIT_INSTANCES(extern)
 SF_CFG_THIRD_UNIT_INSTANCES(extern)
-SF_CFG_OBSERVATION_UNIT_INSTANCES(extern)
+SF_CFG_JACOBIAN_UNIT_INSTANCES(extern)
 #endif
 
 namespace sf_filter {

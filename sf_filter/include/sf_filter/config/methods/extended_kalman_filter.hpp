@@ -50,18 +50,23 @@ namespace generated {
 #if SF_CFG_HAS_QUATERNION_STATES
 using Filter = estimation::LayoutExtendedKalmanFilter<sf_config::Model, sf_config::StateLayout,
                                                       sf_config::MeasurementLayout>;
-// Its AutoDiff Jacobians: the transition's in the node's second unit, the observation's in a
-// unit of its own (filter_binding.hpp), as together they took the second unit over 500 MB
-// (doc/build_cost.md, "The observation Jacobian's unit").
+// Its AutoDiff Jacobians: the transition's in the node's second unit, the observation's in the
+// Jacobians' unit (filter_binding.hpp), as together they took the second unit over 500 MB
+// (doc/build_cost.md, "The Jacobians' unit").
 #define SF_CFG_SECOND_UNIT_INSTANCES(PREFIX) \
   SF_ESTIMATION_LAYOUT_EKF_TRANSITION_JACOBIAN(PREFIX, sf_filter::generated::Filter)
-#define SF_CFG_OBSERVATION_UNIT_INSTANCES(PREFIX) \
+#define SF_CFG_JACOBIAN_UNIT_INSTANCES(PREFIX) \
   SF_ESTIMATION_LAYOUT_EKF_OBSERVATION_JACOBIAN(PREFIX, sf_filter::generated::Filter)
 // Its step (the corrections, a measured rotation's rows) in the third (filter_binding.hpp).
 #define SF_CFG_THIRD_UNIT_INSTANCES(PREFIX) \
   SF_ESTIMATION_LAYOUT_EKF_STEP(PREFIX, sf_filter::generated::Filter)
 #else
 using Filter = estimation::ExtendedKalmanFilter<sf_config::Model>;
+// Both of the model's Jacobians in the Jacobians' unit: the EKF's step and the three smoothers
+// call them, and compiled in the node's unit and in the smoothers' each they took a 13-state
+// header's two units over 500 MB (doc/build_cost.md, "The Jacobians' unit").
+#define SF_CFG_JACOBIAN_UNIT_INSTANCES(PREFIX) \
+  SF_ESTIMATION_MODEL_JACOBIANS(PREFIX, sf_config::Model)
 #endif
 template <class = void>  // see filter_binding.hpp
 Filter makeFilter(const sf_config::Parameters& p) {
