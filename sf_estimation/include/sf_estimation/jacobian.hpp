@@ -118,7 +118,7 @@ void observationJacobian(const Model& model, const Vector<Model::StateSize>& x,
 
 // Explicit instantiation (PREFIX empty) or its declaration (PREFIX extern) of a model's two
 // Jacobians, at global scope: a node compiles them once, in a unit of its own
-// (doc/build_cost.md, "The planar Jacobians' unit").
+// (doc/build_cost.md, "The Jacobians' unit").
 #define SF_ESTIMATION_MODEL_JACOBIANS(PREFIX, MODEL)                 \
   PREFIX template void estimation::transitionJacobian<MODEL>(        \
       const MODEL&, const estimation::Vector<MODEL::StateSize>&,     \
